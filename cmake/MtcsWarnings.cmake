@@ -1,0 +1,8 @@
+# Warnings and sanitizers applied to every mtcs target through mtcs_target_defaults().
+function(mtcs_target_defaults target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wno-psabi)
+  if(MTCS_SANITIZE)
+    target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer)
+    target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+  endif()
+endfunction()

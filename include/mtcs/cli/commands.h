@@ -1,0 +1,22 @@
+#pragma once
+// Subcommands of the mtcs binary. Each registers its options on the CLI11 app and returns the
+// subcommand with the function that runs it; main() maps exceptions to exit codes
+// (InputError -> 2).
+
+#include <functional>
+
+namespace CLI {
+class App;
+}
+
+namespace mtcs::cli {
+
+struct Command {
+  CLI::App* app;
+  std::function<int()> run;
+};
+
+Command add_distance_command(CLI::App& app);
+Command add_bench_command(CLI::App& app);
+
+}  // namespace mtcs::cli

@@ -1,0 +1,222 @@
+// mtcs bench: timings and errors of the cylinder kernel against the certified intervals, with
+// FCL measured in the same run as the peer. Each pair is timed over `repeat` back-to-back
+// queries (one clock read per batch); medians and 99th percentiles are over pairs.
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <memory>
+
+#include "fcl_peer.h"
+#include "mtcs/cli/commands.h"
+#include "mtcs/cli/pairs_csv.h"
+#include "mtcs/geometry/cylinder_distance.h"
+#include "mtcs/geometry/segment_distance.h"
+
+namespace mtcs::cli {
+namespace {
+
+using geometry::DistanceRequest;
+using geometry::DistanceResult;
+
+struct Sample {
+  double ns;
+  double err;      // distance from the answer to the certified interval (0 without one)
+  double rel_err;  // err / max(1, S)
+  const CylinderPair* pair;
+};
+
+// Error of a result against the pair's certified interval. A bounded result claims only
+// "distance >= U": it is wrong by how far the interval lies below U.
+double error_of(const CylinderPair& p, double d, bool bounded, double upper) {
+  if (!p.dist_lo || !p.dist_hi) return 0;
+  if (bounded) return std::max(0.0, upper * (1 - 1e-12) - *p.dist_hi);
+  return std::max({0.0, *p.dist_lo - d, d - *p.dist_hi});
+}
+
+template <class F>
+Sample time_one(const CylinderPair& p, int repeat, F&& query) {
+  volatile double sink = 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int k = 0; k < repeat; ++k) sink = sink + query();
+  const auto t1 = std::chrono::steady_clock::now();
+  (void)sink;
+  return {std::chrono::duration<double, std::nano>(t1 - t0).count() / repeat, 0, 0, &p};
+}
+
+double quantile(std::vector<double> v, double q) {
+  if (v.empty()) return 0;
+  const std::size_t k = std::min(v.size() - 1, std::size_t(q * double(v.size() - 1) + 0.5));
+  std::nth_element(v.begin(), v.begin() + long(k), v.end());
+  return v[k];
+}
+
+std::string subtype_of(const std::string& id) {
+  const auto dash = id.rfind('-');
+  return dash == std::string::npos ? id : id.substr(0, dash);
+}
+
+using Variant = std::function<Sample(const CylinderPair&)>;
+
+std::map<std::string, Variant> make_variants(int repeat, double tolerance) {
+  std::map<std::string, Variant> v;
+  auto kernel = [repeat](DistanceRequest rq) {
+    return [repeat, rq](const CylinderPair& p) {
+      DistanceResult r;
+      Sample s = time_one(p, repeat, [&] { r = geometry::distance(p.a, p.b, rq); return r.distance; });
+      s.err = error_of(p, r.distance, r.bounded, rq.upper_bound);
+      return s;
+    };
+  };
+  DistanceRequest full;
+  full.tolerance = tolerance;
+  v["full"] = kernel(full);
+  DistanceRequest u5 = full;
+  u5.upper_bound = 5;
+  v["bounded-U5"] = kernel(u5);
+  DistanceRequest np = full;
+  np.pretests = false;
+  v["no-pretests"] = kernel(np);
+  DistanceRequest ns = full;
+  ns.sorted_bounds = false;
+  v["no-sorted-bounds"] = kernel(ns);
+  v["naive"] = [repeat, tolerance](const CylinderPair& p) {
+    DistanceResult r;
+    Sample s = time_one(p, repeat, [&] { r = geometry::distance_naive(p.a, p.b, tolerance); return r.distance; });
+    s.err = error_of(p, r.distance, false, 0);
+    return s;
+  };
+  v["fcl"] = [repeat](const CylinderPair& p) {
+    const FclPair f(p.a, p.b);
+    double d = 0;
+    Sample s = time_one(p, repeat, [&] { d = f.distance(); return d; });
+    s.err = error_of(p, d, false, 0);
+    return s;
+  };
+  v["segment-floor"] = [repeat](const CylinderPair& p) {
+    const geometry::Segment sa{p.a.p0, p.a.p1}, sb{p.b.p0, p.b.p1};
+    double d = 0;
+    Sample s = time_one(p, repeat, [&] { d = geometry::closest_points(sa, sb).distance; return d; });
+    // The capsule distance, for reference only: it is not a cylinder distance.
+    s.err = error_of(p, std::max(0.0, d - p.a.radius - p.b.radius), false, 0);
+    return s;
+  };
+  return v;
+}
+
+std::vector<Sample> run_variant(const Variant& variant, const std::vector<CylinderPair>& pairs) {
+  std::vector<Sample> out;
+  out.reserve(pairs.size());
+  for (const auto& p : pairs) {
+    Sample s = variant(p);
+    s.rel_err = s.err / std::max(1.0, geometry::pair_scale(p.a, p.b));
+    out.push_back(s);
+  }
+  return out;
+}
+
+std::map<std::string, std::vector<const Sample*>> group(const std::vector<Sample>& samples,
+                                                        bool by_subtype) {
+  std::map<std::string, std::vector<const Sample*>> g;
+  for (const auto& s : samples) {
+    g[by_subtype ? subtype_of(s.pair->id) : s.pair->category].push_back(&s);
+    g["all"].push_back(&s);
+  }
+  return g;
+}
+
+std::vector<double> field(const std::vector<const Sample*>& v, double Sample::*m) {
+  std::vector<double> out;
+  out.reserve(v.size());
+  for (const Sample* s : v) out.push_back(s->*m);
+  return out;
+}
+
+}  // namespace
+
+Command add_bench_command(CLI::App& app) {
+  struct Options {
+    std::string pairs;
+    std::vector<std::string> variants{"full", "bounded-U5", "no-pretests", "no-sorted-bounds",
+                                      "naive", "fcl", "segment-floor"};
+    int repeat = 8;
+    double tolerance = 1e-12;
+    std::vector<double> sweep{1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10,
+                              1e-11, 1e-12, 1e-13, 1e-14, 1e-15};
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* bench = app.add_subcommand("bench", "Benchmarks of the kernels, against peers measured in the same run.");
+  bench->require_subcommand(1);
+
+  CLI::App* dist = bench->add_subcommand(
+      "distance",
+      "Cylinder distance: median and p99 ns per query and max error against the certified\n"
+      "intervals, per category, for each variant. CSV on stdout:\n"
+      "  variant,category,n,median_ns,p99_ns,max_abs_err\n"
+      "Variants: full, bounded-U5, no-pretests, no-sorted-bounds, naive, fcl, segment-floor.\n"
+      "Example: mtcs bench distance --pairs tests/data/cylinder_pairs_public.csv");
+  CLI::App* sweep = bench->add_subcommand(
+      "tolerance",
+      "Error against run time: the full kernel at each tolerance of its numerical parts. CSV:\n"
+      "  tolerance,category,n,median_ns,max_abs_err,median_abs_err,max_rel_err");
+  CLI::App* stiff = bench->add_subcommand(
+      "stiff",
+      "Worst errors of the full kernel by pair sub-type (id without its number). CSV:\n"
+      "  subtype,n,median_ns,max_abs_err,max_rel_err,worst_id");
+  for (CLI::App* s : {dist, sweep, stiff}) {
+    s->add_option("--pairs", opt->pairs, "CSV of cylinder pairs with dist_lo, dist_hi")->required()->check(CLI::ExistingFile);
+    s->add_option("--repeat", opt->repeat, "queries per timed batch")->capture_default_str()->check(CLI::Range(1, 1000000));
+  }
+  dist->add_option("--variants", opt->variants, "variants to run")->delimiter(',');
+  dist->add_option("--tolerance", opt->tolerance, "kernel tolerance")->capture_default_str();
+  stiff->add_option("--tolerance", opt->tolerance, "kernel tolerance")->capture_default_str();
+  sweep->add_option("--tolerances", opt->sweep, "tolerances to sweep")->delimiter(',');
+
+  return {bench, [opt, dist, sweep, stiff] {
+            const auto pairs = read_pairs_csv(opt->pairs);
+            std::cout.precision(6);
+            if (dist->parsed()) {
+              auto variants = make_variants(opt->repeat, opt->tolerance);
+              std::cout << "variant,category,n,median_ns,p99_ns,max_abs_err\n";
+              for (const auto& name : opt->variants) {
+                if (!variants.count(name)) throw std::runtime_error("unknown variant '" + name + "'");
+                const auto samples = run_variant(variants[name], pairs);
+                for (const auto& [cat, v] : group(samples, false)) {
+                  const auto ns = field(v, &Sample::ns), err = field(v, &Sample::err);
+                  std::cout << name << ',' << cat << ',' << v.size() << ',' << quantile(ns, 0.5) << ','
+                            << quantile(ns, 0.99) << ',' << *std::max_element(err.begin(), err.end()) << '\n';
+                }
+              }
+            } else if (sweep->parsed()) {
+              std::cout << "tolerance,category,n,median_ns,max_abs_err,median_abs_err,max_rel_err\n";
+              for (const double tol : opt->sweep) {
+                const auto samples = run_variant(make_variants(opt->repeat, tol)["full"], pairs);
+                for (const auto& [cat, v] : group(samples, false)) {
+                  const auto ns = field(v, &Sample::ns), err = field(v, &Sample::err),
+                             rel = field(v, &Sample::rel_err);
+                  std::cout << tol << ',' << cat << ',' << v.size() << ',' << quantile(ns, 0.5) << ','
+                            << *std::max_element(err.begin(), err.end()) << ',' << quantile(err, 0.5) << ','
+                            << *std::max_element(rel.begin(), rel.end()) << '\n';
+                }
+              }
+            } else if (stiff->parsed()) {
+              const auto samples = run_variant(make_variants(opt->repeat, opt->tolerance)["full"], pairs);
+              std::cout << "subtype,n,median_ns,max_abs_err,max_rel_err,worst_id\n";
+              for (const auto& [sub, v] : group(samples, true)) {
+                const Sample* worst = *std::max_element(
+                    v.begin(), v.end(), [](const Sample* x, const Sample* y) { return x->rel_err < y->rel_err; });
+                const auto ns = field(v, &Sample::ns), err = field(v, &Sample::err);
+                std::cout << sub << ',' << v.size() << ',' << quantile(ns, 0.5) << ','
+                          << *std::max_element(err.begin(), err.end()) << ',' << worst->rel_err << ','
+                          << worst->pair->id << '\n';
+              }
+            }
+            return 0;
+          }};
+}
+
+}  // namespace mtcs::cli

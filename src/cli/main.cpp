@@ -1,0 +1,39 @@
+// mtcs: designs the cooling bores of permanent molds. This file wires the subcommands.
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "mtcs/cli/commands.h"
+#include "mtcs/cli/input_error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "mtcs - cooling-bore design for permanent molds.\n"
+      "Exact solid-cylinder distances, mold evaluation and optimisation.\n"
+      "Run 'mtcs <command> --help' for a command's options and examples.",
+      "mtcs"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "mtcs 0.1.0");
+
+  const std::vector<mtcs::cli::Command> commands{
+      mtcs::cli::add_distance_command(app),
+      mtcs::cli::add_bench_command(app),
+  };
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  try {
+    for (const auto& command : commands) {
+      if (command.app->parsed()) return command.run();
+    }
+  } catch (const mtcs::cli::InputError& e) {
+    std::cerr << "mtcs: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "mtcs: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,136 @@
+#pragma once
+// Global minimum of a function of the angle on a circle, f(cos t, sin t).
+//
+// The functions minimised here are distances from a point moving on a circle of radius r to a
+// convex element: 1-Lipschitz in the point, hence r-Lipschitz in the angle, piecewise smooth,
+// with at most a handful of basins. Kernels:
+//   1. sample N equally spaced angles (cos/sin from a table: no trigonometry);
+//   2. every discrete local minimum whose sample can still beat `best` (sample - r h >= best
+//      proves it cannot, by the Lipschitz bound) is refined by Brent's method on its two
+//      neighbouring intervals;
+//   3. refinement stops when the bracket is narrower than tol / r, i.e. the value is within
+//      `tol` of the basin's minimum (Lipschitz again), or at the iteration cap.
+// The result never under-estimates: every value returned is f at a real angle.
+
+#include <array>
+
+#include "real.h"
+
+namespace mtcs::geometry::detail {
+
+inline constexpr int kCircleSamples = 24;
+
+template <class R>
+struct CircleMin {
+  R value;
+  R cos_t, sin_t;
+};
+
+template <class R>
+const std::array<std::array<R, 2>, kCircleSamples>& circle_sample_table() {
+  static const auto table = [] {
+    std::array<std::array<R, 2>, kCircleSamples> t{};
+    const R two_pi = R(2) * R(3.14159265358979323846264338327950288L);
+    for (int k = 0; k < kCircleSamples; ++k) {
+      R s, c;
+      sincos_(two_pi * R(k) / R(kCircleSamples), &s, &c);
+      t[k] = {c, s};
+    }
+    return t;
+  }();
+  return table;
+}
+
+// Brent's minimisation (Numerical Recipes 10.2) of f on [a, b] starting from x with f(x) = fx.
+template <class R, class F>
+CircleMin<R> brent_on_angle(F& f, R a, R b, R x, R fx, R xtol, int max_iter) {
+  const R cgold = R(0.3819660112501051);
+  R w = x, v = x, fw = fx, fv = fx, d = R(0), e = R(0);
+  for (int iter = 0; iter < max_iter; ++iter) {
+    const R xm = (a + b) / R(2);
+    const R tol1 = xtol, tol2 = R(2) * tol1;
+    if (abs_(x - xm) <= tol2 - (b - a) / R(2)) break;
+    if (abs_(e) > tol1) {
+      R r = (x - w) * (fx - fv), q = (x - v) * (fx - fw), p = (x - v) * q - (x - w) * r;
+      q = R(2) * (q - r);
+      if (q > R(0)) p = -p;
+      q = abs_(q);
+      const R etemp = e;
+      e = d;
+      if (abs_(p) >= abs_(q * etemp / R(2)) || p <= q * (a - x) || p >= q * (b - x)) {
+        e = (x >= xm) ? a - x : b - x;
+        d = cgold * e;
+      } else {
+        d = p / q;
+        const R u = x + d;
+        if (u - a < tol2 || b - u < tol2) d = (xm >= x) ? tol1 : -tol1;
+      }
+    } else {
+      e = (x >= xm) ? a - x : b - x;
+      d = cgold * e;
+    }
+    const R u = abs_(d) >= tol1 ? x + d : x + (d >= R(0) ? tol1 : -tol1);
+    R su, cu;
+    sincos_(u, &su, &cu);
+    const R fu = f(cu, su);
+    if (fu <= fx) {
+      if (u >= x) a = x; else b = x;
+      v = w, fv = fw, w = x, fw = fx, x = u, fx = fu;
+    } else {
+      if (u < x) a = u; else b = u;
+      if (fu <= fw || w == x) {
+        v = w, fv = fw, w = u, fw = fu;
+      } else if (fu <= fv || v == x || v == w) {
+        v = u, fv = fu;
+      }
+    }
+  }
+  R s, c;
+  sincos_(x, &s, &c);
+  return {fx, c, s};
+}
+
+// Minimum of f over the circle. `radius` is the circle's radius (the Lipschitz constant per
+// radian), `best` a value the caller already has (refinement is skipped where it cannot win),
+// `stop_below` ends the search as soon as a value below it is found, `tol` the absolute error.
+template <class R, class F>
+CircleMin<R> minimize_on_circle(F&& f, R radius, R best, R stop_below, R tol) {
+  const auto& table = circle_sample_table<R>();
+  std::array<R, kCircleSamples> fs;
+  int kmin = 0;
+  for (int k = 0; k < kCircleSamples; ++k) {
+    fs[k] = f(table[k][0], table[k][1]);
+    if (fs[k] < fs[kmin]) kmin = k;
+  }
+  CircleMin<R> result{fs[kmin], table[kmin][0], table[kmin][1]};
+  if (result.value < stop_below) return result;
+
+  const R h = R(2) * R(3.14159265358979323846264338327950288L) / R(kCircleSamples);
+  const R slack = radius * h;  // f can dip at most this far below a sample within +-h
+  if (radius <= R(0) || !(fs[kmin] - slack < min_(best, result.value))) return result;
+  const R xtol = max_(tol / radius, R(4) * Limits<R>::epsilon());
+  const int max_iter = 200;
+
+  // Refine discrete local minima, lowest first.
+  std::array<int, kCircleSamples> order;
+  int n = 0;
+  for (int k = 0; k < kCircleSamples; ++k) {
+    const R prev = fs[(k + kCircleSamples - 1) % kCircleSamples];
+    const R next = fs[(k + 1) % kCircleSamples];
+    // A plateau counts once: strictly below the previous sample, not above the next.
+    if (fs[k] < prev && fs[k] <= next) order[n++] = k;
+  }
+  if (n == 0) order[n++] = kmin;  // constant function
+  std::sort(order.begin(), order.begin() + n, [&](int i, int j) { return fs[i] < fs[j]; });
+  for (int i = 0; i < n; ++i) {
+    const int k = order[i];
+    if (!(fs[k] - slack < min_(best, result.value))) break;
+    const R x = h * R(k);
+    const CircleMin<R> m = brent_on_angle<R>(f, x - h, x + h, x, fs[k], xtol, max_iter);
+    if (m.value < result.value) result = m;
+    if (result.value < stop_below) break;
+  }
+  return result;
+}
+
+}  // namespace mtcs::geometry::detail

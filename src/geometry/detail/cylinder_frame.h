@@ -1,0 +1,95 @@
+#pragma once
+// A cylinder in a local frame (axis unit w, rim basis u, v) and the closed-form signed distance
+// from a point to the solid cylinder, evaluated along a rim of another cylinder.
+
+#include "real.h"
+
+namespace mtcs::geometry::detail {
+
+template <class R>
+struct CylFrame {
+  V3<R> p0;   // base centre
+  V3<R> d;    // axis vector p1 - p0
+  V3<R> w;    // unit axis (+z for a zero-length axis)
+  V3<R> u, v; // unit vectors completing w
+  R len;
+  R r;
+
+  V3<R> p1() const { return p0 + d; }
+};
+
+template <class R>
+CylFrame<R> make_frame(const V3<R>& p0, const V3<R>& d, R r) {
+  CylFrame<R> c;
+  c.p0 = p0;
+  c.d = d;
+  c.r = r;
+  c.len = norm(d);
+  c.w = c.len > R(0) ? d * (R(1) / c.len) : V3<R>{R(0), R(0), R(1)};
+  orthonormal_basis(c.w, &c.u, &c.v);
+  return c;
+}
+
+// Where on the solid the closest point lies.
+enum class Region { Shell, Disk, Rim, Inside };
+
+// A circle (centre c, radius rc, basis u, v) seen in the frame of cylinder `b`: the axial
+// coordinate t(theta) and the radial vector rad(theta) are affine in (cos, sin), so each
+// evaluation costs a few multiply-adds and one square root.
+template <class R>
+struct CircleInFrame {
+  R tc, tu, tv;
+  V3<R> r0, ru, rv;
+
+  CircleInFrame(const V3<R>& c, R rc, const V3<R>& u, const V3<R>& v, const CylFrame<R>& b) {
+    const V3<R> cq = c - b.p0;
+    tc = dot(cq, b.w);
+    r0 = cq - tc * b.w;
+    const R uw = dot(u, b.w), vw = dot(v, b.w);
+    tu = rc * uw;
+    tv = rc * vw;
+    ru = rc * (u - uw * b.w);
+    rv = rc * (v - vw * b.w);
+  }
+
+  R axial(R co, R si) const { return tc + tu * co + tv * si; }
+  R radial(R co, R si) const { return norm(r0 + co * ru + si * rv); }
+};
+
+// Signed distance from a point with axial coordinate t and distance rho from the axis to the
+// solid cylinder of length len and radius r: negative inside, by the depth to the boundary.
+template <class R>
+R solid_signed_distance(R t, R rho, R len, R r) {
+  const R radial = rho - r;
+  R axial;
+  if (t < R(0)) {
+    axial = -t;
+  } else if (t > len) {
+    axial = t - len;
+  } else {
+    if (radial > R(0)) return radial;
+    return -min_(-radial, min_(t, len - t));
+  }
+  return radial > R(0) ? sqrt_(axial * axial + radial * radial) : axial;
+}
+
+// Closest point of solid `b` to the point x (x itself when inside), and its region.
+template <class R>
+V3<R> closest_point_on_solid(const CylFrame<R>& b, const V3<R>& x, Region* region) {
+  const V3<R> y = x - b.p0;
+  const R t = dot(y, b.w);
+  const V3<R> rad = y - t * b.w;
+  const R rho = norm(rad);
+  const bool out_axial = t < R(0) || t > b.len;
+  const bool out_radial = rho > b.r;
+  if (!out_axial && !out_radial) {
+    *region = Region::Inside;
+    return x;
+  }
+  *region = out_axial ? (out_radial ? Region::Rim : Region::Disk) : Region::Shell;
+  const R tcl = t < R(0) ? R(0) : (t > b.len ? b.len : t);
+  const V3<R> radcl = out_radial ? rad * (b.r / rho) : rad;
+  return b.p0 + tcl * b.w + radcl;
+}
+
+}  // namespace mtcs::geometry::detail
