@@ -15,6 +15,7 @@
 #include "mtcs/geometry/cylinder_distance.h"
 
 #include <array>
+#include <tuple>
 
 #include "detail/circle_minimize.h"
 #include "detail/cylinder_frame.h"
@@ -35,6 +36,18 @@ struct Outcome {
   V3<R> wa, wb;
 };
 
+// Depth of point p inside the solid cylinder (base c0, axis cd, radius r); negative outside.
+template <class R>
+R end_inside_depth(const V3<R>& p, const V3<R>& c0, const V3<R>& cd, R r) {
+  const V3<R> y = p - c0;
+  const R len2 = detail::norm2(cd), ty = dot(y, cd);
+  if (ty < R(0) || ty > len2 || len2 == R(0)) return R(-1);
+  const R rho2 = detail::norm2(y) - ty * ty / len2;
+  if (rho2 > r * r) return R(-1);
+  const R len = detail::sqrt_(len2), t = ty / len;
+  return detail::min_(r - detail::sqrt_(detail::max_(R(0), rho2)), detail::min_(t, len - t));
+}
+
 // Depth by which the axis of `s` passes through the disk (centre c, unit normal n, radius r):
 // the smallest of the margins that make the crossing true; negative when it does not cross.
 template <class R>
@@ -52,34 +65,70 @@ bool axes_parallel(const CylFrame<R>& a, const CylFrame<R>& b) {
   return detail::norm2(detail::cross(a.w, b.w)) <= R(1e-24);
 }
 
-// `contact`: a penetration deeper than this is a final verdict and ends the search.
+// Tolerance and contact threshold, relative to max(1, S); S is computed only by the pairs that
+// get past the pretests.
 template <class R>
-Outcome<R> solve(const CylFrame<R>& a, const CylFrame<R>& b, R upper, R tol, R contact,
-                 bool pretests, bool sorted) {
+struct Thresholds {
+  R tolerance;  // absolute error target of the numerical parts, / max(1, S)
+  R contact;    // a penetration deeper than this * max(1, S) is a final verdict
+};
+
+template <class R>
+R scale_of(const V3<R>& a0, const V3<R>& da, R ra, const V3<R>& b0, const V3<R>& db, R rb) {
+  const V3<R> mid = (b0 + db * R(0.5)) - (a0 + da * R(0.5));
+  return detail::max_(R(1), detail::max_(detail::max_(norm(da), norm(db)),
+                                         detail::max_(detail::max_(ra, rb), norm(mid))));
+}
+
+template <class R>
+Outcome<R> solve(const V3<R>& a0, const V3<R>& da, R ra, const V3<R>& b0, const V3<R>& db, R rb,
+                 R upper, const Thresholds<R>& th, bool pretests, bool sorted) {
   const R inf = detail::Limits<R>::infinity();
   Outcome<R> best{inf, Feature::Bounded, true, {}, {}};
 
   // 1. Axis segments: the capsule lower bound, and the exact answer when both closest points
   //    are interior (the shells' common normal then joins the axes).
-  const auto ss = detail::segment_segment(a.p0, a.d, b.p0, b.d);
+  const auto ss = detail::segment_segment(a0, da, b0, db);
   const R dls = detail::sqrt_(ss.dist2);
-  const R lower = dls - a.r - b.r;
+  const R lower = dls - ra - rb;
   if (ss.interior) {
     V3<R> n = ss.pb - ss.pa;
-    n = dls > R(0) ? n * (R(1) / dls) : a.u;
-    if (lower > R(0)) {
-      best = {lower, Feature::ShellShell, false, ss.pa + a.r * n, ss.pb - b.r * n};
+    if (dls > R(0)) {
+      n = n * (R(1) / dls);
     } else {
-      // A common point: on the common perpendicular, within a.r of one axis and b.r of the other.
-      const V3<R> x = ss.pa + detail::max_(R(0), dls - b.r) * n;
+      V3<R> w = da * (R(1) / norm(da)), v;
+      detail::orthonormal_basis(w, &n, &v);
+    }
+    if (lower > R(0)) {
+      best = {lower, Feature::ShellShell, false, ss.pa + ra * n, ss.pb - rb * n};
+    } else {
+      // A common point: on the common perpendicular, within ra of one axis and rb of the other.
+      const V3<R> x = ss.pa + detail::max_(R(0), dls - rb) * n;
       best = {lower, Feature::Intersecting, false, x, x};
     }
     if (pretests) return best;
   }
   if (pretests && lower >= upper) return {lower, Feature::Bounded, true, {}, {}};
 
-  // 2. An axis through the other's end disk: interpenetration no rim or shell test sees.
-  {
+  const R s1 = scale_of(a0, da, ra, b0, db, rb);
+  const R tol = th.tolerance * s1, contact = th.contact * s1;
+
+  // 2. Interpenetration, possible only where the capsules overlap: an axis end inside the
+  //    other solid (bores meeting at a junction), then an axis through the other's end disk
+  //    (crossing bores that no rim or shell test sees).
+  if (lower <= R(0)) {
+    for (const auto& [p, c0, cd, cr] : {std::tuple{a0, b0, db, rb}, std::tuple{a0 + da, b0, db, rb},
+                                        std::tuple{b0, a0, da, ra}, std::tuple{b0 + db, a0, da, ra}}) {
+      const R depth = end_inside_depth(p, c0, cd, cr);
+      if (depth >= R(0) && -depth < best.value) {
+        best = {-depth, Feature::Intersecting, false, p, p};
+        if (depth > contact) return best;
+      }
+    }
+  }
+  const auto a = detail::make_frame<R>(a0, da, ra);
+  const auto b = detail::make_frame<R>(b0, db, rb);
+  if (lower <= R(0)) {
     R deepest = R(-1);
     V3<R> at{}, where{};
     const CylFrame<R>* cyl[2] = {&a, &b};
@@ -124,10 +173,7 @@ Outcome<R> solve(const CylFrame<R>& a, const CylFrame<R>& b, R upper, R tol, R c
     const CylFrame<R>& own = *rim.owner;
     const CylFrame<R>& oth = *rim.other;
     const detail::CircleInFrame<R> circle(rim.center, own.r, own.u, own.v, oth);
-    auto f = [&](R co, R si) {
-      return detail::solid_signed_distance(circle.axial(co, si), circle.radial(co, si), oth.len,
-                                           oth.r);
-    };
+    const detail::RimToSolid<R> f{circle, oth.len, oth.r};
     const auto m = detail::minimize_on_circle<R>(f, own.r, bound, -contact, tol);
     if (!(m.value < bound)) continue;
     bound = m.value;
@@ -150,16 +196,15 @@ Outcome<R> solve(const CylFrame<R>& a, const CylFrame<R>& b, R upper, R tol, R c
 }
 
 template <class R>
-Outcome<R> solve_pair(const Cylinder& ca, const Cylinder& cb, const DistanceRequest& q, R tol,
-                      R contact, V3<R>* origin) {
+Outcome<R> solve_pair(const Cylinder& ca, const Cylinder& cb, const DistanceRequest& q,
+                      const Thresholds<R>& th, V3<R>* origin) {
   // Work relative to the first axis' start: exact by Sterbenz for nearby points far from the
   // origin of the input coordinates.
   *origin = detail::from_eigen<R>(ca.p0);
-  const V3<R> a0 = detail::from_eigen<R>(ca.p0), a1 = detail::from_eigen<R>(ca.p1);
+  const V3<R> a1 = detail::from_eigen<R>(ca.p1);
   const V3<R> b0 = detail::from_eigen<R>(cb.p0), b1 = detail::from_eigen<R>(cb.p1);
-  const auto a = detail::make_frame<R>(a0 - *origin, a1 - a0, R(ca.radius));
-  const auto b = detail::make_frame<R>(b0 - *origin, b1 - b0, R(cb.radius));
-  return solve<R>(a, b, R(q.upper_bound), tol, contact, q.pretests, q.sorted_bounds);
+  return solve<R>(V3<R>{R(0), R(0), R(0)}, a1 - *origin, R(ca.radius), b0 - *origin, b1 - b0,
+                  R(cb.radius), R(q.upper_bound), th, q.pretests, q.sorted_bounds);
 }
 
 template <class R>
@@ -202,17 +247,19 @@ DistanceResult distance(const Cylinder& a, const Cylinder& b, const DistanceRequ
     r.distance = std::numeric_limits<double>::quiet_NaN();
     return r;
   }
-  const double s1 = std::max(1.0, pair_scale(a, b));
-  // Near contact the double result decides nothing: below this it is recomputed in quad.
-  const double contact = 1e-8 * s1;
+  // Near contact the double result decides nothing: within 1e-8 S it is recomputed in quad.
   V3<double> origin;
-  const auto o = solve_pair<double>(a, b, request, request.tolerance * s1, contact, &origin);
-  const bool marginal = !o.bounded && detail::abs_(o.value) < contact;
-  if (!request.exact_verdict || !marginal) return to_result<double>(o, origin, 0.0);
+  const auto o = solve_pair<double>(a, b, request, {request.tolerance, 1e-8}, &origin);
+  // |x|_1 bounds every norm in S from above: the square roots are paid only near contact.
+  const double crude = 1 + (a.p1 - a.p0).lpNorm<1>() + (b.p1 - b.p0).lpNorm<1>() + a.radius +
+                       b.radius + (b.p0 + b.p1 - a.p0 - a.p1).lpNorm<1>();
+  const bool marginal = request.exact_verdict && !o.bounded && std::abs(o.value) < 1e-8 * crude &&
+                        std::abs(o.value) < 1e-8 * std::max(1.0, pair_scale(a, b));
+  if (!marginal) return to_result<double>(o, origin, 0.0);
 
   V3<quad> qorigin;
-  const quad qs = quad(s1);
-  const auto oq = solve_pair<quad>(a, b, request, quad(1e-26) * qs, quad(1e-22) * qs, &qorigin);
+  const auto oq = solve_pair<quad>(a, b, request, {quad(1e-26), quad(1e-22)}, &qorigin);
+  const quad qs = quad(std::max(1.0, pair_scale(a, b)));
   auto r = to_result<quad>(oq, qorigin, quad(1e-24) * qs);
   r.extended_precision = true;
   return r;

@@ -90,6 +90,36 @@ CircleMin<R> brent_on_angle(F& f, R a, R b, R x, R fx, R xtol, int max_iter) {
   return {fx, c, s};
 }
 
+// Safeguarded Newton's method on [a, b] from x, for functions that provide their angle
+// derivatives (f.jet): a Newton step when the model is convex and stays inside the bracket,
+// bisection on the sign of f' otherwise. Stops when the predicted decrease f'^2 / 2f'' is below
+// `tol`, or the bracket is narrower than `xtol`. Returns the lowest value evaluated.
+template <class R, class F>
+CircleMin<R> newton_on_angle(const F& f, R a, R b, R x, R tol, R xtol, int max_iter) {
+  CircleMin<R> best{Limits<R>::infinity(), R(1), R(0)};
+  for (int iter = 0; iter < max_iter; ++iter) {
+    R si, co;
+    sincos_(x, &si, &co);
+    const auto j = f.jet(co, si);
+    if (j.f < best.value) best = {j.f, co, si};
+    if (j.d1 == R(0)) break;
+    const R step = -j.d1 / j.d2;
+    if (j.d2 > R(0) && abs_(j.d1 * step) <= tol) {
+      // Converged: one last step, kept only if it lowers the value.
+      sincos_(x + step, &si, &co);
+      const R last = f(co, si);
+      if (last < best.value) best = {last, co, si};
+      break;
+    }
+    if (j.d1 > R(0)) b = x;
+    else a = x;
+    const bool newton = j.d2 > R(0) && x + step > a && x + step < b;
+    if (b - a <= xtol) break;
+    x = newton ? x + step : (a + b) / R(2);
+  }
+  return best;
+}
+
 // Minimum of f over the circle. `radius` is the circle's radius (the Lipschitz constant per
 // radian), `best` a value the caller already has (refinement is skipped where it cannot win),
 // `stop_below` ends the search as soon as a value below it is found, `tol` the absolute error.
@@ -126,7 +156,12 @@ CircleMin<R> minimize_on_circle(F&& f, R radius, R best, R stop_below, R tol) {
     const int k = order[i];
     if (!(fs[k] - slack < min_(best, result.value))) break;
     const R x = h * R(k);
-    const CircleMin<R> m = brent_on_angle<R>(f, x - h, x + h, x, fs[k], xtol, max_iter);
+    CircleMin<R> m;
+    if constexpr (requires { f.jet(R(0), R(0)); }) {
+      m = newton_on_angle<R>(f, x - h, x + h, x, tol, xtol, max_iter);
+    } else {
+      m = brent_on_angle<R>(f, x - h, x + h, x, fs[k], xtol, max_iter);
+    }
     if (m.value < result.value) result = m;
     if (result.value < stop_below) break;
   }

@@ -73,6 +73,52 @@ R solid_signed_distance(R t, R rho, R len, R r) {
   return radial > R(0) ? sqrt_(axial * axial + radial * radial) : axial;
 }
 
+// Value and first two angle derivatives of a function on a circle.
+template <class R>
+struct Jet {
+  R f, d1, d2;
+};
+
+// The signed distance from the points of a circle to a solid cylinder (length len, radius rb),
+// with its angle derivatives for Newton's method. Piecewise smooth: C1 outside the solid.
+template <class R>
+struct RimToSolid {
+  const CircleInFrame<R>& c;
+  R len, rb;
+
+  R operator()(R co, R si) const {
+    return solid_signed_distance(c.axial(co, si), c.radial(co, si), len, rb);
+  }
+
+  Jet<R> jet(R co, R si) const {
+    const R t = c.tc + c.tu * co + c.tv * si;
+    const R t1 = -c.tu * si + c.tv * co, t2 = c.tc - t;
+    const V3<R> rad = c.r0 + co * c.ru + si * c.rv;
+    const V3<R> rad1 = si * -c.ru + co * c.rv, rad2 = rad - c.r0;
+    const R rho = norm(rad);
+    R rho1 = R(0), rho2 = R(0);
+    if (rho > R(0)) {
+      rho1 = dot(rad, rad1) / rho;
+      rho2 = (norm2(rad1) - dot(rad, rad2) - rho1 * rho1) / rho;
+    }
+    const R dr = rho - rb;
+    if (t >= R(0) && t <= len) {
+      if (dr > R(0)) return {dr, rho1, rho2};
+      // Inside: minus the depth to the nearest of shell and end planes.
+      const R to0 = t, to1 = len - t;
+      if (-dr <= to0 && -dr <= to1) return {dr, rho1, rho2};
+      if (to0 <= to1) return {-t, -t1, -t2};
+      return {t - len, t1, t2};
+    }
+    const R sign = t < R(0) ? R(-1) : R(1);
+    const R ax = t < R(0) ? -t : t - len, ax1 = sign * t1, ax2 = sign * t2;
+    if (dr <= R(0)) return {ax, ax1, ax2};
+    const R f = sqrt_(ax * ax + dr * dr);
+    const R f1 = (ax * ax1 + dr * rho1) / f;
+    return {f, f1, (ax1 * ax1 + ax * ax2 + rho1 * rho1 + dr * rho2 - f1 * f1) / f};
+  }
+};
+
 // Closest point of solid `b` to the point x (x itself when inside), and its region.
 template <class R>
 V3<R> closest_point_on_solid(const CylFrame<R>& b, const V3<R>& x, Region* region) {
