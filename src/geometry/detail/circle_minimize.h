@@ -27,15 +27,16 @@ struct CircleMin {
 };
 
 template <class R>
-const std::array<std::array<R, 2>, kCircleSamples>& circle_sample_table() {
+struct SampleTable {
+  std::array<R, kCircleSamples> cos, sin;
+};
+
+template <class R>
+const SampleTable<R>& circle_sample_table() {
   static const auto table = [] {
-    std::array<std::array<R, 2>, kCircleSamples> t{};
+    SampleTable<R> t{};
     const R two_pi = R(2) * R(3.14159265358979323846264338327950288L);
-    for (int k = 0; k < kCircleSamples; ++k) {
-      R s, c;
-      sincos_(two_pi * R(k) / R(kCircleSamples), &s, &c);
-      t[k] = {c, s};
-    }
+    for (int k = 0; k < kCircleSamples; ++k) sincos_(two_pi * R(k) / R(kCircleSamples), &t.sin[k], &t.cos[k]);
     return t;
   }();
   return table;
@@ -127,12 +128,15 @@ template <class R, class F>
 CircleMin<R> minimize_on_circle(F&& f, R radius, R best, R stop_below, R tol) {
   const auto& table = circle_sample_table<R>();
   std::array<R, kCircleSamples> fs;
-  int kmin = 0;
-  for (int k = 0; k < kCircleSamples; ++k) {
-    fs[k] = f(table[k][0], table[k][1]);
-    if (fs[k] < fs[kmin]) kmin = k;
+  if constexpr (requires { f.sample(table.cos, table.sin, fs); }) {
+    f.sample(table.cos, table.sin, fs);
+  } else {
+    for (int k = 0; k < kCircleSamples; ++k) fs[k] = f(table.cos[k], table.sin[k]);
   }
-  CircleMin<R> result{fs[kmin], table[kmin][0], table[kmin][1]};
+  int kmin = 0;
+  for (int k = 1; k < kCircleSamples; ++k)
+    if (fs[k] < fs[kmin]) kmin = k;
+  CircleMin<R> result{fs[kmin], table.cos[kmin], table.sin[kmin]};
   if (result.value < stop_below) return result;
 
   const R h = R(2) * R(3.14159265358979323846264338327950288L) / R(kCircleSamples);

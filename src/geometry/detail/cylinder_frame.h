@@ -2,6 +2,8 @@
 // A cylinder in a local frame (axis unit w, rim basis u, v) and the closed-form signed distance
 // from a point to the solid cylinder, evaluated along a rim of another cylinder.
 
+#include <array>
+
 #include "real.h"
 
 namespace mtcs::geometry::detail {
@@ -88,6 +90,27 @@ struct RimToSolid {
 
   R operator()(R co, R si) const {
     return solid_signed_distance(c.axial(co, si), c.radial(co, si), len, rb);
+  }
+
+  // All samples at once, branch-free, so that the compiler vectorises the loops.
+  template <std::size_t N>
+  void sample(const std::array<R, N>& co, const std::array<R, N>& si, std::array<R, N>& out) const {
+    std::array<R, N> t, rho;
+    for (std::size_t k = 0; k < N; ++k) {
+      t[k] = c.tc + c.tu * co[k] + c.tv * si[k];
+      const R x = c.r0.x + c.ru.x * co[k] + c.rv.x * si[k];
+      const R y = c.r0.y + c.ru.y * co[k] + c.rv.y * si[k];
+      const R z = c.r0.z + c.ru.z * co[k] + c.rv.z * si[k];
+      rho[k] = sqrt_(x * x + y * y + z * z);
+    }
+    for (std::size_t k = 0; k < N; ++k) {
+      const R ax = max_(R(0), max_(-t[k], t[k] - len));
+      const R radial = rho[k] - rb;
+      const R rp = max_(R(0), radial);
+      const R outside = sqrt_(ax * ax + rp * rp);
+      const R inside = -min_(-radial, min_(t[k], len - t[k]));
+      out[k] = (ax > R(0) || radial > R(0)) ? outside : inside;
+    }
   }
 
   Jet<R> jet(R co, R si) const {
