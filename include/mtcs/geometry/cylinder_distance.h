@@ -27,7 +27,7 @@ struct DistanceRequest {
   // Ablations of the paper's speed-ups, for benchmarks; results stay exact without them.
   bool pretests = true;       // axis-segment pretest with early return and upper-bound exit
   bool sorted_bounds = true;  // rims visited in order of their lower bounds, with early exit
-  // Re-run pairs within 1e-8 * S of contact in 113-bit precision, so that touching and
+  // Re-run pairs within 1e-10 * S of contact in 113-bit precision, so that touching and
   // barely separated pairs get the right verdict.
   bool exact_verdict = true;
 };

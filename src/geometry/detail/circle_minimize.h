@@ -92,16 +92,23 @@ CircleMin<R> brent_on_angle(F& f, R a, R b, R x, R fx, R xtol, int max_iter) {
 }
 
 // Safeguarded Newton's method on [a, b] from x, for functions that provide their angle
-// derivatives (f.jet): a Newton step when the model is convex and stays inside the bracket,
-// bisection on the sign of f' otherwise. Stops when the predicted decrease f'^2 / 2f'' is below
+// derivatives (f.jet), given their jets ja, jb at the bracket ends. Each step is, in order of
+// preference: Newton's step, when the model is convex and stays inside the bracket; the
+// intersection of the tangents at the bracket ends, which lands on a V-shaped kink (a rim
+// grazing the other's rim) in one step; bisection on the sign of f', also forced when three
+// steps have not halved the bracket. Stops when the predicted decrease f'^2 / 2f'' is below
 // `tol`, or the bracket is narrower than `xtol`. Returns the lowest value evaluated.
 template <class R, class F>
-CircleMin<R> newton_on_angle(const F& f, R a, R b, R x, R tol, R xtol, int max_iter) {
+CircleMin<R> newton_on_angle(const F& f, R a, R b, R x, Jet<R> ja, Jet<R> jb, R tol, R xtol,
+                             int max_iter) {
   CircleMin<R> best{Limits<R>::infinity(), R(1), R(0)};
+  bool tangent_a = ja.d1 < R(0), tangent_b = jb.d1 > R(0);
+  R mark = b - a;
+  int slow = 0;
   for (int iter = 0; iter < max_iter; ++iter) {
     R si, co;
     sincos_(x, &si, &co);
-    const auto j = f.jet(co, si);
+    const Jet<R> j = f.jet(co, si);
     if (j.f < best.value) best = {j.f, co, si};
     if (j.d1 == R(0)) break;
     const R step = -j.d1 / j.d2;
@@ -112,11 +119,20 @@ CircleMin<R> newton_on_angle(const F& f, R a, R b, R x, R tol, R xtol, int max_i
       if (last < best.value) best = {last, co, si};
       break;
     }
-    if (j.d1 > R(0)) b = x;
-    else a = x;
-    const bool newton = j.d2 > R(0) && x + step > a && x + step < b;
+    if (j.d1 > R(0)) b = x, jb = j, tangent_b = true;
+    else a = x, ja = j, tangent_a = true;
     if (b - a <= xtol) break;
-    x = newton ? x + step : (a + b) / R(2);
+    if (b - a <= mark / R(2)) mark = b - a, slow = 0;
+    else ++slow;
+
+    R next = x + step;
+    bool inside = j.d2 > R(0) && next > a && next < b;
+    if (!inside && tangent_a && tangent_b) {
+      next = (jb.f - ja.f + ja.d1 * a - jb.d1 * b) / (ja.d1 - jb.d1);
+      inside = next > a && next < b;
+    }
+    if (!inside || slow >= 3) next = (a + b) / R(2), slow = 0;
+    x = next;
   }
   return best;
 }
@@ -162,7 +178,9 @@ CircleMin<R> minimize_on_circle(F&& f, R radius, R best, R stop_below, R tol) {
     const R x = h * R(k);
     CircleMin<R> m;
     if constexpr (requires { f.jet(R(0), R(0)); }) {
-      m = newton_on_angle<R>(f, x - h, x + h, x, tol, xtol, max_iter);
+      const int ka = (k + kCircleSamples - 1) % kCircleSamples, kb = (k + 1) % kCircleSamples;
+      const auto ja = f.jet(table.cos[ka], table.sin[ka]), jb = f.jet(table.cos[kb], table.sin[kb]);
+      m = newton_on_angle<R>(f, x - h, x + h, x, ja, jb, tol, xtol, max_iter);
     } else {
       m = brent_on_angle<R>(f, x - h, x + h, x, fs[k], xtol, max_iter);
     }

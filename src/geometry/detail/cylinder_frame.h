@@ -75,12 +75,6 @@ R solid_signed_distance(R t, R rho, R len, R r) {
   return radial > R(0) ? sqrt_(axial * axial + radial * radial) : axial;
 }
 
-// Value and first two angle derivatives of a function on a circle.
-template <class R>
-struct Jet {
-  R f, d1, d2;
-};
-
 // The signed distance from the points of a circle to a solid cylinder (length len, radius rb),
 // with its angle derivatives for Newton's method. Piecewise smooth: C1 outside the solid.
 template <class R>

@@ -43,6 +43,12 @@ R max_(R a, R b) { return a < b ? b : a; }
 template <class R>
 R clamp01(R x) { return x < R(0) ? R(0) : (x > R(1) ? R(1) : x); }
 
+// Value and first two derivatives of a function of one variable.
+template <class R>
+struct Jet {
+  R f, d1, d2;
+};
+
 template <class R>
 struct V3 {
   R x, y, z;
