@@ -98,11 +98,12 @@ CircleMin<R> brent_on_angle(F& f, R a, R b, R x, R fx, R xtol, int max_iter) {
 // grazing the other's rim) in one step; bisection on the sign of f', also forced when three
 // steps have not halved the bracket. Stops when the predicted decrease f'^2 / 2f'' is below
 // `tol`, or the bracket is narrower than `xtol`. Returns the lowest value evaluated.
-template <class R, class F>
-CircleMin<R> newton_on_angle(const F& f, R a, R b, R x, Jet<R> ja, Jet<R> jb, R tol, R xtol,
+template <class R, class F, class EndJets>
+CircleMin<R> newton_on_angle(const F& f, R a, R b, R x, EndJets&& end_jets, R tol, R xtol,
                              int max_iter) {
   CircleMin<R> best{Limits<R>::infinity(), R(1), R(0)};
-  bool tangent_a = ja.d1 < R(0), tangent_b = jb.d1 > R(0);
+  Jet<R> ja{}, jb{};
+  bool tangent_a = false, tangent_b = false, ends_known = false;
   R mark = b - a;
   int slow = 0;
   for (int iter = 0; iter < max_iter; ++iter) {
@@ -127,6 +128,15 @@ CircleMin<R> newton_on_angle(const F& f, R a, R b, R x, Jet<R> ja, Jet<R> jb, R 
 
     R next = x + step;
     bool inside = j.d2 > R(0) && next > a && next < b;
+    if (!inside && !ends_known) {
+      // Newton failed: the bracket ends' jets are worth their cost now. (An end already
+      // replaced by an evaluated point keeps that point's jet.)
+      ends_known = true;
+      Jet<R> ea, eb;
+      end_jets(&ea, &eb);
+      if (!tangent_a) ja = ea, tangent_a = ea.d1 < R(0);
+      if (!tangent_b) jb = eb, tangent_b = eb.d1 > R(0);
+    }
     if (!inside && tangent_a && tangent_b) {
       next = (jb.f - ja.f + ja.d1 * a - jb.d1 * b) / (ja.d1 - jb.d1);
       inside = next > a && next < b;
@@ -179,8 +189,11 @@ CircleMin<R> minimize_on_circle(F&& f, R radius, R best, R stop_below, R tol) {
     CircleMin<R> m;
     if constexpr (requires { f.jet(R(0), R(0)); }) {
       const int ka = (k + kCircleSamples - 1) % kCircleSamples, kb = (k + 1) % kCircleSamples;
-      const auto ja = f.jet(table.cos[ka], table.sin[ka]), jb = f.jet(table.cos[kb], table.sin[kb]);
-      m = newton_on_angle<R>(f, x - h, x + h, x, ja, jb, tol, xtol, max_iter);
+      auto end_jets = [&](Jet<R>* ja, Jet<R>* jb) {
+        *ja = f.jet(table.cos[ka], table.sin[ka]);
+        *jb = f.jet(table.cos[kb], table.sin[kb]);
+      };
+      m = newton_on_angle<R>(f, x - h, x + h, x, end_jets, tol, xtol, max_iter);
     } else {
       m = brent_on_angle<R>(f, x - h, x + h, x, fs[k], xtol, max_iter);
     }

@@ -98,12 +98,16 @@ struct RimToSolid {
       rho[k] = sqrt_(x * x + y * y + z * z);
     }
     for (std::size_t k = 0; k < N; ++k) {
-      const R ax = max_(R(0), max_(-t[k], t[k] - len));
+      // Plain selects (no short-circuit operators) so that the loop stays branch-free.
+      R ax = -t[k] > t[k] - len ? -t[k] : t[k] - len;
+      ax = ax > R(0) ? ax : R(0);
       const R radial = rho[k] - rb;
-      const R rp = max_(R(0), radial);
+      const R rp = radial > R(0) ? radial : R(0);
       const R outside = sqrt_(ax * ax + rp * rp);
-      const R inside = -min_(-radial, min_(t[k], len - t[k]));
-      out[k] = (ax > R(0) || radial > R(0)) ? outside : inside;
+      R depth = t[k] < len - t[k] ? t[k] : len - t[k];
+      depth = -radial < depth ? -radial : depth;
+      const R excess = ax > rp ? ax : rp;  // > 0 exactly when the point is outside
+      out[k] = excess > R(0) ? outside : -depth;
     }
   }
 
