@@ -13,11 +13,14 @@
 
 #include "fcl_peer.h"
 #include "mtcs/cli/commands.h"
-#include "mtcs/cli/pairs_csv.h"
+#include "mtcs/io/pairs_csv.h"
 #include "mtcs/geometry/cylinder_distance.h"
 #include "mtcs/geometry/segment_distance.h"
 
 namespace mtcs::cli {
+
+using io::CylinderPair;
+using io::read_pairs_csv;
 namespace {
 
 using geometry::DistanceRequest;

@@ -4,12 +4,15 @@
 #include <cmath>
 #include <memory>
 
-#include "mtcs/cli/atomic_file.h"
+#include "mtcs/io/atomic_file.h"
 #include "mtcs/cli/commands.h"
-#include "mtcs/cli/pairs_csv.h"
+#include "mtcs/io/pairs_csv.h"
 #include "mtcs/geometry/cylinder_distance.h"
 
 namespace mtcs::cli {
+
+using io::AtomicFile;
+using io::read_pairs_csv;
 
 Command add_distance_command(CLI::App& app) {
   struct Options {

@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "mtcs/cli/commands.h"
-#include "mtcs/cli/input_error.h"
+#include "mtcs/io/input_error.h"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
     for (const auto& command : commands) {
       if (command.app->parsed()) return command.run();
     }
-  } catch (const mtcs::cli::InputError& e) {
+  } catch (const mtcs::io::InputError& e) {
     std::cerr << "mtcs: " << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {

@@ -6,18 +6,18 @@
 #include <Eigen/Geometry>
 #include <random>
 
-#include "mtcs/cli/pairs_csv.h"
+#include "mtcs/io/pairs_csv.h"
 #include "mtcs/geometry/cylinder_distance.h"
 
 using namespace mtcs::geometry;
-using mtcs::cli::CylinderPair;
+using mtcs::io::CylinderPair;
 
 namespace {
 
 const std::vector<CylinderPair>& all_pairs() {
   static const auto pairs = [] {
-    auto v = mtcs::cli::read_pairs_csv(MTCS_TEST_DATA "/cylinder_pairs_public.csv");
-    const auto exact = mtcs::cli::read_pairs_csv(MTCS_TEST_DATA "/cylinder_pairs_exact.csv");
+    auto v = mtcs::io::read_pairs_csv(MTCS_TEST_DATA "/cylinder_pairs_public.csv");
+    const auto exact = mtcs::io::read_pairs_csv(MTCS_TEST_DATA "/cylinder_pairs_exact.csv");
     v.insert(v.end(), exact.begin(), exact.end());
     return v;
   }();

@@ -1,4 +1,4 @@
-#include "mtcs/cli/pairs_csv.h"
+#include "mtcs/io/pairs_csv.h"
 
 #include <array>
 #include <charconv>
@@ -6,9 +6,9 @@
 #include <fstream>
 #include <string_view>
 
-#include "mtcs/cli/input_error.h"
+#include "mtcs/io/input_error.h"
 
-namespace mtcs::cli {
+namespace mtcs::io {
 namespace {
 
 constexpr std::array<std::string_view, 15> kRequired{
@@ -103,4 +103,4 @@ std::vector<CylinderPair> read_pairs_csv(const std::string& path) {
   return pairs;
 }
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::io

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <string>
 
-namespace mtcs::cli {
+namespace mtcs::io {
 
 class AtomicFile {
  public:
@@ -24,4 +24,4 @@ class AtomicFile {
   bool committed_ = false;
 };
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::io

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace mtcs::cli {
+namespace mtcs::io {
 
 class InputError : public std::runtime_error {
  public:
@@ -26,4 +26,4 @@ class InputError : public std::runtime_error {
   std::string field_;
 };
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::io

@@ -1,4 +1,4 @@
-#include "mtcs/cli/atomic_file.h"
+#include "mtcs/io/atomic_file.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -6,7 +6,7 @@
 
 #include <unistd.h>
 
-namespace mtcs::cli {
+namespace mtcs::io {
 
 AtomicFile::AtomicFile(std::string path)
     : path_(std::move(path)), tmp_(path_ + ".tmp." + std::to_string(::getpid())), out_(tmp_) {
@@ -29,4 +29,4 @@ void AtomicFile::commit() {
   committed_ = true;
 }
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::io

@@ -6,8 +6,8 @@
 #include <fstream>
 #include <random>
 
-#include "mtcs/cli/input_error.h"
-#include "mtcs/cli/pairs_csv.h"
+#include "mtcs/io/input_error.h"
+#include "mtcs/io/pairs_csv.h"
 
 TEST_CASE("pairs CSV reader survives mutated input", "[cli][fuzz]") {
   const std::string seed =
@@ -32,10 +32,10 @@ TEST_CASE("pairs CSV reader survives mutated input", "[cli][fuzz]") {
     }
     std::ofstream(path, std::ios::binary) << s;
     try {
-      const auto pairs = mtcs::cli::read_pairs_csv(path.string());
+      const auto pairs = mtcs::io::read_pairs_csv(path.string());
       for (const auto& p : pairs) REQUIRE(std::isfinite(p.a.radius));
       ++parsed;
-    } catch (const mtcs::cli::InputError& e) {
+    } catch (const mtcs::io::InputError& e) {
       REQUIRE(e.line() >= 1);
       ++rejected;
     }

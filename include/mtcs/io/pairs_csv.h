@@ -9,7 +9,7 @@
 
 #include "mtcs/geometry/primitives.h"
 
-namespace mtcs::cli {
+namespace mtcs::io {
 
 struct CylinderPair {
   std::string id;
@@ -23,4 +23,4 @@ struct CylinderPair {
 // Throws InputError (file, line, column, field) on the first malformed row.
 std::vector<CylinderPair> read_pairs_csv(const std::string& path);
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::io
