@@ -3,6 +3,7 @@
 // circular cylinders given by their axis segment and radius.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products, unitOrthogonal
 
 namespace mtcs::geometry {
 

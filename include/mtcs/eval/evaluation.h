@@ -1,0 +1,49 @@
+#pragma once
+// The score of one layout: objectives, violated constraints with the elements involved, and the
+// penalty (shared/notes/mtcs_literature.md 7.4, 7.5).
+
+#include <string>
+#include <vector>
+
+#include "mtcs/mold/mold_spec.h"
+
+namespace mtcs::eval {
+
+struct Violation {
+  std::string kind;                   // bore_bore, bore_keepout, bore_cavity, bore_surface, depth_ratio, ...
+  std::vector<std::string> elements;  // bore names (c0.b3), keep-out names, "cavity", "block"
+  double distance = 0;                // what was found (mm, or the ratio/angle for drilling limits)
+  double margin = 0;                  // what is required
+  double amount = 0;                  // normalised shortfall, > 0: |distance - margin| / margin
+  geometry::Vec3 where = geometry::Vec3::Zero();  // a point near the violation
+};
+
+struct StageTime {
+  std::string name;
+  double seconds = 0;
+};
+
+struct Evaluation {
+  std::vector<double> objectives;  // raw values, in the order of objectives.use
+  std::vector<Violation> violations;
+  double violation = 0;            // CV = sum of amount^power
+  std::vector<StageTime> stages;   // filled when timing was asked for
+
+  bool feasible() const { return violations.empty(); }
+};
+
+// One number per layout for single-objective search: the scaled, weighted objectives plus the
+// penalty variant's term; under constrained domination, feasible layouts come first (compare
+// with `better`).
+struct Fitness {
+  bool feasible = true;
+  double violation = 0;
+  double value = 0;
+};
+
+Fitness fitness(const Evaluation& e, const mold::MoldSpec& spec, const std::vector<double>& weights);
+// Strict weak ordering: constrained domination (feasible first, then less violation, then
+// value) for that variant; otherwise by value alone.
+bool better(const Fitness& a, const Fitness& b, mold::PenaltyVariant variant);
+
+}  // namespace mtcs::eval

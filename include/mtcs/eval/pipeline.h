@@ -1,0 +1,44 @@
+#pragma once
+// The evaluation pipeline, assembled per scene from the stages it needs: a scene without a
+// cavity mesh builds no mesh stage, one without keep-outs no keep-out stage, one whose
+// objectives do not include the thermal proxies samples no surface.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mtcs/eval/evaluation.h"
+#include "mtcs/mold/genome.h"
+#include "mtcs/mold/layout.h"
+#include "mtcs/mold/scene.h"
+
+namespace mtcs::eval {
+
+class Stage {
+ public:
+  virtual ~Stage() = default;
+  virtual std::string name() const = 0;
+  virtual void run(const mold::Layout& layout, Evaluation& out) const = 0;
+};
+
+class Pipeline {
+ public:
+  explicit Pipeline(const mold::Scene& scene);
+  ~Pipeline();
+
+  // Thread-safe: stages hold only data built at construction.
+  Evaluation evaluate(const mold::Genome& genome, bool timed = false) const;
+  Evaluation evaluate(const mold::Layout& layout, bool timed = false) const;
+
+  std::vector<std::string> stage_names() const;
+  std::vector<std::string> objective_names() const;
+  std::size_t surface_samples() const { return samples_; }
+  const mold::Scene& scene() const { return scene_; }
+
+ private:
+  const mold::Scene& scene_;
+  std::vector<std::unique_ptr<Stage>> stages_;
+  std::size_t samples_ = 0;
+};
+
+}  // namespace mtcs::eval

@@ -1,0 +1,22 @@
+#pragma once
+// Genome -> drilling plan (shared/notes/mtcs_literature.md 7.2).
+
+#include "mtcs/mold/genome.h"
+#include "mtcs/mold/layout.h"
+#include "mtcs/mold/scene.h"
+
+namespace mtcs::mold {
+
+// With drilling.axis_parallel, a step between two waypoints that differ in more than one
+// coordinate is routed along the axes (longest leg first), so every hole is axis-parallel and
+// the inlet and outlet stay where they are. Each flow segment is drilled from whichever end
+// gives the shorter hole through an allowed face (any face when neither is allowed; the
+// violation is reported). Holes extend past their far waypoint by the drill point,
+// 0.5 D cot(tip/2), plus drilling.min_overlap, unless that waypoint is the inlet or outlet.
+Layout decode(const Scene& scene, const Genome& genome);
+
+// The waypoints actually drilled, after axis-parallel routing, dropping repeated points and
+// merging straight runs.
+std::vector<geometry::Vec3> routed_waypoints(const Scene& scene, const Circuit& circuit);
+
+}  // namespace mtcs::mold

@@ -1,0 +1,42 @@
+#pragma once
+// A loaded mold with what the queries need: the block's shape and the BVHs of its meshes,
+// built only for the meshes the spec has.
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "mtcs/mesh/bvh.h"
+#include "mtcs/mold/mold_spec.h"
+
+namespace mtcs::mold {
+
+// Where a ray from inside the block leaves it.
+struct BlockExit {
+  geometry::Vec3 point;
+  geometry::Vec3 normal;  // outward
+  bool hit = false;
+};
+
+class Scene {
+ public:
+  explicit Scene(MoldSpec spec);
+
+  const MoldSpec& spec() const { return spec_; }
+  const Box& block_bounds() const { return block_bounds_; }
+  BlockExit exit_block(const geometry::Vec3& from, const geometry::Vec3& direction) const;
+  // Distance from the solid cylinder to the block's surface, ignoring the first `skip` mm of
+  // its axis from p0 (its entry). Negative when the axis leaves the block.
+  double surface_clearance(const geometry::Cylinder& c, double skip, double cap) const;
+
+  const mesh::TriangleBvh* cavity_bvh() const { return cavity_bvh_.get(); }
+  const mesh::TriangleBvh* keep_out_bvh(std::size_t k) const { return keep_out_bvh_[k].get(); }
+
+ private:
+  MoldSpec spec_;
+  Box block_bounds_;
+  std::unique_ptr<mesh::TriangleBvh> block_bvh_, cavity_bvh_;
+  std::vector<std::unique_ptr<mesh::TriangleBvh>> keep_out_bvh_;
+};
+
+}  // namespace mtcs::mold

@@ -1,0 +1,87 @@
+// mtcs evaluate: score one layout against a mold: objectives, violated constraints with the
+// elements involved and where, the stages that ran and their time.
+
+#include <CLI/CLI.hpp>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "mtcs/cli/commands.h"
+#include "mtcs/eval/pipeline.h"
+#include "mtcs/mold/decoder.h"
+#include "mtcs/mold/layout_io.h"
+
+namespace mtcs::cli {
+
+namespace {
+
+nlohmann::ordered_json to_json(const eval::Evaluation& e, const eval::Pipeline& pipeline) {
+  nlohmann::ordered_json j;
+  j["feasible"] = e.feasible();
+  j["objectives"] = nlohmann::ordered_json::object();
+  const auto names = pipeline.objective_names();
+  for (std::size_t k = 0; k < names.size(); ++k) j["objectives"][names[k]] = e.objectives[k];
+  j["violation"] = e.violation;
+  j["violations"] = nlohmann::ordered_json::array();
+  for (const auto& v : e.violations) {
+    j["violations"].push_back({{"kind", v.kind},
+                               {"elements", v.elements},
+                               {"distance", v.distance},
+                               {"margin", v.margin},
+                               {"where", {v.where.x(), v.where.y(), v.where.z()}}});
+  }
+  j["stages"] = nlohmann::ordered_json::array();
+  for (const auto& s : e.stages) j["stages"].push_back({{"name", s.name}, {"seconds", s.seconds}});
+  return j;
+}
+
+void print_text(const eval::Evaluation& e, const eval::Pipeline& pipeline, const mold::Layout& layout) {
+  std::cout << "bores " << layout.bores.size() << ", plugs " << layout.plugs << ", designed junctions "
+            << layout.junctions.size() << ", surface samples " << pipeline.surface_samples() << "\n\nobjectives\n";
+  const auto names = pipeline.objective_names();
+  for (std::size_t k = 0; k < names.size(); ++k)
+    std::cout << "  " << std::left << std::setw(16) << names[k] << std::setprecision(10) << e.objectives[k] << "\n";
+  std::cout << "\n" << (e.feasible() ? "feasible" : "infeasible") << ": " << e.violations.size()
+            << " violated constraint(s), total violation " << e.violation << "\n";
+  for (const auto& v : e.violations) {
+    std::cout << "  " << std::setw(14) << v.kind << " ";
+    for (const auto& el : v.elements) std::cout << el << " ";
+    std::cout << "found " << v.distance << ", needs " << v.margin << " at (" << v.where.x() << ", " << v.where.y()
+              << ", " << v.where.z() << ")\n";
+  }
+  std::cout << "\nstages (microseconds)\n";
+  for (const auto& s : e.stages) std::cout << "  " << std::setw(24) << s.name << s.seconds * 1e6 << "\n";
+}
+
+}  // namespace
+
+Command add_evaluate_command(CLI::App& app) {
+  struct Options {
+    std::string mold, layout;
+    bool json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* sub = app.add_subcommand(
+      "evaluate",
+      "Score a layout against a mold: objectives, every violated constraint with the elements\n"
+      "involved, the distance found and where, and the time of each stage that ran.\n"
+      "Example: mtcs evaluate molds/plate.yaml --layout molds/plate.layout.yaml --json");
+  sub->add_option("mold", opt->mold, "mold spec (YAML, see docs/mold-spec.md)")->required();
+  sub->add_option("--layout", opt->layout, "layout (YAML: circuits of waypoints)")->required();
+  sub->add_flag("--json", opt->json,
+                "one JSON object on stdout: {feasible, objectives, violation, violations[{kind, elements, "
+                "distance, margin, where}], stages[{name, seconds}]}");
+  return {sub, [opt] {
+            const mold::Scene scene(mold::load_mold_spec(opt->mold));
+            const mold::Genome genome = mold::load_layout(opt->layout, scene.spec());
+            const eval::Pipeline pipeline(scene);
+            const mold::Layout layout = mold::decode(scene, genome);
+            const eval::Evaluation e = pipeline.evaluate(genome, true);
+            if (opt->json) std::cout << to_json(e, pipeline).dump(2) << "\n";
+            else print_text(e, pipeline, layout);
+            return 0;
+          }};
+}
+
+}  // namespace mtcs::cli

@@ -1,0 +1,63 @@
+// Bores against keep-outs (ejector pins, bolts, inserts), each with its own clearance:
+// cylinders through the exact cylinder kernel, meshes through their BVH.
+
+#include "mtcs/geometry/cylinder_distance.h"
+#include "mtcs/mesh/bvh.h"
+#include "stages.h"
+
+namespace mtcs::eval {
+namespace {
+
+class KeepOutCylinderStage final : public Stage {
+ public:
+  explicit KeepOutCylinderStage(const mold::Scene& scene) {
+    for (const auto& k : scene.spec().keep_outs)
+      if (k.cylinder) keep_outs_.push_back(k);
+  }
+  std::string name() const override { return "bore_keepout_cylinders"; }
+  void run(const mold::Layout& layout, Evaluation& out) const override {
+    for (const mold::Bore& b : layout.bores) {
+      for (const auto& k : keep_outs_) {
+        const auto d = geometry::distance(b.hole, *k.cylinder, {.upper_bound = k.clearance});
+        if (d.bounded) continue;
+        add_clearance(out, "bore_keepout", {b.name(), k.name}, d.distance, k.clearance, (d.witness_a + d.witness_b) / 2);
+      }
+    }
+  }
+
+ private:
+  std::vector<mold::KeepOut> keep_outs_;
+};
+
+class KeepOutMeshStage final : public Stage {
+ public:
+  explicit KeepOutMeshStage(const mold::Scene& scene) : scene_(scene) {
+    for (std::size_t k = 0; k < scene.spec().keep_outs.size(); ++k)
+      if (scene.spec().keep_outs[k].mesh) indices_.push_back(k);
+  }
+  std::string name() const override { return "bore_keepout_meshes"; }
+  void run(const mold::Layout& layout, Evaluation& out) const override {
+    for (const mold::Bore& b : layout.bores) {
+      for (const std::size_t k : indices_) {
+        const auto& spec = scene_.spec().keep_outs[k];
+        const double d = mesh::cylinder_clearance(*scene_.keep_out_bvh(k), b.hole.p0, b.hole.p1, b.hole.radius, spec.clearance);
+        add_clearance(out, "bore_keepout", {b.name(), spec.name}, d, spec.clearance, (b.hole.p0 + b.hole.p1) / 2);
+      }
+    }
+  }
+
+ private:
+  const mold::Scene& scene_;
+  std::vector<std::size_t> indices_;
+};
+
+}  // namespace
+
+std::unique_ptr<Stage> make_keep_out_cylinder_stage(const mold::Scene& scene) {
+  return std::make_unique<KeepOutCylinderStage>(scene);
+}
+std::unique_ptr<Stage> make_keep_out_mesh_stage(const mold::Scene& scene) {
+  return std::make_unique<KeepOutMeshStage>(scene);
+}
+
+}  // namespace mtcs::eval

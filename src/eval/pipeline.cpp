@@ -1,0 +1,74 @@
+#include "mtcs/eval/pipeline.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "mtcs/mold/decoder.h"
+#include "stages.h"
+
+namespace mtcs::eval {
+
+Pipeline::Pipeline(const mold::Scene& scene) : scene_(scene) {
+  const mold::MoldSpec& spec = scene.spec();
+  const auto& use = spec.objectives.use;
+  auto uses = [&](mold::Objective o) { return std::find(use.begin(), use.end(), o) != use.end(); };
+  // Objectives.
+  if ((uses(mold::Objective::Uniformity) || uses(mold::Objective::WorstCovered))) {
+    if (!spec.cavity) throw std::invalid_argument("the thermal objectives need a cavity");
+    SurfaceSamples samples = spec.cavity->box ? sample_box(*spec.cavity->box, spec.cavity->sample_spacing)
+                                              : sample_mesh(spec.cavity->mesh->mesh, spec.cavity->sample_spacing);
+    samples_ = samples.size();
+    stages_.push_back(make_thermal_stage(scene, std::move(samples)));
+  }
+  if (uses(mold::Objective::Cost)) stages_.push_back(make_cost_stage(scene));
+  // Constraints: only those the scene has elements for.
+  stages_.push_back(make_bore_bore_stage(scene));
+  bool cylinders = false, meshes = false;
+  for (const auto& k : spec.keep_outs) cylinders = cylinders || k.cylinder, meshes = meshes || k.mesh;
+  if (cylinders) stages_.push_back(make_keep_out_cylinder_stage(scene));
+  if (meshes) stages_.push_back(make_keep_out_mesh_stage(scene));
+  if (spec.cavity) stages_.push_back(make_cavity_stage(scene));
+  stages_.push_back(make_surface_stage(scene));
+  stages_.push_back(make_drilling_stage(scene));
+}
+
+Pipeline::~Pipeline() = default;
+
+Evaluation Pipeline::evaluate(const mold::Genome& genome, bool timed) const {
+  const auto t0 = std::chrono::steady_clock::now();
+  const mold::Layout layout = mold::decode(scene_, genome);
+  const double decode_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  Evaluation e = evaluate(layout, timed);
+  if (timed) e.stages.insert(e.stages.begin(), {"decode", decode_seconds});
+  return e;
+}
+
+Evaluation Pipeline::evaluate(const mold::Layout& layout, bool timed) const {
+  Evaluation e;
+  e.objectives.assign(scene_.spec().objectives.use.size(), 0.0);
+  for (const auto& stage : stages_) {
+    if (!timed) {
+      stage->run(layout, e);
+      continue;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    stage->run(layout, e);
+    e.stages.push_back({stage->name(), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()});
+  }
+  for (const Violation& v : e.violations) e.violation += std::pow(v.amount, scene_.spec().penalty.power);
+  return e;
+}
+
+std::vector<std::string> Pipeline::stage_names() const {
+  std::vector<std::string> names;
+  for (const auto& s : stages_) names.push_back(s->name());
+  return names;
+}
+
+std::vector<std::string> Pipeline::objective_names() const {
+  std::vector<std::string> names;
+  for (const auto o : scene_.spec().objectives.use) names.push_back(mold::to_string(o));
+  return names;
+}
+
+}  // namespace mtcs::eval

@@ -1,0 +1,24 @@
+#pragma once
+// The stages of the pipeline, one file each; pipeline.cpp decides which a scene needs.
+
+#include <memory>
+
+#include "mtcs/eval/pipeline.h"
+#include "surface_samples.h"
+
+namespace mtcs::eval {
+
+std::unique_ptr<Stage> make_thermal_stage(const mold::Scene& scene, SurfaceSamples samples);
+std::unique_ptr<Stage> make_cost_stage(const mold::Scene& scene);
+std::unique_ptr<Stage> make_bore_bore_stage(const mold::Scene& scene);
+std::unique_ptr<Stage> make_keep_out_cylinder_stage(const mold::Scene& scene);
+std::unique_ptr<Stage> make_keep_out_mesh_stage(const mold::Scene& scene);
+std::unique_ptr<Stage> make_cavity_stage(const mold::Scene& scene);
+std::unique_ptr<Stage> make_surface_stage(const mold::Scene& scene);
+std::unique_ptr<Stage> make_drilling_stage(const mold::Scene& scene);
+
+// A clearance shortfall as a violation; nothing when the distance meets the margin.
+void add_clearance(Evaluation& out, std::string kind, std::vector<std::string> elements, double distance,
+                   double margin, const geometry::Vec3& where);
+
+}  // namespace mtcs::eval

@@ -1,0 +1,24 @@
+#pragma once
+// Area-weighted samples of the cavity surface, about one per sample_spacing^2 of area, for the
+// thermal proxies. Structure of arrays, so that the distance loops vectorise.
+
+#include <vector>
+
+#include "mtcs/geometry/triangle_distance.h"
+#include "mtcs/mesh/triangle_mesh.h"
+
+namespace mtcs::eval {
+
+struct SurfaceSamples {
+  std::vector<double> x, y, z, weight;
+  std::size_t size() const { return x.size(); }
+  double total_weight() const;
+};
+
+// A box: a grid on each face, cells at most `spacing` wide, one sample at each cell's centre.
+SurfaceSamples sample_box(const geometry::Box& box, double spacing);
+// A mesh: triangles subdivided finer than `spacing`, the pieces gathered into cubes of side
+// `spacing`, one sample per cube at the piece nearest the cube's area-weighted centre.
+SurfaceSamples sample_mesh(const mesh::TriangleMesh& mesh, double spacing);
+
+}  // namespace mtcs::eval

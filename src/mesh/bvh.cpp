@@ -1,0 +1,171 @@
+#include "mtcs/mesh/bvh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace mtcs::mesh {
+namespace {
+
+Box empty_box() {
+  return {Vec3::Constant(std::numeric_limits<double>::infinity()),
+          Vec3::Constant(-std::numeric_limits<double>::infinity())};
+}
+
+double box_box_distance(const Box& a, const Box& b) {
+  const Vec3 gap = (a.min - b.max).cwiseMax(b.min - a.max).cwiseMax(0.0);
+  return gap.norm();
+}
+
+// Ray-triangle crossing (Moeller-Trumbore): the ray parameter, or a negative value for none.
+double ray_hit(const Vec3& o, const Vec3& d, const std::array<Vec3, 3>& t) {
+  const Vec3 e1 = t[1] - t[0], e2 = t[2] - t[0];
+  const Vec3 p = d.cross(e2);
+  const double det = e1.dot(p);
+  if (det == 0) return -1;
+  const double inv = 1 / det;
+  const Vec3 s = o - t[0];
+  const double u = s.dot(p) * inv;
+  if (u < 0 || u > 1) return -1;
+  const Vec3 q = s.cross(e1);
+  const double v = d.dot(q) * inv;
+  if (v < 0 || u + v > 1) return -1;
+  return e2.dot(q) * inv;
+}
+
+bool ray_hits(const Vec3& o, const Vec3& d, const std::array<Vec3, 3>& t) { return ray_hit(o, d, t) > 0; }
+
+bool ray_hits_box(const Vec3& o, const Vec3& inv_d, const Box& b) {
+  double t0 = 0, t1 = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    double a = (b.min[k] - o[k]) * inv_d[k], c = (b.max[k] - o[k]) * inv_d[k];
+    if (a > c) std::swap(a, c);
+    t0 = std::max(t0, a), t1 = std::min(t1, c);
+  }
+  return t0 <= t1;
+}
+
+}  // namespace
+
+TriangleBvh::TriangleBvh(const TriangleMesh& mesh) {
+  tris_.reserve(mesh.triangles.size());
+  std::vector<Vec3> centroids;
+  centroids.reserve(mesh.triangles.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    tris_.push_back({mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2)});
+    centroids.push_back((tris_.back()[0] + tris_.back()[1] + tris_.back()[2]) / 3);
+  }
+  nodes_.reserve(tris_.size() / 2 + 2);
+  nodes_.resize(1);
+  build(0, 0, int(tris_.size()), centroids);
+}
+
+void TriangleBvh::build(int node, int first, int count, std::vector<Vec3>& centroids) {
+  Box box = empty_box(), cbox = empty_box();
+  for (int i = first; i < first + count; ++i) {
+    for (const Vec3& v : tris_[i]) box.min = box.min.cwiseMin(v), box.max = box.max.cwiseMax(v);
+    cbox.min = cbox.min.cwiseMin(centroids[i]), cbox.max = cbox.max.cwiseMax(centroids[i]);
+  }
+  if (count <= 4) {
+    nodes_[node] = {box, first, count};
+    return;
+  }
+  int axis = 0;
+  (cbox.max - cbox.min).maxCoeff(&axis);
+  const int half = count / 2;
+  // Median split: reorder triangles and centroids together.
+  std::vector<int> order(count);
+  std::iota(order.begin(), order.end(), first);
+  std::nth_element(order.begin(), order.begin() + half, order.end(),
+                   [&](int a, int b) { return centroids[a][axis] < centroids[b][axis]; });
+  std::vector<std::array<Vec3, 3>> tris(count);
+  std::vector<Vec3> cents(count);
+  for (int i = 0; i < count; ++i) tris[i] = tris_[order[i]], cents[i] = centroids[order[i]];
+  std::copy(tris.begin(), tris.end(), tris_.begin() + first);
+  std::copy(cents.begin(), cents.end(), centroids.begin() + first);
+
+  const int left = int(nodes_.size());
+  nodes_.resize(nodes_.size() + 2);
+  nodes_[node] = {box, left, 0};
+  build(left, first, half, centroids);
+  build(left + 1, first + half, count - half, centroids);
+}
+
+double TriangleBvh::segment_distance(const Vec3& p0, const Vec3& p1, double cap) const {
+  if (tris_.empty()) return cap;
+  const Box seg{p0.cwiseMin(p1), p0.cwiseMax(p1)};
+  double best = cap;
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (box_box_distance(seg, node.box) >= best) continue;
+    if (node.count > 0) {
+      for (int i = node.first; i < node.first + node.count; ++i)
+        best = std::min(best, geometry::segment_triangle_distance(p0, p1, tris_[i][0], tris_[i][1], tris_[i][2]));
+      continue;
+    }
+    // Nearer child last, so that it is visited first.
+    const double dl = box_box_distance(seg, nodes_[node.first].box);
+    const double dr = box_box_distance(seg, nodes_[node.first + 1].box);
+    if (dl < dr) stack[top++] = node.first + 1, stack[top++] = node.first;
+    else stack[top++] = node.first, stack[top++] = node.first + 1;
+  }
+  return best;
+}
+
+bool TriangleBvh::contains(const Vec3& p) const {
+  if (tris_.empty() || !bounds().contains(p)) return false;
+  // A direction unlikely to graze edges of CAD meshes (not along any axis or diagonal).
+  const Vec3 d = Vec3(0.5390, 0.6187, 0.5716).normalized();
+  const Vec3 inv = d.cwiseInverse();
+  int crossings = 0;
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (!ray_hits_box(p, inv, node.box)) continue;
+    if (node.count > 0) {
+      for (int i = node.first; i < node.first + node.count; ++i) crossings += ray_hits(p, d, tris_[i]);
+      continue;
+    }
+    stack[top++] = node.first;
+    stack[top++] = node.first + 1;
+  }
+  return crossings % 2 == 1;
+}
+
+std::optional<TriangleBvh::Hit> TriangleBvh::first_hit(const Vec3& p, const Vec3& d) const {
+  if (tris_.empty()) return std::nullopt;
+  const Vec3 inv = d.cwiseInverse();
+  std::optional<Hit> best;
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (!ray_hits_box(p, inv, node.box)) continue;
+    if (node.count > 0) {
+      for (int i = node.first; i < node.first + node.count; ++i) {
+        const double t = ray_hit(p, d, tris_[i]);
+        if (t > 0 && (!best || t < best->t))
+          best = Hit{t, (tris_[i][1] - tris_[i][0]).cross(tris_[i][2] - tris_[i][0]).normalized()};
+      }
+      continue;
+    }
+    stack[top++] = node.first;
+    stack[top++] = node.first + 1;
+  }
+  return best;
+}
+
+double cylinder_clearance(const TriangleBvh& bvh, const Vec3& p0, const Vec3& p1, double radius, double cap) {
+  const double axis = bvh.segment_distance(p0, p1, cap + radius);
+  if (axis <= radius) return 0;
+  if (bvh.contains(p0)) return 0;  // the axis does not reach the surface: all inside or all out
+  return std::min(cap, axis - radius);
+}
+
+}  // namespace mtcs::mesh

@@ -1,0 +1,62 @@
+// The CGAL translation unit: polygon-soup I/O for STL, OFF, OBJ and PLY.
+
+#include "mtcs/mesh/mesh_io.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/polygon_soup_io.h>
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+
+namespace mtcs::mesh {
+
+TriangleMesh read_mesh(const std::string& path) {
+  if (!std::filesystem::exists(path)) throw MeshError("mesh file not found: " + path);
+  std::vector<CGAL::Epick::Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  bool ok = false;
+  try {
+    ok = CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false));
+  } catch (const std::exception& e) {
+    throw MeshError("cannot read mesh " + path + ": " + e.what());
+  }
+  if (!ok) throw MeshError("cannot read mesh " + path + " (STL, OFF, OBJ or PLY expected, by extension)");
+  TriangleMesh m;
+  m.vertices.reserve(points.size());
+  for (const auto& p : points) m.vertices.emplace_back(p.x(), p.y(), p.z());
+  for (std::size_t f = 0; f < polygons.size(); ++f) {
+    const auto& poly = polygons[f];
+    if (poly.size() < 3) throw MeshError(path + ": face " + std::to_string(f) + " has fewer than 3 corners");
+    for (std::size_t k = 0; k < poly.size(); ++k)
+      if (poly[k] >= points.size()) throw MeshError(path + ": face " + std::to_string(f) + " refers to a missing vertex");
+    for (std::size_t k = 1; k + 1 < poly.size(); ++k)
+      m.triangles.push_back({int(poly[0]), int(poly[k]), int(poly[k + 1])});
+  }
+  return m;
+}
+
+void write_stl(const std::string& path, const TriangleMesh& mesh) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw MeshError("cannot write " + path);
+  char header[80] = "binary STL written by mtcs";
+  out.write(header, 80);
+  const auto n = std::uint32_t(mesh.triangles.size());
+  out.write(reinterpret_cast<const char*>(&n), 4);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Vec3 a = mesh.corner(t, 0), b = mesh.corner(t, 1), c = mesh.corner(t, 2);
+    Vec3 normal = (b - a).cross(c - a);
+    if (normal.norm() > 0) normal.normalize();
+    float buf[12];
+    for (int k = 0; k < 3; ++k) {
+      buf[k] = float(normal[k]), buf[3 + k] = float(a[k]), buf[6 + k] = float(b[k]), buf[9 + k] = float(c[k]);
+    }
+    out.write(reinterpret_cast<const char*>(buf), sizeof buf);
+    const std::uint16_t attribute = 0;
+    out.write(reinterpret_cast<const char*>(&attribute), 2);
+  }
+  if (!out) throw MeshError("cannot write " + path);
+}
+
+}  // namespace mtcs::mesh

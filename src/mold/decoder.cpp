@@ -1,0 +1,145 @@
+#include "mtcs/mold/decoder.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mtcs::mold {
+
+using geometry::Vec3;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+bool contains(const std::vector<Face>& faces, Face f) {
+  return std::find(faces.begin(), faces.end(), f) != faces.end();
+}
+
+// Distance from p to the nearest of the given faces of the block's bounding box.
+double off_faces(const Box& b, const Vec3& p, const std::vector<Face>& faces) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Face f : faces) {
+    const Vec3 n = normal_of(f);
+    int k = 0;
+    n.cwiseAbs().maxCoeff(&k);
+    const double plane = n[k] > 0 ? b.max[k] : b.min[k];
+    best = std::min(best, std::abs(p[k] - plane));
+  }
+  return best;
+}
+
+struct Candidate {
+  Vec3 entry, far_end;
+  Face face;
+  double angle_deg;
+  bool allowed, ok, plugged;
+  double length;
+};
+
+}  // namespace
+
+bool Layout::is_junction(int a, int b) const {
+  for (const Junction& j : junctions)
+    if ((j.a == a && j.b == b) || (j.a == b && j.b == a)) return true;
+  return false;
+}
+
+std::vector<Vec3> routed_waypoints(const Scene& scene, const Circuit& circuit) {
+  const double tiny = 1e-9 * std::max(1.0, scene.block_bounds().size().maxCoeff());
+  std::vector<Vec3> pts;
+  for (const Vec3& p : circuit.waypoints) {
+    if (pts.empty()) {
+      pts.push_back(p);
+      continue;
+    }
+    Vec3 at = pts.back();
+    if (scene.spec().drilling.axis_parallel) {
+      // Legs along the axes, longest first.
+      std::array<int, 3> order{0, 1, 2};
+      const Vec3 delta = p - at;
+      std::sort(order.begin(), order.end(), [&](int i, int j) { return std::abs(delta[i]) > std::abs(delta[j]); });
+      for (const int k : order) {
+        if (std::abs(p[k] - at[k]) <= tiny) continue;
+        at[k] = p[k];
+        pts.push_back(at);
+      }
+    } else if ((p - at).norm() > tiny) {
+      pts.push_back(p);
+    }
+  }
+  // A waypoint where the path goes straight on is drilled through: one hole, not two.
+  std::vector<Vec3> merged;
+  for (const Vec3& p : pts) {
+    if (merged.size() >= 2) {
+      const Vec3 a = merged[merged.size() - 2], b = merged.back();
+      const Vec3 u = (b - a).normalized(), v = (p - b).normalized();
+      if (u.dot(v) > 1 - 1e-12) merged.back() = p;
+      else merged.push_back(p);
+    } else {
+      merged.push_back(p);
+    }
+  }
+  return merged;
+}
+
+Layout decode(const Scene& scene, const Genome& genome) {
+  const MoldSpec& spec = scene.spec();
+  const Drilling& drill = spec.drilling;
+  const double port_tol = 1e-6 * std::max(1.0, scene.block_bounds().size().maxCoeff());
+  Layout layout;
+  for (std::size_t c = 0; c < genome.circuits.size(); ++c) {
+    const Circuit& circuit = genome.circuits[c];
+    const std::vector<Vec3> pts = routed_waypoints(scene, circuit);
+    if (pts.size() < 2) continue;
+    const double inlet_off = off_faces(scene.block_bounds(), pts.front(), spec.circuits.inlet_faces);
+    const double outlet_off = off_faces(scene.block_bounds(), pts.back(), spec.circuits.outlet_faces);
+    if (inlet_off > port_tol) layout.ports.push_back({int(c), true, inlet_off});
+    if (outlet_off > port_tol) layout.ports.push_back({int(c), false, outlet_off});
+
+    const double D = circuit.diameter;
+    const double tip = 0.5 * D / std::tan(drill.tip_angle_deg * kPi / 360);
+    const double overshoot = tip + drill.min_overlap;
+    const int n = int(pts.size()) - 1;  // flow segments
+    const int first = int(layout.bores.size());
+    for (int j = 1; j <= n; ++j) {
+      const Vec3 A = pts[std::size_t(j - 1)], B = pts[std::size_t(j)];
+      const Vec3 u = (B - A).normalized();
+      auto make = [&](const Vec3& from, const Vec3& dir, const Vec3& far_end, bool at_port) {
+        const BlockExit e = scene.exit_block(from, dir);
+        Candidate k;
+        k.entry = e.hit ? e.point : from;
+        k.far_end = far_end;
+        k.face = face_of_normal(e.normal);
+        k.angle_deg = std::acos(std::clamp(std::abs(dir.dot(e.normal.normalized())), 0.0, 1.0)) * 180 / kPi;
+        k.allowed = contains(drill.allowed_faces, k.face);
+        k.ok = k.allowed && k.angle_deg <= drill.max_angle_deg + 1e-9;
+        k.plugged = !at_port;
+        k.length = (k.far_end - k.entry).norm();
+        return k;
+      };
+      // From A's side (ending past B), or from B's side (ending past A).
+      const Candidate from_a = make(A, -u, j == n ? B : B + overshoot * u, j == 1);
+      const Candidate from_b = make(B, u, j == 1 ? A : A - overshoot * u, j == n);
+      const bool take_a = from_a.ok != from_b.ok ? from_a.ok : from_a.length <= from_b.length;
+      const Candidate& k = take_a ? from_a : from_b;
+      Bore b;
+      b.hole = {k.entry, k.far_end, D / 2};
+      b.flow_start = A;
+      b.flow_end = B;
+      b.entry_face = k.face;
+      b.entry_angle_deg = k.angle_deg;
+      b.entry_allowed = k.allowed;
+      b.plugged = k.plugged;
+      b.drilled_length = k.length;
+      b.diameter = D;
+      b.circuit = int(c);
+      b.segment = j - 1;
+      layout.plugs += b.plugged ? 1 : 0;
+      layout.bores.push_back(b);
+      if (j > 1) layout.junctions.push_back({first + j - 2, first + j - 1});
+    }
+  }
+  return layout;
+}
+
+}  // namespace mtcs::mold

@@ -1,0 +1,61 @@
+#include "mtcs/mold/scene.h"
+
+#include <cmath>
+
+namespace mtcs::mold {
+
+using geometry::Vec3;
+
+Scene::Scene(MoldSpec spec) : spec_(std::move(spec)) {
+  if (spec_.block.box) {
+    block_bounds_ = *spec_.block.box;
+  } else {
+    block_bounds_ = spec_.block.mesh->mesh.bounds();
+    block_bvh_ = std::make_unique<mesh::TriangleBvh>(spec_.block.mesh->mesh);
+  }
+  if (spec_.cavity && spec_.cavity->mesh) cavity_bvh_ = std::make_unique<mesh::TriangleBvh>(spec_.cavity->mesh->mesh);
+  for (const KeepOut& k : spec_.keep_outs)
+    keep_out_bvh_.push_back(k.mesh ? std::make_unique<mesh::TriangleBvh>(k.mesh->mesh) : nullptr);
+}
+
+BlockExit Scene::exit_block(const Vec3& from, const Vec3& d) const {
+  if (block_bvh_) {
+    const auto hit = block_bvh_->first_hit(from, d);
+    if (!hit) return {from, -d, false};
+    return {from + hit->t * d, hit->normal, true};
+  }
+  const Box& b = block_bounds_;
+  double t = std::numeric_limits<double>::infinity();
+  int axis = -1;
+  for (int k = 0; k < 3; ++k) {
+    if (d[k] == 0) continue;
+    const double tk = ((d[k] > 0 ? b.max[k] : b.min[k]) - from[k]) / d[k];
+    if (tk < t) t = tk, axis = k;
+  }
+  if (axis < 0 || !(t >= 0)) return {from, -d, false};
+  Vec3 n = Vec3::Zero();
+  n[axis] = d[axis] > 0 ? 1 : -1;
+  return {from + t * d, n, true};
+}
+
+double Scene::surface_clearance(const geometry::Cylinder& c, double skip, double cap) const {
+  const Vec3 axis = c.p1 - c.p0;
+  const double len = axis.norm();
+  if (len == 0) return cap;
+  const Vec3 u = axis / len;
+  const Vec3 s0 = c.p0 + std::min(skip, len) * u;
+  if (block_bvh_) {
+    if (!block_bvh_->contains(s0) || !block_bvh_->contains(c.p1)) return -c.radius;
+    return std::min(cap, block_bvh_->segment_distance(s0, c.p1, cap + c.radius) - c.radius);
+  }
+  // Box: each face plane, with the cylinder's reach towards it, r sqrt(1 - (u.n)^2).
+  double d = cap;
+  for (int k = 0; k < 3; ++k) {
+    const double reach = c.radius * std::sqrt(std::max(0.0, 1 - u[k] * u[k]));
+    d = std::min(d, std::min(s0[k], c.p1[k]) - block_bounds_.min[k] - reach);
+    d = std::min(d, block_bounds_.max[k] - std::max(s0[k], c.p1[k]) - reach);
+  }
+  return d;
+}
+
+}  // namespace mtcs::mold

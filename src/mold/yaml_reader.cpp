@@ -1,0 +1,93 @@
+#include "yaml_reader.h"
+
+#include <charconv>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+namespace mtcs::mold {
+
+std::string indexed(const std::string& path, std::size_t i) {
+  std::string s = path;
+  s += '[';
+  s += std::to_string(i);
+  s += ']';
+  return s;
+}
+
+void YamlReader::fail(const YAML::Node& at, const std::string& path, const std::string& what) const {
+  const YAML::Mark m = at.Mark();
+  throw io::InputError(file_, m.line + 1, m.column + 1, path, what);
+}
+
+void YamlReader::expect_map(const YAML::Node& n, const std::string& path,
+                            std::initializer_list<std::string_view> allowed) const {
+  if (!n.IsMap()) fail(n, path, "expected a mapping (key: value)");
+  std::set<std::string> seen;
+  for (auto it = n.begin(); it != n.end(); ++it) {
+    const std::string key = it->first.Scalar();
+    const std::string child = path.empty() ? key : path + "." + key;
+    bool known = false;
+    for (const auto& a : allowed) known = known || a == key;
+    if (!known) {
+      std::ostringstream list;
+      for (const auto& a : allowed) list << (list.tellp() > 0 ? ", " : "") << a;
+      fail(it->first, child, "unknown key; expected one of: " + list.str());
+    }
+    if (!seen.insert(key).second) fail(it->first, child, "duplicate key");
+  }
+}
+
+void YamlReader::expect_sequence(const YAML::Node& n, const std::string& path) const {
+  if (!n.IsSequence()) fail(n, path, "expected a list");
+}
+
+double YamlReader::number(const YAML::Node& n, const std::string& path, double lo, double hi) const {
+  if (!n.IsScalar()) fail(n, path, "expected a number");
+  const std::string& s = n.Scalar();
+  double v = 0;
+  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (s.empty() || ec != std::errc() || ptr != s.data() + s.size() || !std::isfinite(v))
+    fail(n, path, "expected a number, got '" + s + "'");
+  if (v < lo || v > hi) {
+    std::ostringstream msg;
+    msg << "value " << v << " is out of range [" << lo << ", " << hi << "]";
+    fail(n, path, msg.str());
+  }
+  return v;
+}
+
+int YamlReader::integer(const YAML::Node& n, const std::string& path, int lo, int hi) const {
+  if (!n.IsScalar()) fail(n, path, "expected a whole number");
+  const std::string& s = n.Scalar();
+  int v = 0;
+  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (s.empty() || ec != std::errc() || ptr != s.data() + s.size())
+    fail(n, path, "expected a whole number, got '" + s + "'");
+  if (v < lo || v > hi)
+    fail(n, path, "value " + std::to_string(v) + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return v;
+}
+
+bool YamlReader::boolean(const YAML::Node& n, const std::string& path) const {
+  if (n.IsScalar()) {
+    const std::string& s = n.Scalar();
+    if (s == "true") return true;
+    if (s == "false") return false;
+  }
+  fail(n, path, "expected true or false");
+}
+
+std::string YamlReader::text(const YAML::Node& n, const std::string& path) const {
+  if (!n.IsScalar()) fail(n, path, "expected a string");
+  return n.Scalar();
+}
+
+geometry::Vec3 YamlReader::vec3(const YAML::Node& n, const std::string& path) const {
+  if (!n.IsSequence() || n.size() != 3) fail(n, path, "expected three numbers [x, y, z]");
+  const double inf = std::numeric_limits<double>::max();
+  return {number(n[0], path + "[0]", -inf, inf), number(n[1], path + "[1]", -inf, inf),
+          number(n[2], path + "[2]", -inf, inf)};
+}
+
+}  // namespace mtcs::mold

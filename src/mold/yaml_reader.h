@@ -1,0 +1,43 @@
+#pragma once
+// Typed access to a yaml-cpp tree that reports every problem as io::InputError at the node's
+// line and column, with the field's path. yaml-cpp accepts duplicate keys silently; this
+// reader does not.
+
+#include <yaml-cpp/yaml.h>
+
+#include <initializer_list>
+#include <string>
+#include <string_view>
+
+#include "mtcs/geometry/primitives.h"
+#include "mtcs/io/input_error.h"
+
+namespace mtcs::mold {
+
+// "path[i]".
+std::string indexed(const std::string& path, std::size_t i);
+
+class YamlReader {
+ public:
+  explicit YamlReader(std::string file) : file_(std::move(file)) {}
+
+  const std::string& file() const { return file_; }
+
+  [[noreturn]] void fail(const YAML::Node& at, const std::string& path, const std::string& what) const;
+
+  // A map whose keys are all in `allowed`, each at most once.
+  void expect_map(const YAML::Node& n, const std::string& path,
+                  std::initializer_list<std::string_view> allowed) const;
+  void expect_sequence(const YAML::Node& n, const std::string& path) const;
+
+  double number(const YAML::Node& n, const std::string& path, double lo, double hi) const;
+  int integer(const YAML::Node& n, const std::string& path, int lo, int hi) const;
+  bool boolean(const YAML::Node& n, const std::string& path) const;
+  std::string text(const YAML::Node& n, const std::string& path) const;
+  geometry::Vec3 vec3(const YAML::Node& n, const std::string& path) const;
+
+ private:
+  std::string file_;
+};
+
+}  // namespace mtcs::mold
