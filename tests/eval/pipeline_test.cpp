@@ -1,0 +1,190 @@
+// The evaluation pipeline against numbers computed independently: closed-form gaps and wall
+// distances, junctions, stages that a scene does not need, and a Monte Carlo check of the
+// thermal proxy.
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+#include "mtcs/eval/pipeline.h"
+#include "mtcs/mold/decoder.h"
+#include "mtcs/mold/layout_io.h"
+
+using namespace mtcs;
+using geometry::Vec3;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path write(const std::string& name, const std::string& text) {
+  const fs::path dir = fs::temp_directory_path() / "mtcs_pipeline_test";
+  fs::create_directories(dir);
+  const fs::path p = dir / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+// A 300 x 200 x 120 block with a plate cavity whose underside is at z = 105.
+std::string plate_spec(const std::string& extra = "") {
+  return "block: {box: {min: [0, 0, 0], max: [300, 200, 120]}}\n"
+         "cavity: {box: {min: [50, 25, 105], max: [250, 175, 108]}, sample_spacing: 5}\n"
+         "drilling: {diameters: [8], allowed_faces: [+y, -y]}\n"
+         "circuits: {inlet_faces: [-y], outlet_faces: [+y]}\n" + extra;
+}
+
+// One straight through-bore along y at (x, z).
+mold::Circuit straight(double x, double z, double diameter = 8) { return {{{x, 0, z}, {x, 200, z}}, diameter}; }
+
+const eval::Violation* find(const eval::Evaluation& e, const std::string& kind) {
+  for (const auto& v : e.violations)
+    if (v.kind == kind) return &v;
+  return nullptr;
+}
+
+}  // namespace
+
+TEST_CASE("pipeline: two parallel bores at a known gap violate the margin by the shortfall", "[eval]") {
+  const mold::Scene scene(mold::load_mold_spec(write("gap.yaml", plate_spec("clearances: {bore_bore: 4}\n")).string()));
+  const eval::Pipeline pipeline(scene);
+  for (const double gap : {0.5, 2.0, 3.75}) {
+    const auto e = pipeline.evaluate(mold::Genome{{straight(100, 80), straight(108 + gap, 80)}});
+    const auto* v = find(e, "bore_bore");
+    REQUIRE(v);
+    CHECK(v->distance == Approx(gap).margin(1e-12));
+    CHECK(v->margin == 4);
+    CHECK(v->amount == Approx((4 - gap) / 4).margin(1e-12));
+    CHECK(v->elements == std::vector<std::string>{"c0.b0", "c1.b0"});
+  }
+  // At the margin or beyond: no violation.
+  CHECK_FALSE(find(pipeline.evaluate(mold::Genome{{straight(100, 80), straight(112, 80)}}), "bore_bore"));
+}
+
+TEST_CASE("pipeline: a bore at a known depth under the plate has a known wall distance", "[eval]") {
+  const mold::Scene scene(
+      mold::load_mold_spec(write("wall.yaml", plate_spec("clearances: {bore_cavity: 20}\n")).string()));
+  const eval::Pipeline pipeline(scene);
+  // Axis 17 mm under the underside, radius 4: 13 mm of steel.
+  const auto e = pipeline.evaluate(mold::Genome{{straight(150, 88)}});
+  const auto* v = find(e, "bore_cavity");
+  REQUIRE(v);
+  CHECK(v->distance == Approx(13).margin(1e-12));
+  CHECK(v->margin == 20);
+}
+
+TEST_CASE("pipeline: designed junctions are not collisions, other crossings are", "[eval]") {
+  const mold::Scene scene(mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml"));
+  const eval::Pipeline pipeline(scene);
+  const auto genome = mold::load_layout(MTCS_SOURCE_DIR "/molds/plate.layout.yaml", scene.spec());
+  const auto layout = mold::decode(scene, genome);
+  CHECK(layout.junctions.size() == 6);
+  CHECK(pipeline.evaluate(genome).feasible());
+  // A new circuit whose second hole, along x at y = 100, cuts the right loop's legs.
+  mold::Genome crossing = genome;
+  crossing.circuits.push_back({{{150, 0, 88}, {150, 100, 88}, {300, 100, 88}}, 8});
+  const auto e = pipeline.evaluate(crossing);
+  int with_new = 0;
+  for (const auto& v : e.violations)
+    if (v.kind == "bore_bore" && (v.elements[0].rfind("c3.", 0) == 0 || v.elements[1].rfind("c3.", 0) == 0)) ++with_new;
+  CHECK(with_new >= 2);
+}
+
+TEST_CASE("pipeline: a stage the scene does not need is not built and leaves no trace", "[eval]") {
+  const mold::Scene plain(mold::load_mold_spec(
+      write("plain.yaml", plate_spec("objectives: {use: [cost]}\n")).string()));
+  const eval::Pipeline pipeline(plain);
+  const auto names = pipeline.stage_names();
+  CHECK(std::find(names.begin(), names.end(), "thermal") == names.end());
+  CHECK(std::find(names.begin(), names.end(), "bore_cavity_mesh") == names.end());
+  CHECK(std::find(names.begin(), names.end(), "bore_keepout_cylinders") == names.end());
+  CHECK(std::find(names.begin(), names.end(), "bore_keepout_meshes") == names.end());
+  CHECK(pipeline.surface_samples() == 0);
+  const auto e = pipeline.evaluate(mold::Genome{{straight(150, 88)}}, true);
+  for (const auto& s : e.stages) {
+    CHECK(s.name != "thermal");
+    CHECK(s.name.find("mesh") == std::string::npos);
+  }
+  CHECK(e.objectives.size() == 1);
+}
+
+TEST_CASE("pipeline: the thermal proxy agrees with a Monte Carlo estimate", "[eval]") {
+  const mold::Scene scene(mold::load_mold_spec(write("thermal.yaml", plate_spec()).string()));
+  const eval::Pipeline pipeline(scene);
+  const mold::Genome genome{{straight(100, 88), straight(200, 88)}};
+  const auto e = pipeline.evaluate(genome);
+  // Uniformity = sqrt(mean over the plate's surface of (e - 2D)^2), e = distance to the nearer
+  // axis minus r; estimated with random points, area-weighted by picking faces by area.
+  const geometry::Box plate{{50, 25, 105}, {250, 175, 108}};
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> u(0, 1);
+  const Vec3 size = plate.size();
+  const double areas[3] = {size.y() * size.z(), size.x() * size.z(), size.x() * size.y()};
+  double sum = 0, worst = 0;
+  const int n = 400000;
+  for (int i = 0; i < n; ++i) {
+    const double pick = u(rng) * (areas[0] + areas[1] + areas[2]);
+    const int k = pick < areas[0] ? 0 : (pick < areas[0] + areas[1] ? 1 : 2);
+    Vec3 p = plate.min + Vec3(u(rng), u(rng), u(rng)).cwiseProduct(size);
+    p[k] = u(rng) < 0.5 ? plate.min[k] : plate.max[k];
+    double best = 1e9;
+    for (const double x : {100.0, 200.0}) best = std::min(best, Vec3(p.x() - x, 0, p.z() - 88).norm() - 4);
+    sum += (best - 16) * (best - 16);
+    worst = std::max(worst, best);
+  }
+  CHECK(e.objectives[0] == Approx(std::sqrt(sum / n)).epsilon(0.02));
+  CHECK(e.objectives[1] == Approx(worst).epsilon(0.02));
+}
+
+TEST_CASE("pipeline: decoder routes axis-parallel holes, plugs side entries", "[eval][mold]") {
+  const mold::Scene scene(mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml"));
+  // A diagonal step is routed along the axes, longest leg first.
+  const mold::Circuit c{{{70, 0, 88}, {110, 150, 88}, {110, 0, 88}}, 8};
+  const auto pts = mold::routed_waypoints(scene, c);
+  REQUIRE(pts.size() == 4);
+  CHECK(pts[1] == Vec3(70, 150, 88));
+  const auto layout = mold::decode(scene, mold::Genome{{c}});
+  REQUIRE(layout.bores.size() == 3);
+  CHECK(layout.plugs == 1);  // the cross hole, entered from -x
+  CHECK(layout.bores[1].plugged);
+  CHECK(layout.bores[1].entry_face == mold::Face::NegX);
+  CHECK(layout.bores[1].hole.p0.x() == 0);
+  // Through the drill point past the far junction: 0.5 D cot(59 deg).
+  CHECK(layout.bores[1].hole.p1.x() == Approx(110 + 4 / std::tan(59 * M_PI / 180)));
+  for (const auto& b : layout.bores) {
+    const Vec3 d = (b.hole.p1 - b.hole.p0).cwiseAbs();
+    CHECK((d.array() > 0).count() == 1);  // axis-parallel
+  }
+}
+
+TEST_CASE("layout files round-trip", "[mold]") {
+  const auto spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml");
+  const auto g = mold::load_layout(MTCS_SOURCE_DIR "/molds/plate.layout.yaml", spec);
+  const auto p = write("round.layout.yaml", "");
+  mold::save_layout(p.string(), g);
+  const auto h = mold::load_layout(p.string(), spec);
+  REQUIRE(h.circuits.size() == g.circuits.size());
+  for (std::size_t c = 0; c < g.circuits.size(); ++c) {
+    CHECK(h.circuits[c].diameter == g.circuits[c].diameter);
+    CHECK(h.circuits[c].waypoints == g.circuits[c].waypoints);
+  }
+}
+
+TEST_CASE("penalty variants order layouts as documented", "[eval]") {
+  auto spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml");
+  eval::Evaluation feasible, infeasible;
+  feasible.objectives = {10, 10, 10};
+  infeasible.objectives = {1, 1, 1};
+  infeasible.violations.push_back({"bore_bore", {"a", "b"}, 2, 4, 0.5, {}});
+  infeasible.violation = 0.25;
+  using mold::PenaltyVariant;
+  spec.penalty.variant = PenaltyVariant::ConstrainedDomination;
+  CHECK(eval::better(eval::fitness(feasible, spec, {}), eval::fitness(infeasible, spec, {}), spec.penalty.variant));
+  spec.penalty.variant = PenaltyVariant::StaticLinear;
+  spec.penalty.weight = 1;
+  const auto lin = eval::fitness(infeasible, spec, {});
+  CHECK(lin.value == Approx(1.0 / 5 + 1.0 / 20 + 1.0 / 1000 + 0.25));
+  spec.penalty.variant = PenaltyVariant::StaticQuadratic;
+  CHECK(eval::fitness(infeasible, spec, {}).value == Approx(1.0 / 5 + 1.0 / 20 + 1.0 / 1000 + 0.0625));
+  spec.penalty.variant = PenaltyVariant::Death;
+  CHECK(std::isinf(eval::fitness(infeasible, spec, {}).value));
+}

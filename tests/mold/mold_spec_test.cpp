@@ -1,0 +1,126 @@
+// The mold spec reader: every bad input gets one InputError naming the file, the line and column
+// and the field's path.
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+
+#include "mtcs/io/input_error.h"
+#include "mtcs/mold/mold_spec.h"
+
+using namespace mtcs;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path write(const std::string& name, const std::string& text) {
+  const fs::path dir = fs::temp_directory_path() / "mtcs_mold_spec_test";
+  fs::create_directories(dir);
+  const fs::path p = dir / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+const std::string kBlock = "block: {box: {min: [0, 0, 0], max: [100, 100, 50]}}\n";
+
+// Loads the spec and returns the error it raises.
+io::InputError error_of(const std::string& text, const std::string& name = "spec.yaml") {
+  const auto p = write(name, text);
+  try {
+    mold::load_mold_spec(p.string());
+  } catch (const io::InputError& e) {
+    return e;
+  }
+  FAIL("no error for:\n" << text);
+  throw;
+}
+
+}  // namespace
+
+TEST_CASE("mold spec: the bundled plate loads with its defaults", "[mold]") {
+  const auto spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml");
+  CHECK(spec.block.box->max.x() == 300);
+  CHECK(spec.cavity->box);
+  CHECK(spec.keep_outs.size() == 4);
+  CHECK(spec.clearances.bore_cavity.per_diameter);
+  CHECK(spec.clearances.bore_cavity.at(8) == 8);
+  CHECK(spec.objectives.use.size() == 3);
+}
+
+TEST_CASE("mold spec: bad input names file, line, column and field", "[mold][errors]") {
+  SECTION("unknown key") {
+    const auto e = error_of(kBlock + "drilling:\n  diameter: [8]\n");
+    CHECK(e.line() == 3);
+    CHECK(e.column() == 3);
+    CHECK(e.field() == "drilling.diameter");
+    CHECK(std::string(e.what()).find("unknown key") != std::string::npos);
+  }
+  SECTION("duplicate key") {
+    const auto e = error_of(kBlock + "clearances:\n  bore_bore: 4\n  bore_bore: 5\n");
+    CHECK(e.line() == 4);
+    CHECK(e.field() == "clearances.bore_bore");
+    CHECK(std::string(e.what()).find("duplicate") != std::string::npos);
+  }
+  SECTION("wrong type") {
+    const auto e = error_of(kBlock + "drilling: {axis_parallel: maybe}\n");
+    CHECK(e.line() == 2);
+    CHECK(e.column() == 27);
+    CHECK(e.field() == "drilling.axis_parallel");
+  }
+  SECTION("out of range") {
+    const auto e = error_of(kBlock + "drilling:\n  diameters: [8, -2]\n");
+    CHECK(e.line() == 3);
+    CHECK(e.column() == 18);
+    CHECK(e.field() == "drilling.diameters[1]");
+    CHECK(std::string(e.what()).find("out of range") != std::string::npos);
+  }
+  SECTION("a face that is not one") {
+    CHECK(error_of(kBlock + "circuits: {inlet_faces: [top]}\n").field() == "circuits.inlet_faces[0]");
+  }
+  SECTION("a bad per-diameter length") {
+    CHECK(error_of(kBlock + "clearances: {bore_cavity: 2xD}\n").field() == "clearances.bore_cavity");
+  }
+  SECTION("missing block") {
+    CHECK(error_of("units: mm\n").field() == "block");
+  }
+  SECTION("YAML syntax") {
+    const auto e = error_of(kBlock + "drilling: [1, 2\n");
+    CHECK(e.line() >= 2);
+  }
+  SECTION("missing mesh file") {
+    const auto e = error_of(kBlock + "cavity: {mesh: nowhere.stl}\n");
+    CHECK(e.field() == "cavity.mesh");
+    CHECK(e.line() == 2);
+    CHECK(std::string(e.what()).find("not found") != std::string::npos);
+  }
+  SECTION("a mesh that is not closed") {
+    write("open.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n");
+    const auto e = error_of(kBlock + "cavity: {mesh: open.off}\n");
+    CHECK(e.field() == "cavity.mesh");
+    CHECK(std::string(e.what()).find("not closed") != std::string::npos);
+  }
+  SECTION("a mesh with a degenerate triangle") {
+    write("degenerate.off", "OFF\n4 5 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n3 0 1 1\n");
+    const auto e = error_of(kBlock + "keep_outs:\n  - {name: insert, mesh: degenerate.off}\n");
+    CHECK(e.field() == "keep_outs[0].mesh");
+    CHECK(std::string(e.what()).find("degenerate") != std::string::npos);
+  }
+  SECTION("a mesh with a non-finite vertex") {
+    write("nan.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 nan\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+    const auto e = error_of(kBlock + "cavity: {mesh: nan.off}\n");
+    CHECK(e.field() == "cavity.mesh");
+  }
+  SECTION("a mesh oriented inwards") {
+    write("inward.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
+    CHECK(std::string(error_of(kBlock + "cavity: {mesh: inward.off}\n").what()).find("inwards") != std::string::npos);
+  }
+}
+
+TEST_CASE("mold spec: a closed tetrahedron loads and is translated", "[mold]") {
+  write("tet.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  const auto p = write("tet.yaml", kBlock + "cavity: {mesh: tet.off, translate: [10, 20, 30], sample_spacing: 0.5}\n");
+  const auto spec = mold::load_mold_spec(p.string());
+  REQUIRE(spec.cavity->mesh);
+  CHECK(spec.cavity->mesh->mesh.bounds().min == geometry::Vec3(10, 20, 30));
+  CHECK(spec.cavity->mesh->mesh.signed_volume() == Approx(1.0 / 6));
+}
