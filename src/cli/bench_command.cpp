@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 
+#include "bench_evaluate.h"
 #include "fcl_peer.h"
 #include "mtcs/cli/commands.h"
 #include "mtcs/io/pairs_csv.h"
@@ -170,6 +171,26 @@ Command add_bench_command(CLI::App& app) {
       "stiff",
       "Worst errors of the full kernel by pair sub-type (id without its number). CSV:\n"
       "  subtype,n,median_ns,max_abs_err,max_rel_err,worst_id");
+  CLI::App* evaluate = bench->add_subcommand(
+      "evaluate",
+      "Evaluations per second of random layouts (circuits x bores axis-parallel legs), on one\n"
+      "thread and on --threads threads. CSV on stdout:\n"
+      "  mold,threads,bores,samples,evaluations_per_second\n"
+      "and the mean time per evaluation of each stage on stderr.\n"
+      "Example: mtcs bench evaluate molds/plate.yaml --threads 2");
+  struct EvalOptions {
+    std::string mold;
+    int threads = 2, evaluations = 20000, circuits = 3, bores = 8;
+    std::uint64_t seed = 1;
+  };
+  auto eo = std::make_shared<EvalOptions>();
+  evaluate->add_option("mold", eo->mold, "mold spec")->required();
+  evaluate->add_option("--threads", eo->threads, "threads for the parallel row")->capture_default_str()->check(CLI::Range(1, 256));
+  evaluate->add_option("--evaluations", eo->evaluations, "layouts per row")->capture_default_str()->check(CLI::Range(100, 100000000));
+  evaluate->add_option("--circuits", eo->circuits, "circuits per layout")->capture_default_str()->check(CLI::Range(1, 100));
+  evaluate->add_option("--bores", eo->bores, "bores per circuit")->capture_default_str()->check(CLI::Range(3, 1000));
+  evaluate->add_option("--seed", eo->seed, "seed of the random layouts")->capture_default_str();
+
   for (CLI::App* s : {dist, sweep, stiff}) {
     s->add_option("--pairs", opt->pairs, "CSV of cylinder pairs with dist_lo, dist_hi")->required()->check(CLI::ExistingFile);
     s->add_option("--repeat", opt->repeat, "queries per timed batch")->capture_default_str()->check(CLI::Range(1, 1000000));
@@ -179,7 +200,23 @@ Command add_bench_command(CLI::App& app) {
   stiff->add_option("--tolerance", opt->tolerance, "kernel tolerance")->capture_default_str();
   sweep->add_option("--tolerances", opt->sweep, "tolerances to sweep")->delimiter(',');
 
-  return {bench, [opt, dist, sweep, stiff] {
+  return {bench, [opt, dist, sweep, stiff, evaluate, eo] {
+            if (evaluate->parsed()) {
+              const mold::Scene scene(mold::load_mold_spec(eo->mold));
+              const auto genomes = random_genomes(scene, eo->evaluations, eo->circuits, eo->bores, eo->seed);
+              std::cout << "mold,threads,bores,samples,evaluations_per_second\n";
+              std::vector<int> rows{1};
+              if (eo->threads > 1) rows.push_back(eo->threads);
+              for (const int t : rows) {
+                const auto r = bench_evaluate(scene, genomes, t);
+                std::cout << eo->mold << ',' << t << ',' << r.bores << ',' << r.samples << ',' << r.evaluations_per_second << '\n';
+                if (t == 1) {
+                  std::cerr << "stage,microseconds_per_evaluation\n";
+                  for (const auto& [name, sec] : r.stage_seconds) std::cerr << name << ',' << sec * 1e6 << '\n';
+                }
+              }
+              return 0;
+            }
             const auto pairs = read_pairs_csv(opt->pairs);
             std::cout.precision(6);
             if (dist->parsed()) {

@@ -1,0 +1,113 @@
+// mtcs bench evaluate: evaluations per second on random layouts of a mold, on one thread and on
+// N threads (TBB), with the time split by stage.
+
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <map>
+
+#include "bench_evaluate.h"
+#include "mtcs/eval/pipeline.h"
+#include "mtcs/mold/decoder.h"
+
+namespace mtcs::cli {
+namespace {
+
+using geometry::Vec3;
+
+// splitmix64: a small, fully specified generator, so that the random layouts are the same on
+// every platform.
+struct SplitMix {
+  std::uint64_t state;
+  std::uint64_t next() {
+    std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  }
+  double uniform() { return double(next() >> 11) * 0x1.0p-53; }
+  int below(int n) { return int(uniform() * n); }
+};
+
+int axis_of(mold::Face f) {
+  int k = 0;
+  mold::normal_of(f).cwiseAbs().maxCoeff(&k);
+  return k;
+}
+
+// A circuit of `bores` axis-parallel legs from an inlet face to an outlet face; coordinates
+// uniform in the block's inner 80%.
+mold::Circuit random_circuit(const mold::Scene& scene, SplitMix& rng, int bores, double diameter) {
+  const auto& spec = scene.spec();
+  const geometry::Box& b = scene.block_bounds();
+  const Vec3 lo = b.min + 0.1 * b.size(), hi = b.max - 0.1 * b.size();
+  auto inside = [&](int k) { return lo[k] + rng.uniform() * (hi[k] - lo[k]); };
+  auto on_face = [&](mold::Face f) {
+    Vec3 p(inside(0), inside(1), inside(2));
+    const int k = axis_of(f);
+    p[k] = mold::normal_of(f)[k] > 0 ? b.max[k] : b.min[k];
+    return p;
+  };
+  const mold::Face in = spec.circuits.inlet_faces[std::size_t(rng.below(int(spec.circuits.inlet_faces.size())))];
+  const mold::Face out = spec.circuits.outlet_faces[std::size_t(rng.below(int(spec.circuits.outlet_faces.size())))];
+  mold::Circuit c;
+  c.diameter = diameter;
+  Vec3 p = on_face(in);
+  c.waypoints.push_back(p);
+  int prev = axis_of(in);
+  p[prev] = inside(prev);  // first leg: straight in from the inlet face
+  c.waypoints.push_back(p);
+  for (int leg = 1; leg + 1 < bores; ++leg) {
+    int k;
+    do k = rng.below(3);
+    while (k == prev || (leg + 2 == bores && k == axis_of(out)));
+    p[k] = inside(k);
+    c.waypoints.push_back(p);
+    prev = k;
+  }
+  const int k = axis_of(out);
+  p[k] = mold::normal_of(out)[k] > 0 ? b.max[k] : b.min[k];
+  c.waypoints.push_back(p);
+  return c;
+}
+
+}  // namespace
+
+std::vector<mold::Genome> random_genomes(const mold::Scene& scene, int count, int circuits, int bores,
+                                         std::uint64_t seed) {
+  SplitMix rng{seed};
+  const auto& diameters = scene.spec().drilling.diameters;
+  std::vector<mold::Genome> out(static_cast<std::size_t>(count));
+  for (auto& g : out)
+    for (int c = 0; c < circuits; ++c)
+      g.circuits.push_back(random_circuit(scene, rng, bores, diameters[std::size_t(rng.below(int(diameters.size())))]));
+  return out;
+}
+
+EvaluateBench bench_evaluate(const mold::Scene& scene, const std::vector<mold::Genome>& genomes, int threads) {
+  const eval::Pipeline pipeline(scene);
+  EvaluateBench r;
+  r.samples = pipeline.surface_samples();
+  r.bores = 0;
+  for (const auto& c : genomes.front().circuits) r.bores += int(mold::routed_waypoints(scene, c).size()) - 1;
+  std::vector<double> sink(genomes.size());
+  const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+  // Warm-up, then the timed pass.
+  tbb::parallel_for(std::size_t(0), std::min<std::size_t>(genomes.size(), 64),
+                    [&](std::size_t i) { sink[i] = pipeline.evaluate(genomes[i]).violation; });
+  const auto t0 = std::chrono::steady_clock::now();
+  tbb::parallel_for(std::size_t(0), genomes.size(),
+                    [&](std::size_t i) { sink[i] = pipeline.evaluate(genomes[i]).violation; });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.evaluations_per_second = double(genomes.size()) / seconds;
+  // The split by stage, single-threaded over a few hundred layouts.
+  const std::size_t n = std::min<std::size_t>(genomes.size(), 500);
+  for (std::size_t i = 0; i < n; ++i)
+    for (const auto& s : pipeline.evaluate(genomes[i], true).stages) r.stage_seconds[s.name] += s.seconds / double(n);
+  return r;
+}
+
+}  // namespace mtcs::cli
