@@ -11,13 +11,22 @@ namespace {
 class KeepOutCylinderStage final : public Stage {
  public:
   explicit KeepOutCylinderStage(const mold::Scene& scene) {
-    for (const auto& k : scene.spec().keep_outs)
-      if (k.cylinder) keep_outs_.push_back(k);
+    for (const auto& k : scene.spec().keep_outs) {
+      if (!k.cylinder) continue;
+      keep_outs_.push_back(k);
+      // The keep-out's box grown by its clearance: a bore box that misses it is clear.
+      const geometry::Vec3 grow = geometry::Vec3::Constant(k.cylinder->radius + k.clearance);
+      boxes_.push_back({k.cylinder->p0.cwiseMin(k.cylinder->p1) - grow, k.cylinder->p0.cwiseMax(k.cylinder->p1) + grow});
+    }
   }
   std::string name() const override { return "bore_keepout_cylinders"; }
   void run(const mold::Layout& layout, Evaluation& out) const override {
     for (const mold::Bore& b : layout.bores) {
-      for (const auto& k : keep_outs_) {
+      const geometry::Vec3 r = geometry::Vec3::Constant(b.hole.radius);
+      const geometry::Vec3 lo = b.hole.p0.cwiseMin(b.hole.p1) - r, hi = b.hole.p0.cwiseMax(b.hole.p1) + r;
+      for (std::size_t i = 0; i < keep_outs_.size(); ++i) {
+        if ((lo.array() > boxes_[i].max.array()).any() || (boxes_[i].min.array() > hi.array()).any()) continue;
+        const auto& k = keep_outs_[i];
         const auto d = geometry::distance(b.hole, *k.cylinder, {.upper_bound = k.clearance});
         if (d.bounded) continue;
         add_clearance(out, "bore_keepout", {b.name(), k.name}, d.distance, k.clearance, (d.witness_a + d.witness_b) / 2);
@@ -27,6 +36,7 @@ class KeepOutCylinderStage final : public Stage {
 
  private:
   std::vector<mold::KeepOut> keep_outs_;
+  std::vector<geometry::Box> boxes_;
 };
 
 class KeepOutMeshStage final : public Stage {

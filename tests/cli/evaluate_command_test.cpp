@@ -1,0 +1,76 @@
+// mtcs evaluate end to end: the JSON contract and bad input (exit code 2, file:line:column).
+
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Run {
+  int code;
+  std::string out, err;
+};
+
+Run run_mtcs(const std::string& args) {
+  const fs::path out = fs::temp_directory_path() / "mtcs_eval_cli.out", err = fs::temp_directory_path() / "mtcs_eval_cli.err";
+  const int status = std::system((std::string(MTCS_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string()).c_str());
+  auto slurp = [](const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  };
+  return {WEXITSTATUS(status), slurp(out), slurp(err)};
+}
+
+}  // namespace
+
+TEST_CASE("mtcs evaluate --json prints one object with the documented fields", "[cli]") {
+  const Run r = run_mtcs("evaluate " MTCS_SOURCE_DIR "/molds/gear.yaml --layout " MTCS_SOURCE_DIR
+                         "/molds/gear.layout.yaml --json");
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["feasible"].is_boolean());
+  CHECK(j["objectives"].contains("uniformity"));
+  CHECK(j["objectives"].contains("cost"));
+  CHECK(j["violations"].is_array());
+  bool mesh_stage = false;
+  for (const auto& s : j["stages"]) {
+    CHECK(s["seconds"].get<double>() >= 0);
+    mesh_stage = mesh_stage || s["name"] == "bore_cavity_mesh";
+  }
+  CHECK(mesh_stage);
+}
+
+TEST_CASE("mtcs evaluate reports violations with elements, distance and margin", "[cli]") {
+  const fs::path layout = fs::temp_directory_path() / "mtcs_eval_gap.layout.yaml";
+  // Two straight bores 10 mm apart (gap 2 mm for 8 mm bores) across the plate's block.
+  std::ofstream(layout) << "circuits:\n"
+                           "  - {diameter: 8, waypoints: [[100, 0, 80], [100, 200, 80], [100, 200, 80]]}\n"
+                           "  - {diameter: 8, waypoints: [[110, 0, 80], [110, 100, 80], [300, 100, 80]]}\n";
+  const Run r = run_mtcs("evaluate " MTCS_SOURCE_DIR "/molds/plate.yaml --layout " + layout.string() + " --json");
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK_FALSE(j["feasible"].get<bool>());
+  bool found = false;
+  for (const auto& v : j["violations"])
+    if (v["kind"] == "bore_bore" && v["elements"][0] == "c0.b0" && v["elements"][1] == "c1.b0")
+      found = std::abs(v["distance"].get<double>() - 2) < 1e-9 && v["margin"] == 4;
+  CHECK(found);
+}
+
+TEST_CASE("mtcs evaluate rejects bad input with exit code 2", "[cli]") {
+  const fs::path layout = fs::temp_directory_path() / "mtcs_eval_bad.layout.yaml";
+  std::ofstream(layout) << "circuits:\n  - {diameter: 7, waypoints: [[0, 0, 0], [1, 1, 1]]}\n";
+  Run r = run_mtcs("evaluate " MTCS_SOURCE_DIR "/molds/plate.yaml --layout " + layout.string());
+  CHECK(r.code == 2);
+  CHECK(r.err.find(layout.string() + ":2:16:") != std::string::npos);
+  CHECK(r.err.find("circuits[0].diameter") != std::string::npos);
+  r = run_mtcs("evaluate /nonexistent.yaml --layout " + layout.string());
+  CHECK(r.code == 2);
+}
