@@ -38,12 +38,6 @@ struct Candidate {
 
 }  // namespace
 
-bool Layout::is_junction(int a, int b) const {
-  for (const Junction& j : junctions)
-    if ((j.a == a && j.b == b) || (j.a == b && j.b == a)) return true;
-  return false;
-}
-
 std::vector<Vec3> routed_waypoints(const Scene& scene, const Circuit& circuit) {
   const double tiny = 1e-9 * std::max(1.0, scene.block_bounds().size().maxCoeff());
   std::vector<Vec3> pts;

@@ -8,6 +8,8 @@
 #include <sstream>
 #include <string>
 
+#include <unistd.h>
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -17,8 +19,15 @@ struct Run {
   std::string err;
 };
 
+// CTest runs test cases in parallel processes: every file name carries the process id.
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("mtcs_distance_cli_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir / name;
+}
+
 Run run_mtcs(const std::string& args) {
-  const fs::path err = fs::temp_directory_path() / "mtcs_cli_test.err";
+  const fs::path err = scratch("run.err");
   const int status = std::system((std::string(MTCS_BINARY) + " " + args + " 2>" + err.string()).c_str());
   std::ifstream in(err);
   std::stringstream ss;
@@ -27,7 +36,7 @@ Run run_mtcs(const std::string& args) {
 }
 
 fs::path write_file(const std::string& name, const std::string& text) {
-  const fs::path p = fs::temp_directory_path() / name;
+  const fs::path p = scratch(name);
   std::ofstream(p) << text;
   return p;
 }
@@ -40,7 +49,7 @@ TEST_CASE("mtcs distance writes id,distance,feature,bounded", "[cli]") {
   const auto in = write_file("mtcs_ok.csv", std::string(kHeader) +
                                                 "a,0,0,0,10,0,0,1,0,5,0,10,5,0,2\n"
                                                 "b,0,0,0,10,0,0,1,20,50,0,30,50,0,2\n");
-  const auto out = fs::temp_directory_path() / "mtcs_ok_out.csv";
+  const auto out = scratch("mtcs_ok_out.csv");
   fs::remove(out);
   const Run r = run_mtcs("distance --pairs " + in.string() + " --out " + out.string() + " --upper-bound 5");
   REQUIRE(r.code == 0);
@@ -57,7 +66,7 @@ TEST_CASE("mtcs distance rejects a malformed row with its line and column", "[cl
   const auto in = write_file("mtcs_bad.csv", std::string(kHeader) +
                                                  "a,0,0,0,10,0,0,1,0,5,0,10,5,0,2\n"
                                                  "b,0,0,0,10,0,zero,1,0,5,0,10,5,0,2\n");
-  const auto out = fs::temp_directory_path() / "mtcs_bad_out.csv";
+  const auto out = scratch("mtcs_bad_out.csv");
   fs::remove(out);
   const Run r = run_mtcs("distance --pairs " + in.string() + " --out " + out.string());
   CHECK(r.code == 2);
@@ -67,7 +76,7 @@ TEST_CASE("mtcs distance rejects a malformed row with its line and column", "[cl
 }
 
 TEST_CASE("mtcs distance rejects a missing column, a short row and a negative radius", "[cli]") {
-  const auto out = fs::temp_directory_path() / "mtcs_bad2_out.csv";
+  const auto out = scratch("mtcs_bad2_out.csv");
   fs::remove(out);
   const auto no_r1 = write_file("mtcs_nor1.csv", "id,p0x,p0y,p0z,p1x,p1y,p1z,r0,q0x,q0y,q0z,q1x,q1y,q1z\n");
   Run r = run_mtcs("distance --pairs " + no_r1.string() + " --out " + out.string());

@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include <unistd.h>
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -16,8 +18,15 @@ struct Run {
   std::string out, err;
 };
 
+// CTest runs test cases in parallel processes: every file name carries the process id.
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("mtcs_eval_cli_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir / name;
+}
+
 Run run_mtcs(const std::string& args) {
-  const fs::path out = fs::temp_directory_path() / "mtcs_eval_cli.out", err = fs::temp_directory_path() / "mtcs_eval_cli.err";
+  const fs::path out = scratch("run.out"), err = scratch("run.err");
   const int status = std::system((std::string(MTCS_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string()).c_str());
   auto slurp = [](const fs::path& p) {
     std::ifstream in(p);
@@ -48,7 +57,7 @@ TEST_CASE("mtcs evaluate --json prints one object with the documented fields", "
 }
 
 TEST_CASE("mtcs evaluate reports violations with elements, distance and margin", "[cli]") {
-  const fs::path layout = fs::temp_directory_path() / "mtcs_eval_gap.layout.yaml";
+  const fs::path layout = scratch("gap.layout.yaml");
   // Two straight bores 10 mm apart (gap 2 mm for 8 mm bores) across the plate's block.
   std::ofstream(layout) << "circuits:\n"
                            "  - {diameter: 8, waypoints: [[100, 0, 80], [100, 200, 80], [100, 200, 80]]}\n"
@@ -65,7 +74,7 @@ TEST_CASE("mtcs evaluate reports violations with elements, distance and margin",
 }
 
 TEST_CASE("mtcs evaluate rejects bad input with exit code 2", "[cli]") {
-  const fs::path layout = fs::temp_directory_path() / "mtcs_eval_bad.layout.yaml";
+  const fs::path layout = scratch("bad.layout.yaml");
   std::ofstream(layout) << "circuits:\n  - {diameter: 7, waypoints: [[0, 0, 0], [1, 1, 1]]}\n";
   Run r = run_mtcs("evaluate " MTCS_SOURCE_DIR "/molds/plate.yaml --layout " + layout.string());
   CHECK(r.code == 2);

@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
+
+#include <unistd.h>
 #include <random>
 
 #include "mtcs/eval/pipeline.h"
@@ -18,7 +20,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path write(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "mtcs_pipeline_test";
+  const fs::path dir = fs::temp_directory_path() / ("mtcs_pipeline_test_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const fs::path p = dir / name;
   std::ofstream(p) << text;

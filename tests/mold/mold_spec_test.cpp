@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <unistd.h>
+
 #include "mtcs/io/input_error.h"
 #include "mtcs/mold/mold_spec.h"
 
@@ -14,7 +16,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path write(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "mtcs_mold_spec_test";
+  const fs::path dir = fs::temp_directory_path() / ("mtcs_mold_spec_test_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const fs::path p = dir / name;
   std::ofstream(p) << text;

@@ -44,8 +44,6 @@ struct Layout {
   std::vector<Junction> junctions;
   std::vector<PortProblem> ports;
   int plugs = 0;
-
-  bool is_junction(int a, int b) const;
 };
 
 }  // namespace mtcs::mold
