@@ -1,0 +1,48 @@
+#pragma once
+// What the optimisers see of a problem (DESIGN.md: opt knows nothing of molds): sample,
+// mutate, recombine, evaluate. A genotype is a vector of reals whose layout the problem alone
+// knows (fixed length for test functions; circuits of waypoints for molds).
+
+#include <string>
+#include <vector>
+
+#include "mtcs/opt/rng.h"
+
+namespace mtcs::opt {
+
+using Genotype = std::vector<double>;
+
+struct Score {
+  std::vector<double> objectives;
+  double violation = 0;  // 0 when feasible
+  bool feasible = true;
+  double value = 0;      // the scalarised objective (weighted sum + penalty term)
+};
+
+class Problem {
+ public:
+  virtual ~Problem() = default;
+
+  virtual std::string name() const = 0;
+  virtual Genotype sample(Rng& rng) const = 0;
+  // How many step sizes the ES adapts for this genotype: 1 (one scale) or its length (one
+  // per coordinate; what an ill-conditioned separable function needs).
+  virtual std::size_t step_sizes(const Genotype& g) const { return g.size(); }
+  // How many of the strategy parameters after the step sizes are rotation angles (Schwefel's
+  // correlated mutations: n(n-1)/2 for n coordinates; 0 for none). Angles are adapted
+  // additively (5 degrees), step sizes log-normally.
+  virtual std::size_t rotation_angles(const Genotype&) const { return 0; }
+  // Initial strategy parameters: step sizes, then angles.
+  virtual std::vector<double> initial_steps(const Genotype& g) const = 0;
+  // Gaussian moves with the given strategy parameters plus any structural moves; must keep g
+  // valid.
+  virtual void mutate(Genotype& g, const std::vector<double>& steps, Rng& rng) const = 0;
+  // Recombination of two parents; the default takes the first.
+  virtual Genotype recombine(const Genotype& a, const Genotype& b, Rng& rng) const;
+  // Thread-safe.
+  virtual Score evaluate(const Genotype& g) const = 0;
+  // Strict weak order of scores; the default compares values.
+  virtual bool better(const Score& a, const Score& b) const { return a.value < b.value; }
+};
+
+}  // namespace mtcs::opt

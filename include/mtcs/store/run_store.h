@@ -1,0 +1,50 @@
+#pragma once
+// The run store (SQLite): what a run was (resolved config, mold spec and its hash, seed, program
+// version) and every generation's population — genotype, strategy parameters, objectives,
+// violation, feasibility — with a summary. One transaction per generation, so a run killed at
+// any moment (kill -9 included) keeps every complete generation and resumes from the last.
+// Numbers are stored as their exact bits: a resumed run continues bit for bit.
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mtcs/opt/evolution_strategy.h"
+
+struct sqlite3;
+
+namespace mtcs::store {
+
+struct GenerationSummary {
+  int index = 0;
+  long evaluations = 0;
+  double best = 0;           // best scalarised value
+  double feasible_share = 0;  // of the population
+  double seconds = 0;        // wall time since the run started
+};
+
+class RunStore {
+ public:
+  // Creates a new store (fails if the file exists) with the run's metadata.
+  static RunStore create(const std::string& path, const std::map<std::string, std::string>& meta);
+  // Opens an existing store to read or resume it.
+  static RunStore open(const std::string& path);
+
+  RunStore(RunStore&&) noexcept;
+  RunStore& operator=(RunStore&&) noexcept;
+  ~RunStore();
+
+  std::map<std::string, std::string> meta() const;
+  void save(const opt::Generation& g, double seconds);
+  std::optional<opt::Generation> last() const;
+  std::optional<opt::Generation> generation(int index) const;
+  std::vector<GenerationSummary> summaries() const;
+
+ private:
+  explicit RunStore(sqlite3* db);
+  sqlite3* db_ = nullptr;
+};
+
+}  // namespace mtcs::store

@@ -1,0 +1,113 @@
+#include "mtcs/opt/evolution_strategy.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace mtcs::opt {
+
+Genotype Problem::recombine(const Genotype& a, const Genotype&, Rng&) const { return a; }
+
+EvolutionStrategy::EvolutionStrategy(const Problem& problem, EsConfig config)
+    : problem_(problem), config_(config) {}
+
+std::vector<Score> EvolutionStrategy::evaluate_all(const Problem& problem, const std::vector<Genotype>& xs) {
+  std::vector<Score> scores(xs.size());
+  tbb::parallel_for(std::size_t(0), xs.size(), [&](std::size_t i) { scores[i] = problem.evaluate(xs[i]); });
+  return scores;
+}
+
+namespace {
+
+// Best first; ties keep their order (stable), so the result does not depend on threads.
+void sort_population(const Problem& problem, std::vector<Individual>& pop) {
+  std::stable_sort(pop.begin(), pop.end(),
+                   [&](const Individual& a, const Individual& b) { return problem.better(a.score, b.score); });
+}
+
+}  // namespace
+
+Generation EvolutionStrategy::initial() const {
+  Generation g;
+  std::vector<Genotype> xs;
+  for (int i = 0; i < config_.mu; ++i) {
+    Rng rng = Rng::for_individual(config_.seed, 0, std::uint64_t(i));
+    xs.push_back(problem_.sample(rng));
+  }
+  const auto scores = evaluate_all(problem_, xs);
+  for (int i = 0; i < config_.mu; ++i)
+    g.population.push_back({xs[i], problem_.initial_steps(xs[i]), scores[i]});
+  g.evaluations = config_.mu;
+  sort_population(problem_, g.population);
+  return g;
+}
+
+Generation EvolutionStrategy::step(const Generation& prev) const {
+  const int mu = int(prev.population.size());
+  const int lambda = config_.lambda;
+  std::vector<Individual> offspring(static_cast<std::size_t>(lambda));
+  std::vector<Genotype> xs(static_cast<std::size_t>(lambda));
+  for (int i = 0; i < lambda; ++i) {
+    Rng rng = Rng::for_individual(config_.seed, std::uint64_t(prev.index + 1), std::uint64_t(i));
+    const Individual& a = prev.population[std::size_t(rng.below(mu))];
+    const Individual* b = &a;
+    if (config_.recombination && config_.rho >= 2 && mu > 1) {
+      int j = rng.below(mu - 1);
+      b = &prev.population[std::size_t(j >= int(&a - prev.population.data()) ? j + 1 : j)];
+    }
+    Individual child;
+    child.x = b == &a ? a.x : problem_.recombine(a.x, b->x, rng);
+    // Strategy parameters: the parents' mean where they match the child (geometric for step
+    // sizes, arithmetic for angles), then log-normal steps and additive angles.
+    const std::size_t na = problem_.rotation_angles(child.x);
+    const std::size_t n = problem_.step_sizes(child.x);
+    const auto fresh = problem_.initial_steps(child.x);
+    child.steps = a.steps.size() == fresh.size() ? a.steps : fresh;
+    if (b != &a && b->steps.size() == fresh.size()) {
+      for (std::size_t k = 0; k < n; ++k) child.steps[k] = std::sqrt(child.steps[k] * b->steps[k]);
+      for (std::size_t k = n; k < n + na; ++k) child.steps[k] = (child.steps[k] + b->steps[k]) / 2;
+    }
+    const double tau0 = 1 / std::sqrt(2.0 * double(n)), tau = 1 / std::sqrt(2 * std::sqrt(double(n)));
+    const double global = tau0 * rng.normal();
+    for (std::size_t k = 0; k < n; ++k)
+      child.steps[k] = std::clamp(child.steps[k] * std::exp(global + (n > 1 ? tau * rng.normal() : 0.0)),
+                                  config_.min_step, config_.max_step);
+    constexpr double kBeta = 0.0873, kPi = 3.14159265358979323846;
+    for (std::size_t k = n; k < n + na; ++k) {
+      double angle = child.steps[k] + kBeta * rng.normal();
+      if (angle > kPi) angle -= 2 * kPi;
+      if (angle < -kPi) angle += 2 * kPi;
+      child.steps[k] = angle;
+    }
+    problem_.mutate(child.x, child.steps, rng);
+    xs[std::size_t(i)] = child.x;
+    offspring[std::size_t(i)] = std::move(child);
+  }
+  const auto scores = evaluate_all(problem_, xs);
+  for (int i = 0; i < lambda; ++i) offspring[std::size_t(i)].score = scores[std::size_t(i)];
+
+  Generation next;
+  next.index = prev.index + 1;
+  next.evaluations = prev.evaluations + lambda;
+  std::vector<Individual> pool = config_.plus ? prev.population : std::vector<Individual>{};
+  pool.insert(pool.end(), offspring.begin(), offspring.end());
+  sort_population(problem_, pool);
+  pool.resize(std::min<std::size_t>(pool.size(), std::size_t(config_.mu)));
+  next.population = std::move(pool);
+  return next;
+}
+
+Generation run(const EvolutionStrategy& es, const Generation* start,
+               const std::function<void(const Generation&)>& on_generation) {
+  Generation g = start ? *start : es.initial();
+  if (!start && on_generation) on_generation(g);
+  while (!es.done(g)) {
+    g = es.step(g);
+    if (on_generation) on_generation(g);
+  }
+  return g;
+}
+
+}  // namespace mtcs::opt
