@@ -7,9 +7,12 @@
 #include <filesystem>
 
 #include "mtcs/mesh/mesh_io.h"
-#include "yaml_reader.h"
+#include "mtcs/io/yaml_reader.h"
 
 namespace mtcs::mold {
+
+using io::YamlReader;
+using io::indexed;
 namespace {
 
 constexpr double kHuge = 1e12;

@@ -12,7 +12,7 @@
 #include "mtcs/geometry/primitives.h"
 #include "mtcs/io/input_error.h"
 
-namespace mtcs::mold {
+namespace mtcs::io {
 
 // "path[i]".
 std::string indexed(const std::string& path, std::size_t i);
@@ -40,4 +40,4 @@ class YamlReader {
   std::string file_;
 };
 
-}  // namespace mtcs::mold
+}  // namespace mtcs::io

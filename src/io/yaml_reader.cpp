@@ -1,11 +1,11 @@
-#include "yaml_reader.h"
+#include "mtcs/io/yaml_reader.h"
 
 #include <charconv>
 #include <cmath>
 #include <set>
 #include <sstream>
 
-namespace mtcs::mold {
+namespace mtcs::io {
 
 std::string indexed(const std::string& path, std::size_t i) {
   std::string s = path;
@@ -90,4 +90,4 @@ geometry::Vec3 YamlReader::vec3(const YAML::Node& n, const std::string& path) co
           number(n[2], path + "[2]", -inf, inf)};
 }
 
-}  // namespace mtcs::mold
+}  // namespace mtcs::io
