@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "mtcs 0.1.0");
 
   const std::vector<mtcs::cli::Command> commands{
+      mtcs::cli::add_optimize_command(app),
       mtcs::cli::add_evaluate_command(app),
       mtcs::cli::add_distance_command(app),
       mtcs::cli::add_bench_command(app),

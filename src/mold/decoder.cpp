@@ -40,8 +40,20 @@ struct Candidate {
 
 std::vector<Vec3> routed_waypoints(const Scene& scene, const Circuit& circuit) {
   const double tiny = 1e-9 * std::max(1.0, scene.block_bounds().size().maxCoeff());
+  const Drilling& drill = scene.spec().drilling;
+  // Axes no allowed face lets a drill run along: with axis-parallel holes, a circuit keeps
+  // its inlet's coordinate along them.
+  std::array<bool, 3> drillable{false, false, false};
+  for (const Face f : drill.allowed_faces) {
+    int k = 0;
+    normal_of(f).cwiseAbs().maxCoeff(&k);
+    drillable[std::size_t(k)] = true;
+  }
   std::vector<Vec3> pts;
-  for (const Vec3& p : circuit.waypoints) {
+  for (Vec3 p : circuit.waypoints) {
+    if (drill.axis_parallel && !pts.empty())
+      for (int k = 0; k < 3; ++k)
+        if (!drillable[std::size_t(k)]) p[k] = pts.front()[k];
     if (pts.empty()) {
       pts.push_back(p);
       continue;

@@ -19,5 +19,6 @@ struct Command {
 Command add_distance_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_evaluate_command(CLI::App& app);
+Command add_optimize_command(CLI::App& app);
 
 }  // namespace mtcs::cli

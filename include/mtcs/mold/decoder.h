@@ -9,7 +9,8 @@ namespace mtcs::mold {
 
 // With drilling.axis_parallel, a step between two waypoints that differ in more than one
 // coordinate is routed along the axes (longest leg first), so every hole is axis-parallel and
-// the inlet and outlet stay where they are. Each flow segment is drilled from whichever end
+// the inlet and outlet stay where they are; along an axis no allowed face can be drilled from
+// (z, when only the side faces are allowed), the circuit keeps its inlet's coordinate. Each flow segment is drilled from whichever end
 // gives the shorter hole through an allowed face (any face when neither is allowed; the
 // violation is reported). Holes extend past their far waypoint by the drill point,
 // 0.5 D cot(tip/2), plus drilling.min_overlap, unless that waypoint is the inlet or outlet.

@@ -1,0 +1,48 @@
+#pragma once
+// A mold as an optimisation problem (DESIGN.md: Problem = Decoder + Pipeline): the genotype
+// encodes circuits of waypoints, the mutations are the structural moves a bore set needs
+// (shared/notes/mtcs_literature.md 7.3), the score comes from the evaluation pipeline.
+//
+// Genotype layout: [K, then per circuit: diameter index, n, x0, y0, z0, ..., x(n-1), y, z].
+
+#include "mtcs/eval/pipeline.h"
+#include "mtcs/mold/genome.h"
+#include "mtcs/opt/problem.h"
+
+namespace mtcs::cli {
+
+struct MutationRates {
+  double insert = 0.1, remove = 0.1, snap = 0.05, diameter = 0.05, circuit = 0.02;
+};
+
+class MoldProblem final : public opt::Problem {
+ public:
+  MoldProblem(const eval::Pipeline& pipeline, std::vector<double> weights, MutationRates rates);
+
+  std::string name() const override { return "mold"; }
+  opt::Genotype sample(opt::Rng& rng) const override;
+  std::size_t step_sizes(const opt::Genotype&) const override { return 1; }
+  std::vector<double> initial_steps(const opt::Genotype&) const override { return {initial_step_}; }
+  void mutate(opt::Genotype& g, const std::vector<double>& steps, opt::Rng& rng) const override;
+  opt::Genotype recombine(const opt::Genotype& a, const opt::Genotype& b, opt::Rng& rng) const override;
+  opt::Score evaluate(const opt::Genotype& g) const override;
+  bool better(const opt::Score& a, const opt::Score& b) const override;
+
+  mold::Genome genome(const opt::Genotype& g) const;
+  opt::Genotype encode(const mold::Genome& genome) const;
+
+ private:
+  mold::Circuit random_circuit(opt::Rng& rng) const;
+  // Puts a port back on its face (nearest allowed one) and interior points inside the block.
+  void repair(mold::Circuit& c) const;
+
+  const eval::Pipeline& pipeline_;
+  const mold::MoldSpec& spec_;
+  geometry::Box block_;
+  geometry::Box region_;  // where new circuits' waypoints are drawn: around the part
+  std::vector<double> weights_;
+  MutationRates rates_;
+  double initial_step_;
+};
+
+}  // namespace mtcs::cli

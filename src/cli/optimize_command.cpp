@@ -1,0 +1,203 @@
+// mtcs optimize: the main job. Evolves bore layouts for a mold with the ES, evaluating each
+// generation in parallel, storing every generation in DIR/run.sqlite (resumable after any
+// interruption), and writing the best layout for CAD and for re-scoring.
+
+#include <CLI/CLI.hpp>
+#include <tbb/global_control.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "mold_problem.h"
+#include "mtcs/cli/commands.h"
+#include "mtcs/eval/pipeline.h"
+#include "mtcs/io/atomic_file.h"
+#include "mtcs/io/input_error.h"
+#include "mtcs/mold/decoder.h"
+#include "mtcs/mold/layout_io.h"
+#include "mtcs/store/run_store.h"
+#include "run_config.h"
+
+namespace mtcs::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw io::InputError(path, 0, 0, "", "cannot open file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// FNV-1a, 64 bits: identifies the mold spec a run was made with.
+std::string fnv1a(const std::string& bytes) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (const unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ULL;
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+struct Options {
+  std::string mold, config, out = "mtcs-run", resume;
+  std::optional<std::uint64_t> seed;
+  std::optional<long> evaluations;
+  int threads = 0;
+  bool quiet = false;
+};
+
+// One status line on a terminal, a log line every few generations otherwise.
+class Progress {
+ public:
+  Progress(bool quiet, int log_every, long budget)
+      : quiet_(quiet), tty_(::isatty(2)), log_every_(log_every), budget_(budget) {}
+  void operator()(const opt::Generation& g, double seconds, long evals_this_session) {
+    if (quiet_) return;
+    const double rate = seconds > 0 ? double(evals_this_session) / seconds : 0;
+    int feasible = 0;
+    for (const auto& ind : g.population) feasible += ind.score.feasible;
+    const double eta = rate > 0 ? double(budget_ - g.evaluations) / rate : 0;
+    char line[200];
+    std::snprintf(line, sizeof line, "gen %5d | %9ld evals | %8.0f evals/s | best %.6g%s | feasible %3.0f%% | ETA %.0f s",
+                  g.index, g.evaluations, rate, g.population.front().score.value,
+                  g.population.front().score.feasible ? "" : " (infeasible)",
+                  100.0 * feasible / double(g.population.size()), eta);
+    if (tty_) std::fprintf(stderr, "\r%s\033[K", line);
+    else if (g.index % log_every_ == 0) std::fprintf(stderr, "%s\n", line);
+  }
+  void done() const {
+    if (!quiet_ && tty_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  bool quiet_, tty_;
+  int log_every_;
+  long budget_;
+};
+
+int run_optimize(const Options& o) {
+  std::string out_dir = o.resume.empty() ? o.out : o.resume;
+  const std::string db_path = (fs::path(out_dir) / "run.sqlite").string();
+  std::optional<store::RunStore> db;
+  std::string mold_path = o.mold, config_text;
+  std::map<std::string, std::string> meta;
+  if (!o.resume.empty()) {
+    if (!fs::exists(db_path)) throw io::InputError(db_path, 0, 0, "", "no run to resume here");
+    db = store::RunStore::open(db_path);
+    meta = db->meta();
+    mold_path = meta.at("mold");
+    config_text = meta.at("config");
+  }
+  const mold::Scene scene(mold::load_mold_spec(mold_path));
+  const eval::Pipeline pipeline(scene);
+  const auto names = pipeline.objective_names();
+  RunConfig config;
+  if (!o.resume.empty()) {
+    if (fnv1a(read_file(mold_path)) != meta.at("mold_hash"))
+      throw io::InputError(mold_path, 0, 0, "", "the mold spec changed since the run started; start a new run");
+    config = parse_run_config(config_text, db_path + ":config", names);
+  } else {
+    if (!o.config.empty()) config = load_run_config(o.config, names);
+    if (o.seed) config.es.seed = *o.seed;
+    if (o.evaluations) config.es.evaluations = *o.evaluations;
+    fs::create_directories(out_dir);
+    if (fs::exists(db_path))
+      throw io::InputError(db_path, 0, 0, "", "a run exists here: resume it with --resume " + out_dir + " or choose --out");
+    meta = {{"mold", fs::absolute(mold_path).string()}, {"mold_hash", fnv1a(read_file(mold_path))},
+            {"config", config.to_yaml(names)}, {"seed", std::to_string(config.es.seed)},
+            {"objectives", [&] { std::string s; for (const auto& n : names) s += (s.empty() ? "" : ",") + n; return s; }()},
+            {"program", "mtcs 0.1.0"}};
+    db = store::RunStore::create(db_path, meta);
+  }
+
+  std::optional<tbb::global_control> limit;
+  if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
+  const MoldProblem problem(pipeline, config.weights, config.mutation);
+  opt::EsConfig es_config = config.es;
+  // Waypoint moves finer than a tenth of the smallest drill change nothing that matters.
+  es_config.min_step = 0.1 * *std::min_element(scene.spec().drilling.diameters.begin(), scene.spec().drilling.diameters.end());
+  const opt::EvolutionStrategy es(problem, es_config);
+  const auto previous = db->last();
+  const double seconds_before = previous ? db->summaries().back().seconds : 0;
+  const long evals_before = previous ? previous->evaluations : 0;
+  Progress progress(o.quiet, config.log_every, config.es.evaluations);
+  const auto t0 = std::chrono::steady_clock::now();
+  auto on_generation = [&](const opt::Generation& g) {
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    db->save(g, seconds_before + s);
+    progress(g, s, g.evaluations - evals_before);
+  };
+  const opt::Generation last = opt::run(es, previous ? &*previous : nullptr, on_generation);
+  progress.done();
+  const double seconds = seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  // The best layout, for CAD and for re-scoring with mtcs evaluate.
+  const opt::Individual& best = last.population.front();
+  const mold::Genome genome = problem.genome(best.x);
+  const mold::Layout layout = mold::decode(scene, genome);
+  mold::save_layout((fs::path(out_dir) / "best.layout.yaml").string(), genome);
+  mold::save_bores_csv((fs::path(out_dir) / "bores.csv").string(), layout);
+  mold::save_bores_stl((fs::path(out_dir) / "bores.stl").string(), layout);
+  nlohmann::ordered_json summary;
+  summary["seed"] = config.es.seed;
+  summary["evaluations"] = last.evaluations;
+  summary["best_objective"] = best.score.value;
+  summary["feasible"] = best.score.feasible;
+  summary["seconds"] = seconds;
+  summary["generations"] = last.index;
+  summary["mold"] = mold_path;
+  for (std::size_t k = 0; k < names.size() && k < best.score.objectives.size(); ++k)
+    summary["objectives"][names[k]] = best.score.objectives[k];
+  summary["violation"] = best.score.violation;
+  io::AtomicFile file((fs::path(out_dir) / "summary.json").string());
+  file.stream() << summary.dump(2) << "\n";
+  file.commit();
+  if (!o.quiet) {
+    std::cerr << (best.score.feasible ? "feasible" : "INFEASIBLE") << " best layout: " << layout.bores.size()
+              << " bores in " << genome.circuits.size() << " circuits, objective " << best.score.value << ", "
+              << last.evaluations << " evaluations in " << seconds << " s\n"
+              << "results in " << out_dir << "/: best.layout.yaml (mtcs evaluate " << mold_path << " --layout "
+              << out_dir << "/best.layout.yaml), bores.csv, bores.stl, summary.json, run.sqlite\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+Command add_optimize_command(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  CLI::App* sub = app.add_subcommand(
+      "optimize",
+      "Optimise the cooling bores of a mold with the evolution strategy.\n"
+      "Every generation is stored in DIR/run.sqlite; an interrupted run (even kill -9) continues\n"
+      "with --resume DIR and ends exactly as an uninterrupted one. Results in DIR: run.sqlite,\n"
+      "best.layout.yaml (edit and re-score with mtcs evaluate), bores.csv, bores.stl, summary.json.\n"
+      "Example: mtcs optimize molds/plate.yaml --config configs/es_default.yaml --out runs/plate --seed 1");
+  sub->add_option("mold", o->mold, "mold spec (YAML)");
+  sub->add_option("--config", o->config, "run config (YAML, see configs/)");
+  sub->add_option("--out", o->out, "output folder")->capture_default_str();
+  sub->add_option("--seed", o->seed, "random seed (overrides the config)");
+  sub->add_option("--evaluations", o->evaluations, "evaluation budget (overrides the config)")->check(CLI::PositiveNumber);
+  sub->add_option("--threads", o->threads, "worker threads (default: all cores); results do not depend on it")
+      ->check(CLI::Range(0, 1024));
+  sub->add_flag("--quiet", o->quiet, "no progress output");
+  sub->add_option("--resume", o->resume, "continue the run stored in this folder");
+  return {sub, [o, sub] {
+            if (o->resume.empty() && o->mold.empty())
+              throw io::InputError("", 0, 0, "mold", "give a mold spec, or --resume DIR");
+            (void)sub;
+            return run_optimize(*o);
+          }};
+}
+
+}  // namespace mtcs::cli

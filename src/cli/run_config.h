@@ -1,0 +1,27 @@
+#pragma once
+// RUN.yaml: how to optimise (configs/*.yaml document every field). The resolved config is
+// stored with the run, so that a resumed run uses exactly the same settings.
+
+#include <string>
+#include <vector>
+
+#include "mold_problem.h"
+#include "mtcs/opt/evolution_strategy.h"
+
+namespace mtcs::cli {
+
+struct RunConfig {
+  opt::EsConfig es;
+  std::vector<double> weights;  // per objective, in the spec's order; empty: all 1
+  MutationRates mutation;
+  int log_every = 10;           // generations between log lines when not on a terminal
+
+  std::string to_yaml(const std::vector<std::string>& objective_names) const;
+};
+
+// Throws io::InputError with file, line, column and field.
+RunConfig load_run_config(const std::string& path, const std::vector<std::string>& objective_names);
+RunConfig parse_run_config(const std::string& yaml_text, const std::string& origin,
+                           const std::vector<std::string>& objective_names);
+
+}  // namespace mtcs::cli

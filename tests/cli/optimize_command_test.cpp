@@ -1,0 +1,129 @@
+// mtcs optimize end to end: the outputs, determinism across thread counts (identical stored
+// generations), and resume after kill -9 ending exactly where an uninterrupted run ends.
+
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include <unistd.h>
+
+#include "mtcs/store/run_store.h"
+
+namespace fs = std::filesystem;
+using mtcs::store::RunStore;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("mtcs_optimize_cli_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+int run_mtcs(const std::string& args) {
+  const int status = std::system((std::string(MTCS_BINARY) + " " + args + " 2>/dev/null").c_str());
+  return WEXITSTATUS(status);
+}
+
+// Every stored generation of a run, flattened.
+std::vector<std::vector<double>> generations(const fs::path& dir) {
+  const RunStore db = RunStore::open((dir / "run.sqlite").string());
+  std::vector<std::vector<double>> out;
+  for (const auto& s : db.summaries()) {
+    const auto g = db.generation(s.index);
+    for (const auto& ind : g->population) {
+      out.push_back(ind.x);
+      out.push_back(ind.steps);
+      out.push_back(ind.score.objectives);
+    }
+  }
+  return out;
+}
+
+const std::string kMold = MTCS_SOURCE_DIR "/molds/plate.yaml";
+
+}  // namespace
+
+TEST_CASE("mtcs optimize writes its results and finds a feasible layout from random starts", "[cli][optimize]") {
+  const fs::path dir = scratch("plain");
+  fs::remove_all(dir);
+  REQUIRE(run_mtcs("optimize " + kMold + " --out " + dir.string() + " --seed 3 --evaluations 6000 --quiet") == 0);
+  for (const char* f : {"run.sqlite", "best.layout.yaml", "bores.csv", "bores.stl", "summary.json"})
+    CHECK(fs::exists(dir / f));
+  std::ifstream in(dir / "summary.json");
+  const auto j = nlohmann::json::parse(in);
+  CHECK(j["seed"] == 3);
+  CHECK(j["evaluations"].get<long>() <= 6000);
+  CHECK(j["feasible"].get<bool>());
+  // The initial population is random and infeasible; the ES found a feasible layout.
+  const RunStore db = RunStore::open((dir / "run.sqlite").string());
+  CHECK(db.summaries().front().feasible_share < 1.0);
+  // The best layout re-scores to the stored objective.
+  CHECK(run_mtcs("evaluate " + kMold + " --layout " + (dir / "best.layout.yaml").string() + " --json > " +
+             scratch("rescore.json").string()) == 0);
+  std::ifstream rs(scratch("rescore.json"));
+  const auto r = nlohmann::json::parse(rs);
+  CHECK(r["feasible"].get<bool>());
+  CHECK(r["objectives"]["cost"].get<double>() == Approx(j["objectives"]["cost"].get<double>()).epsilon(1e-9));
+}
+
+TEST_CASE("mtcs optimize: same seed, same stored generations with 1 or 2 threads", "[cli][optimize][determinism]") {
+  const fs::path a = scratch("t1"), b = scratch("t2");
+  fs::remove_all(a), fs::remove_all(b);
+  REQUIRE(run_mtcs("optimize " + kMold + " --out " + a.string() + " --seed 7 --evaluations 3000 --threads 1 --quiet") == 0);
+  REQUIRE(run_mtcs("optimize " + kMold + " --out " + b.string() + " --seed 7 --evaluations 3000 --threads 2 --quiet") == 0);
+  const auto ga = generations(a), gb = generations(b);
+  CHECK(ga.size() > 100);
+  CHECK(ga == gb);
+}
+
+TEST_CASE("mtcs optimize: killed with -9 and resumed, it ends exactly as an uninterrupted run", "[cli][optimize]") {
+  const fs::path full = scratch("full"), cut = scratch("cut");
+  fs::remove_all(full), fs::remove_all(cut);
+  const std::string args = " --seed 11 --evaluations 150000 --quiet";
+  REQUIRE(run_mtcs("optimize " + kMold + " --out " + full.string() + args) == 0);
+  // Start the same run in the background and kill it mid-way.
+  const fs::path pid = scratch("pid");
+  std::system(("sh -c '" + std::string(MTCS_BINARY) + " optimize " + kMold + " --out " + cut.string() + args +
+               " 2>/dev/null & echo $! > " + pid.string() + "'").c_str());
+  std::string id;
+  for (int i = 0; i < 200 && id.empty(); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    std::ifstream(pid) >> id;
+  }
+  REQUIRE_FALSE(id.empty());
+  // Wait for a few stored generations, then kill.
+  for (int i = 0; i < 500; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    if (fs::exists(cut / "run.sqlite")) {
+      try {
+        if (RunStore::open((cut / "run.sqlite").string()).summaries().size() >= 20) break;
+      } catch (const std::exception&) {
+      }
+    }
+  }
+  std::system(("kill -9 " + id + " 2>/dev/null").c_str());
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  const auto stored = RunStore::open((cut / "run.sqlite").string()).summaries().size();
+  CHECK(stored < RunStore::open((full / "run.sqlite").string()).summaries().size());  // it was cut short
+  REQUIRE(run_mtcs("optimize --resume " + cut.string() + " --quiet") == 0);
+  CHECK(generations(cut) == generations(full));
+  std::ifstream fa(full / "best.layout.yaml"), fb(cut / "best.layout.yaml");
+  std::stringstream sa, sb;
+  sa << fa.rdbuf(), sb << fb.rdbuf();
+  CHECK(sa.str() == sb.str());
+}
+
+TEST_CASE("mtcs optimize refuses to overwrite a run and reports bad configs", "[cli][optimize]") {
+  const fs::path dir = scratch("again");
+  fs::remove_all(dir);
+  REQUIRE(run_mtcs("optimize " + kMold + " --out " + dir.string() + " --evaluations 200 --quiet") == 0);
+  CHECK(run_mtcs("optimize " + kMold + " --out " + dir.string() + " --evaluations 200 --quiet") == 2);
+  const fs::path cfg = scratch("bad.yaml");
+  std::ofstream(cfg) << "es: {mu: 0}\n";
+  CHECK(run_mtcs("optimize " + kMold + " --config " + cfg.string() + " --out " + scratch("bad").string() + " --quiet") == 2);
+}
