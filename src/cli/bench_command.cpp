@@ -11,7 +11,12 @@
 #include <map>
 #include <memory>
 
+#include "mtcs/io/atomic_file.h"
+
 #include "bench_evaluate.h"
+#include "bench_optimize.h"
+#include "mtcs/mold/layout_io.h"
+#include "run_config.h"
 #include "fcl_peer.h"
 #include "mtcs/cli/commands.h"
 #include "mtcs/io/pairs_csv.h"
@@ -191,6 +196,28 @@ Command add_bench_command(CLI::App& app) {
   evaluate->add_option("--bores", eo->bores, "bores per circuit")->capture_default_str()->check(CLI::Range(3, 1000));
   evaluate->add_option("--seed", eo->seed, "seed of the random layouts")->capture_default_str();
 
+  CLI::App* optimize = bench->add_subcommand(
+      "optimize",
+      "One optimiser on one mold over seeds 1..K at an equal budget. CSV on stdout:\n"
+      "  mold,algorithm,seed,evaluations,best_objective,feasible,seconds\n"
+      "and with --trace FILE the convergence (algorithm,seed,evaluations,best_feasible).\n"
+      "Algorithms: es, random (random search), nlopt (GN_ISRES on the coordinates of --topology).\n"
+      "Example: mtcs bench optimize molds/plate.yaml --algorithm es --seeds 11 --evaluations 20000");
+  struct OptOptions {
+    std::string mold, algorithm = "es", config, topology, trace;
+    int seeds = 11;
+    long evaluations = 20000;
+  };
+  auto oo = std::make_shared<OptOptions>();
+  optimize->add_option("mold", oo->mold, "mold spec")->required();
+  optimize->add_option("--algorithm", oo->algorithm, "es, random or nlopt")->capture_default_str()
+      ->check(CLI::IsMember({"es", "random", "nlopt"}));
+  optimize->add_option("--config", oo->config, "run config (ES settings)");
+  optimize->add_option("--topology", oo->topology, "layout whose topology nlopt keeps (default: MOLD.layout.yaml)");
+  optimize->add_option("--seeds", oo->seeds, "seeds 1..K")->capture_default_str()->check(CLI::Range(1, 1000));
+  optimize->add_option("--evaluations", oo->evaluations, "budget per run")->capture_default_str();
+  optimize->add_option("--trace", oo->trace, "convergence CSV to write");
+
   for (CLI::App* s : {dist, sweep, stiff}) {
     s->add_option("--pairs", opt->pairs, "CSV of cylinder pairs with dist_lo, dist_hi")->required()->check(CLI::ExistingFile);
     s->add_option("--repeat", opt->repeat, "queries per timed batch")->capture_default_str()->check(CLI::Range(1, 1000000));
@@ -200,7 +227,44 @@ Command add_bench_command(CLI::App& app) {
   stiff->add_option("--tolerance", opt->tolerance, "kernel tolerance")->capture_default_str();
   sweep->add_option("--tolerances", opt->sweep, "tolerances to sweep")->delimiter(',');
 
-  return {bench, [opt, dist, sweep, stiff, evaluate, eo] {
+  return {bench, [opt, dist, sweep, stiff, evaluate, eo, optimize, oo] {
+            if (optimize->parsed()) {
+              const mold::Scene scene(mold::load_mold_spec(oo->mold));
+              const eval::Pipeline pipeline(scene);
+              const RunConfig config = oo->config.empty() ? RunConfig{} : load_run_config(oo->config, pipeline.objective_names());
+              const MoldProblem problem(pipeline, config.weights, config.mutation);
+              std::string topology = oo->topology;
+              if (topology.empty()) {
+                topology = oo->mold;
+                topology.replace(topology.size() - 5, 5, ".layout.yaml");
+              }
+              std::unique_ptr<io::AtomicFile> trace;
+              if (!oo->trace.empty()) {
+                trace = std::make_unique<io::AtomicFile>(oo->trace);
+                trace->stream() << "algorithm,seed,evaluations,best_feasible\n";
+              }
+              std::cout << "mold,algorithm,seed,evaluations,best_objective,feasible,seconds\n";
+              for (int seed = 1; seed <= oo->seeds; ++seed) {
+                OptimizeTrace t;
+                if (oo->algorithm == "nlopt") {
+                  t = bench_nlopt(problem, scene, mold::load_layout(topology, scene.spec()), oo->evaluations, std::uint64_t(seed));
+                } else {
+                  opt::EsConfig es = config.es;
+                  es.seed = std::uint64_t(seed);
+                  es.evaluations = oo->evaluations;
+                  es.random_search = oo->algorithm == "random";
+                  es.min_step = 0.1 * *std::min_element(scene.spec().drilling.diameters.begin(), scene.spec().drilling.diameters.end());
+                  t = bench_es(problem, es);
+                }
+                std::cout << oo->mold << ',' << oo->algorithm << ',' << seed << ',' << oo->evaluations << ','
+                          << t.best.value << ',' << (t.best.feasible ? 1 : 0) << ',' << t.seconds << std::endl;
+                if (trace)
+                  for (const auto& p : t.points)
+                    trace->stream() << oo->algorithm << ',' << seed << ',' << p.evaluations << ',' << p.best_feasible << '\n';
+              }
+              if (trace) trace->commit();
+              return 0;
+            }
             if (evaluate->parsed()) {
               const mold::Scene scene(mold::load_mold_spec(eo->mold));
               const auto genomes = random_genomes(scene, eo->evaluations, eo->circuits, eo->bores, eo->seed);

@@ -48,6 +48,11 @@ mold::Genome MoldProblem::genome(const opt::Genotype& g) const {
   return out;
 }
 
+std::size_t MoldProblem::dimension(const opt::Genotype& g) const {
+  const std::size_t circuits = std::size_t(g[0]);
+  return g.size() - 1 - 2 * circuits;
+}
+
 opt::Genotype MoldProblem::encode(const mold::Genome& genome) const {
   opt::Genotype g{double(genome.circuits.size())};
   const auto& diameters = spec_.drilling.diameters;
@@ -62,24 +67,37 @@ opt::Genotype MoldProblem::encode(const mold::Genome& genome) const {
 }
 
 mold::Circuit MoldProblem::random_circuit(opt::Rng& rng) const {
-  // Waypoints where cooling matters: around the part, within a few diameters of its box.
+  // A U (or an L between different faces): in from the inlet face, across, out to the outlet
+  // face, in one plane, around the part (within a few diameters of its box). The shape every
+  // drilled circuit is made of, and free of self-crossings.
   const geometry::Box& r = region_;
-  auto inside = [&] {
-    return Vec3(r.min.x() + rng.uniform() * r.size().x(), r.min.y() + rng.uniform() * r.size().y(),
-                r.min.z() + rng.uniform() * r.size().z());
-  };
-  auto on = [&](const std::vector<mold::Face>& faces) {
-    const mold::Face f = faces[std::size_t(rng.below(int(faces.size())))];
-    Vec3 p = inside();
-    p[axis_of(f)] = face_plane(block_, f);
-    return p;
-  };
+  auto within = [&](int k) { return r.min[k] + rng.uniform() * r.size()[k]; };
+  const mold::Face in = spec_.circuits.inlet_faces[std::size_t(rng.below(int(spec_.circuits.inlet_faces.size())))];
+  const mold::Face out = spec_.circuits.outlet_faces[std::size_t(rng.below(int(spec_.circuits.outlet_faces.size())))];
+  const int ki = axis_of(in), ko = axis_of(out);
+  Vec3 p(within(0), within(1), within(2));
   mold::Circuit c;
   c.diameter = spec_.drilling.diameters[std::size_t(rng.below(int(spec_.drilling.diameters.size())))];
-  c.waypoints.push_back(on(spec_.circuits.inlet_faces));
-  const int interior = std::min(2, spec_.circuits.max_waypoints - 2);
-  for (int k = 0; k < interior; ++k) c.waypoints.push_back(inside());
-  c.waypoints.push_back(on(spec_.circuits.outlet_faces));
+  Vec3 inlet = p;
+  inlet[ki] = face_plane(block_, in);
+  c.waypoints.push_back(inlet);
+  c.waypoints.push_back(p);  // straight in
+  if (ki == ko) {
+    // Across along another drillable axis, then straight out through the same face.
+    std::vector<int> axes;
+    for (const mold::Face f : spec_.drilling.allowed_faces)
+      if (axis_of(f) != ki && std::find(axes.begin(), axes.end(), axis_of(f)) == axes.end()) axes.push_back(axis_of(f));
+    const int across = axes.empty() ? (ki + 1) % 3 : axes[std::size_t(rng.below(int(axes.size())))];
+    Vec3 q = p;
+    q[across] = within(across);
+    c.waypoints.push_back(q);
+    q[ko] = face_plane(block_, out);
+    c.waypoints.push_back(q);
+  } else {
+    Vec3 q = p;
+    q[ko] = face_plane(block_, out);
+    c.waypoints.push_back(q);
+  }
   return c;
 }
 

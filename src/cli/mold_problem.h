@@ -22,6 +22,8 @@ class MoldProblem final : public opt::Problem {
   std::string name() const override { return "mold"; }
   opt::Genotype sample(opt::Rng& rng) const override;
   std::size_t step_sizes(const opt::Genotype&) const override { return 1; }
+  // The waypoint coordinates (the genotype minus its structure counts).
+  std::size_t dimension(const opt::Genotype& g) const override;
   std::vector<double> initial_steps(const opt::Genotype&) const override { return {initial_step_}; }
   void mutate(opt::Genotype& g, const std::vector<double>& steps, opt::Rng& rng) const override;
   opt::Genotype recombine(const opt::Genotype& a, const opt::Genotype& b, opt::Rng& rng) const override;

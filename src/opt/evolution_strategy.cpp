@@ -51,6 +51,14 @@ Generation EvolutionStrategy::step(const Generation& prev) const {
   std::vector<Genotype> xs(static_cast<std::size_t>(lambda));
   for (int i = 0; i < lambda; ++i) {
     Rng rng = Rng::for_individual(config_.seed, std::uint64_t(prev.index + 1), std::uint64_t(i));
+    if (config_.random_search) {
+      Individual fresh;
+      fresh.x = problem_.sample(rng);
+      fresh.steps = problem_.initial_steps(fresh.x);
+      xs[std::size_t(i)] = fresh.x;
+      offspring[std::size_t(i)] = std::move(fresh);
+      continue;
+    }
     const Individual& a = prev.population[std::size_t(rng.below(mu))];
     const Individual* b = &a;
     if (config_.recombination && config_.rho >= 2 && mu > 1) {
@@ -69,7 +77,9 @@ Generation EvolutionStrategy::step(const Generation& prev) const {
       for (std::size_t k = 0; k < n; ++k) child.steps[k] = std::sqrt(child.steps[k] * b->steps[k]);
       for (std::size_t k = n; k < n + na; ++k) child.steps[k] = (child.steps[k] + b->steps[k]) / 2;
     }
-    const double tau0 = 1 / std::sqrt(2.0 * double(n)), tau = 1 / std::sqrt(2 * std::sqrt(double(n)));
+    // Learning rates (Schwefel): from the number of parameters the steps act on.
+    const double dim = double(std::max<std::size_t>(1, problem_.dimension(child.x)));
+    const double tau0 = 1 / std::sqrt(2.0 * dim), tau = 1 / std::sqrt(2 * std::sqrt(dim));
     const double global = tau0 * rng.normal();
     for (std::size_t k = 0; k < n; ++k)
       child.steps[k] = std::clamp(child.steps[k] * std::exp(global + (n > 1 ? tau * rng.normal() : 0.0)),

@@ -22,6 +22,8 @@ struct EsConfig {
   long evaluations = 20000;  // budget, including the initial population
   std::uint64_t seed = 1;
   double min_step = 1e-300, max_step = 1e300;
+  // Baseline: offspring are fresh samples (no inheritance); selection as configured.
+  bool random_search = false;
 };
 
 struct Individual {

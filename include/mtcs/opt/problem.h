@@ -28,6 +28,8 @@ class Problem {
   // How many step sizes the ES adapts for this genotype: 1 (one scale) or its length (one
   // per coordinate; what an ill-conditioned separable function needs).
   virtual std::size_t step_sizes(const Genotype& g) const { return g.size(); }
+  // The number of continuous parameters the step sizes act on: it sets the learning rates.
+  virtual std::size_t dimension(const Genotype& g) const { return g.size(); }
   // How many of the strategy parameters after the step sizes are rotation angles (Schwefel's
   // correlated mutations: n(n-1)/2 for n coordinates; 0 for none). Angles are adapted
   // additively (5 degrees), step sizes log-normally.
