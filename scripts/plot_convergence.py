@@ -25,7 +25,7 @@ def quartiles(v):
 def main(d):
     rows = list(csv.DictReader(open(os.path.join(d, "results.csv"))))
     molds = sorted({r["mold"] for r in rows})
-    algs = ["es", "random", "nlopt"]
+    algs = ["es", "random", "nlopt", "nlopt-ref"]
     lines = ["| mold | algorithm | median best | IQR | feasible runs | median seconds |", "|---|---|---:|---|---:|---:|"]
     for m in molds:
         for a in algs:

@@ -213,7 +213,8 @@ Command add_bench_command(CLI::App& app) {
   optimize->add_option("--algorithm", oo->algorithm, "es, random or nlopt")->capture_default_str()
       ->check(CLI::IsMember({"es", "random", "nlopt"}));
   optimize->add_option("--config", oo->config, "run config (ES settings)");
-  optimize->add_option("--topology", oo->topology, "layout whose topology nlopt keeps (default: MOLD.layout.yaml)");
+  optimize->add_option("--topology", oo->topology,
+                       "layout whose topology (and start) nlopt keeps (default: the seed's first random sample)");
   optimize->add_option("--seeds", oo->seeds, "seeds 1..K")->capture_default_str()->check(CLI::Range(1, 1000));
   optimize->add_option("--evaluations", oo->evaluations, "budget per run")->capture_default_str();
   optimize->add_option("--trace", oo->trace, "convergence CSV to write");
@@ -233,11 +234,13 @@ Command add_bench_command(CLI::App& app) {
               const eval::Pipeline pipeline(scene);
               const RunConfig config = oo->config.empty() ? RunConfig{} : load_run_config(oo->config, pipeline.objective_names());
               const MoldProblem problem(pipeline, config.weights, config.mutation);
-              std::string topology = oo->topology;
-              if (topology.empty()) {
-                topology = oo->mold;
-                topology.replace(topology.size() - 5, 5, ".layout.yaml");
-              }
+              // NLopt's fixed topology: a layout file, or by default the seed's first random
+              // sample (the same kind of start the ES gets).
+              auto topology_for = [&](std::uint64_t seed) {
+                if (!oo->topology.empty()) return mold::load_layout(oo->topology, scene.spec());
+                opt::Rng rng = opt::Rng::for_individual(seed, 0, 0);
+                return problem.genome(problem.sample(rng));
+              };
               std::unique_ptr<io::AtomicFile> trace;
               if (!oo->trace.empty()) {
                 trace = std::make_unique<io::AtomicFile>(oo->trace);
@@ -247,7 +250,7 @@ Command add_bench_command(CLI::App& app) {
               for (int seed = 1; seed <= oo->seeds; ++seed) {
                 OptimizeTrace t;
                 if (oo->algorithm == "nlopt") {
-                  t = bench_nlopt(problem, scene, mold::load_layout(topology, scene.spec()), oo->evaluations, std::uint64_t(seed));
+                  t = bench_nlopt(problem, scene, topology_for(std::uint64_t(seed)), oo->evaluations, std::uint64_t(seed));
                 } else {
                   opt::EsConfig es = config.es;
                   es.seed = std::uint64_t(seed);

@@ -151,9 +151,24 @@ void MoldProblem::mutate(opt::Genotype& x, const std::vector<double>& steps, opt
       idx = std::clamp(idx + (rng.uniform() < 0.5 ? -1 : 1), 0, int(d.size()) - 1);
       c.diameter = d[std::size_t(idx)];
     }
-    // Gaussian moves: every waypoint; the ports stay on their faces (repair).
-    for (Vec3& p : w) p += sigma * Vec3(rng.normal(), rng.normal(), rng.normal());
-    repair(c);
+    if (spec_.drilling.axis_parallel) {
+      // Move holes, not points: along each axis, consecutive waypoints that share the
+      // coordinate (the ends of a hole across it) shift together, so aligned holes stay
+      // aligned instead of breaking into zig-zags.
+      for (int k = 0; k < 3; ++k) {
+        std::size_t i = 0;
+        while (i < w.size()) {
+          std::size_t j = i + 1;
+          while (j < w.size() && std::abs(w[j][k] - w[i][k]) <= 1e-9 * (1 + std::abs(w[i][k]))) ++j;
+          const double shift = sigma * rng.normal();
+          for (std::size_t m = i; m < j; ++m) w[m][k] += shift;
+          i = j;
+        }
+      }
+    } else {
+      for (Vec3& p : w) p += sigma * Vec3(rng.normal(), rng.normal(), rng.normal());
+    }
+    repair(c);  // the ports back on their faces, everything inside the block
   }
   x = encode(g);
 }
