@@ -3,4 +3,4 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
-cmake --build build -j2
+cmake --build build -j2 ${MTCS_BUILD_TARGET:+--target "$MTCS_BUILD_TARGET"}

@@ -5,12 +5,13 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-bash scripts/build.sh
+MTCS_BUILD_TARGET=mtcs bash scripts/build.sh  # the binary only: the tests build with scripts/test.sh
 out=runs/demo-plate
 rm -rf "$out"
 echo
 echo "== mtcs optimize molds/plate.yaml (plate 200 x 150 x 3 mm, 4 ejector pins) =="
-./build/mtcs optimize molds/plate.yaml --config configs/es_default.yaml --evaluations 40000 --seed 1 --out "$out"
+./build/mtcs optimize molds/plate.yaml --config configs/es_default.yaml --evaluations 100000 --seed 1 \
+  --polish 2000 --out "$out"
 echo
 echo "== mtcs evaluate: the best layout, re-scored =="
 ./build/mtcs evaluate molds/plate.yaml --layout "$out/best.layout.yaml"

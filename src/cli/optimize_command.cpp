@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "mold_problem.h"
+#include "polish.h"
 #include "mtcs/cli/commands.h"
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/io/atomic_file.h"
@@ -54,6 +55,7 @@ struct Options {
   std::optional<long> evaluations;
   int threads = 0;
   bool quiet = false;
+  int polish = 0;  // COBYLA evaluations after the ES (0: none)
 };
 
 // One status line on a terminal, a log line every few generations otherwise.
@@ -141,9 +143,19 @@ int run_optimize(const Options& o) {
   progress.done();
   const double seconds = seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  // The best layout, for CAD and for re-scoring with mtcs evaluate.
-  const opt::Individual& best = last.population.front();
-  const mold::Genome genome = problem.genome(best.x);
+  // The best layout, for CAD and for re-scoring with mtcs evaluate; optionally polished.
+  opt::Individual best = last.population.front();
+  mold::Genome genome = problem.genome(best.x);
+  nlohmann::ordered_json polish_json;
+  if (o.polish > 0) {
+    const Polished p = polish(problem, scene, genome, o.polish);
+    polish_json = {{"evaluations", p.evaluations}, {"improved", p.improved}, {"before", best.score.value},
+                   {"after", p.score.value}};
+    if (p.improved) genome = p.genome, best.score = p.score;
+    if (!o.quiet)
+      std::cerr << "polish (COBYLA, " << p.evaluations << " evaluations): objective " << best.score.value
+                << (p.improved ? "" : " (no improvement)") << "\n";
+  }
   const mold::Layout layout = mold::decode(scene, genome);
   mold::save_layout((fs::path(out_dir) / "best.layout.yaml").string(), genome);
   mold::save_bores_csv((fs::path(out_dir) / "bores.csv").string(), layout);
@@ -159,6 +171,7 @@ int run_optimize(const Options& o) {
   for (std::size_t k = 0; k < names.size() && k < best.score.objectives.size(); ++k)
     summary["objectives"][names[k]] = best.score.objectives[k];
   summary["violation"] = best.score.violation;
+  if (o.polish > 0) summary["polish"] = polish_json;
   io::AtomicFile file((fs::path(out_dir) / "summary.json").string());
   file.stream() << summary.dump(2) << "\n";
   file.commit();
@@ -192,6 +205,9 @@ Command add_optimize_command(CLI::App& app) {
       ->check(CLI::Range(0, 1024));
   sub->add_flag("--quiet", o->quiet, "no progress output");
   sub->add_option("--resume", o->resume, "continue the run stored in this folder");
+  sub->add_option("--polish", o->polish,
+                  "then refine the best layout's hole coordinates with NLopt's COBYLA for this many evaluations")
+      ->check(CLI::Range(0, 10000000));
   return {sub, [o, sub] {
             if (o->resume.empty() && o->mold.empty())
               throw io::InputError("", 0, 0, "mold", "give a mold spec, or --resume DIR");

@@ -118,6 +118,18 @@ TEST_CASE("mtcs optimize: killed with -9 and resumed, it ends exactly as an unin
   CHECK(sa.str() == sb.str());
 }
 
+TEST_CASE("mtcs optimize --polish refines with COBYLA and stays feasible", "[cli][optimize]") {
+  const fs::path dir = scratch("polish");
+  fs::remove_all(dir);
+  REQUIRE(run_mtcs("optimize " + kMold + " --out " + dir.string() + " --seed 2 --evaluations 4000 --polish 800 --quiet") == 0);
+  std::ifstream in(dir / "summary.json");
+  const auto j = nlohmann::json::parse(in);
+  CHECK(j["feasible"].get<bool>());
+  CHECK(j["polish"]["after"].get<double>() <= j["polish"]["before"].get<double>());
+  CHECK(j["best_objective"].get<double>() == j["polish"]["after"].get<double>());
+  CHECK(j["polish"]["evaluations"].get<int>() <= 801);
+}
+
 TEST_CASE("mtcs optimize refuses to overwrite a run and reports bad configs", "[cli][optimize]") {
   const fs::path dir = scratch("again");
   fs::remove_all(dir);
