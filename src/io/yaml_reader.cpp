@@ -15,6 +15,16 @@ std::string indexed(const std::string& path, std::size_t i) {
   return s;
 }
 
+YAML::Node YamlReader::load() const {
+  try {
+    return YAML::LoadFile(file_);
+  } catch (const YAML::BadFile&) {
+    throw io::InputError(file_, 0, 0, "", "cannot open file");
+  } catch (const YAML::ParserException& e) {
+    throw io::InputError(file_, e.mark.line + 1, e.mark.column + 1, "", "YAML syntax: " + e.msg);
+  }
+}
+
 void YamlReader::fail(const YAML::Node& at, const std::string& path, const std::string& what) const {
   const YAML::Mark m = at.Mark();
   throw io::InputError(file_, m.line + 1, m.column + 1, path, what);

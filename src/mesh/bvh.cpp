@@ -115,12 +115,9 @@ double TriangleBvh::segment_distance(const Vec3& p0, const Vec3& p1, double cap)
   return best;
 }
 
-bool TriangleBvh::contains(const Vec3& p) const {
-  if (tris_.empty() || !bounds().contains(p)) return false;
-  // A direction unlikely to graze edges of CAD meshes (not along any axis or diagonal).
-  const Vec3 d = Vec3(0.5390, 0.6187, 0.5716).normalized();
+template <class Leaf>
+void TriangleBvh::visit_ray(const Vec3& p, const Vec3& d, Leaf&& leaf) const {
   const Vec3 inv = d.cwiseInverse();
-  int crossings = 0;
   int stack[128];
   int top = 0;
   stack[top++] = 0;
@@ -128,36 +125,30 @@ bool TriangleBvh::contains(const Vec3& p) const {
     const Node& node = nodes_[stack[--top]];
     if (!ray_hits_box(p, inv, node.box)) continue;
     if (node.count > 0) {
-      for (int i = node.first; i < node.first + node.count; ++i) crossings += ray_hits(p, d, tris_[i]);
+      for (int i = node.first; i < node.first + node.count; ++i) leaf(tris_[i]);
       continue;
     }
     stack[top++] = node.first;
     stack[top++] = node.first + 1;
   }
+}
+
+bool TriangleBvh::contains(const Vec3& p) const {
+  if (tris_.empty() || !bounds().contains(p)) return false;
+  // A direction unlikely to graze edges of CAD meshes (not along any axis or diagonal).
+  const Vec3 d = Vec3(0.5390, 0.6187, 0.5716).normalized();
+  int crossings = 0;
+  visit_ray(p, d, [&](const std::array<Vec3, 3>& t) { crossings += ray_hits(p, d, t); });
   return crossings % 2 == 1;
 }
 
 std::optional<TriangleBvh::Hit> TriangleBvh::first_hit(const Vec3& p, const Vec3& d) const {
   if (tris_.empty()) return std::nullopt;
-  const Vec3 inv = d.cwiseInverse();
   std::optional<Hit> best;
-  int stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const Node& node = nodes_[stack[--top]];
-    if (!ray_hits_box(p, inv, node.box)) continue;
-    if (node.count > 0) {
-      for (int i = node.first; i < node.first + node.count; ++i) {
-        const double t = ray_hit(p, d, tris_[i]);
-        if (t > 0 && (!best || t < best->t))
-          best = Hit{t, (tris_[i][1] - tris_[i][0]).cross(tris_[i][2] - tris_[i][0]).normalized()};
-      }
-      continue;
-    }
-    stack[top++] = node.first;
-    stack[top++] = node.first + 1;
-  }
+  visit_ray(p, d, [&](const std::array<Vec3, 3>& tri) {
+    const double t = ray_hit(p, d, tri);
+    if (t > 0 && (!best || t < best->t)) best = Hit{t, (tri[1] - tri[0]).cross(tri[2] - tri[0]).normalized()};
+  });
   return best;
 }
 

@@ -18,14 +18,7 @@ using geometry::Vec3;
 
 Genome load_layout(const std::string& path, const MoldSpec& spec) {
   const YamlReader r(path);
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw io::InputError(path, 0, 0, "", "cannot open file");
-  } catch (const YAML::ParserException& e) {
-    throw io::InputError(path, e.mark.line + 1, e.mark.column + 1, "", "YAML syntax: " + e.msg);
-  }
+  const YAML::Node root = r.load();
   r.expect_map(root, "", {"circuits"});
   if (!root["circuits"]) r.fail(root, "circuits", "a layout needs a list of circuits");
   const YAML::Node& cs = root["circuits"];

@@ -214,14 +214,7 @@ Penalty parse_penalty(const YamlReader& r, const YAML::Node& n) {
 
 MoldSpec load_mold_spec(const std::string& path) {
   const YamlReader r(path);
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw io::InputError(path, 0, 0, "", "cannot open file");
-  } catch (const YAML::ParserException& e) {
-    throw io::InputError(path, e.mark.line + 1, e.mark.column + 1, "", "YAML syntax: " + e.msg);
-  }
+  const YAML::Node root = r.load();
   r.expect_map(root, "", {"units", "block", "cavity", "keep_outs", "drilling", "clearances", "circuits",
                           "objectives", "penalty"});
   MoldSpec s;

@@ -23,6 +23,9 @@ class YamlReader {
 
   const std::string& file() const { return file_; }
 
+  // Parses the reader's file; a missing file or a syntax error is an InputError.
+  YAML::Node load() const;
+
   [[noreturn]] void fail(const YAML::Node& at, const std::string& path, const std::string& what) const;
 
   // A map whose keys are all in `allowed`, each at most once.

@@ -41,6 +41,9 @@ class TriangleBvh {
     int count;  // leaf: number of triangles; inner: 0
   };
   void build(int node, int first, int count, std::vector<Vec3>& centroids);
+  // Calls leaf(triangle) for every triangle in a leaf whose box the ray p + t d meets.
+  template <class Leaf>
+  void visit_ray(const Vec3& p, const Vec3& d, Leaf&& leaf) const;
 
   std::vector<Node> nodes_;
   std::vector<std::array<Vec3, 3>> tris_;
