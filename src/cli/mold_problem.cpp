@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace mtcs::cli {
 
@@ -192,7 +193,17 @@ opt::Genotype MoldProblem::recombine(const opt::Genotype& a, const opt::Genotype
 opt::Score MoldProblem::evaluate(const opt::Genotype& g) const {
   const eval::Evaluation e = pipeline_.evaluate(genome(g));
   const eval::Fitness f = eval::fitness(e, spec_, weights_);
-  return {e.objectives, e.violation, e.feasible(), f.value};
+  // "kind element element distance/margin; ..." for the run store.
+  std::string detail;
+  for (const auto& v : e.violations) {
+    if (!detail.empty()) detail += "; ";
+    detail += v.kind;
+    for (const auto& el : v.elements) detail += ' ' + el;
+    char num[64];
+    std::snprintf(num, sizeof num, " %.6g/%.6g", v.distance, v.margin);
+    detail += num;
+  }
+  return {e.objectives, e.violation, e.feasible(), f.value, std::move(detail)};
 }
 
 bool MoldProblem::better(const opt::Score& a, const opt::Score& b) const {

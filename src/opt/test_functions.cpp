@@ -57,7 +57,7 @@ class TestFunction final : public Problem {
       for (std::size_t k = 0; k + 1 < n; ++k)
         f += 100 * std::pow(x[k + 1] - x[k] * x[k], 2) + std::pow(1 - x[k], 2);
     }
-    return {{f}, 0, true, f};
+    return {{f}, 0, true, f, {}};
   }
 
  private:

@@ -93,7 +93,8 @@ RunStore RunStore::create(const std::string& path, const std::map<std::string, s
        "CREATE TABLE generation(idx INTEGER PRIMARY KEY, evaluations INTEGER, best REAL,"
        "  feasible_share REAL, seconds REAL);"
        "CREATE TABLE individual(generation INTEGER, rank INTEGER, genotype BLOB, steps BLOB,"
-       "  objectives BLOB, violation REAL, feasible INTEGER, value REAL, PRIMARY KEY(generation, rank));"
+       "  objectives BLOB, violation REAL, feasible INTEGER, value REAL, violations TEXT,"
+       "  PRIMARY KEY(generation, rank));"
        "COMMIT;");
   Statement ins(s.db_, "INSERT INTO meta(key, value) VALUES(?, ?)");
   for (const auto& [k, v] : meta) {
@@ -120,13 +121,14 @@ void RunStore::save(const opt::Generation& g, double seconds) {
   try {
     int feasible = 0;
     Statement ins(db_,
-                  "INSERT INTO individual(generation, rank, genotype, steps, objectives, violation, feasible, value)"
-                  " VALUES(?, ?, ?, ?, ?, ?, ?, ?)");
+                  "INSERT INTO individual(generation, rank, genotype, steps, objectives, violation, feasible, value,"
+                  " violations) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?)");
     for (std::size_t r = 0; r < g.population.size(); ++r) {
       const auto& ind = g.population[r];
       feasible += ind.score.feasible ? 1 : 0;
       ins.bind(1, g.index).bind(2, int(r)).bind(3, ind.x).bind(4, ind.steps).bind(5, ind.score.objectives);
-      ins.bind(6, ind.score.violation).bind(7, ind.score.feasible ? 1 : 0).bind(8, ind.score.value).step();
+      ins.bind(6, ind.score.violation).bind(7, ind.score.feasible ? 1 : 0).bind(8, ind.score.value);
+      ins.bind(9, ind.score.detail).step();
       ins.reset();
     }
     Statement gen(db_, "INSERT INTO generation(idx, evaluations, best, feasible_share, seconds) VALUES(?, ?, ?, ?, ?)");
@@ -148,14 +150,14 @@ std::optional<opt::Generation> RunStore::generation(int index) const {
   out.index = index;
   out.evaluations = g.integer(0);
   Statement q(db_,
-              "SELECT genotype, steps, objectives, violation, feasible, value FROM individual"
+              "SELECT genotype, steps, objectives, violation, feasible, value, violations FROM individual"
               " WHERE generation = ? ORDER BY rank");
   q.bind(1, index);
   while (q.step()) {
     opt::Individual ind;
     ind.x = q.doubles(0);
     ind.steps = q.doubles(1);
-    ind.score = {q.doubles(2), q.real(3), q.integer(4) != 0, q.real(5)};
+    ind.score = {q.doubles(2), q.real(3), q.integer(4) != 0, q.real(5), q.text(6)};
     out.population.push_back(std::move(ind));
   }
   return out;

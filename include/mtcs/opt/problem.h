@@ -17,6 +17,7 @@ struct Score {
   double violation = 0;  // 0 when feasible
   bool feasible = true;
   double value = 0;      // the scalarised objective (weighted sum + penalty term)
+  std::string detail;    // the problem's words for what is violated (stored, not compared)
 };
 
 class Problem {
