@@ -37,8 +37,11 @@ nlohmann::ordered_json to_json(const eval::Evaluation& e, const eval::Pipeline& 
 }
 
 void print_text(const eval::Evaluation& e, const eval::Pipeline& pipeline, const mold::Layout& layout) {
-  std::cout << "bores " << layout.bores.size() << ", plugs " << layout.plugs << ", designed junctions "
-            << layout.junctions.size() << ", surface samples " << pipeline.surface_samples() << "\n\nobjectives\n";
+  double dead = 0;
+  for (const auto& b : layout.bores) dead += b.dead_end;
+  std::cout << "bores " << layout.bores.size() << ", plugs " << layout.plugs << " (dead ends " << dead
+            << " mm), designed junctions " << layout.junctions.size() << ", surface samples "
+            << pipeline.surface_samples() << "\n\nobjectives\n";
   const auto names = pipeline.objective_names();
   for (std::size_t k = 0; k < names.size(); ++k)
     std::cout << "  " << std::left << std::setw(16) << names[k] << std::setprecision(10) << e.objectives[k] << "\n";

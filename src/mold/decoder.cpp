@@ -29,7 +29,7 @@ double off_faces(const Box& b, const Vec3& p, const std::vector<Face>& faces) {
 }
 
 struct Candidate {
-  Vec3 entry, far_end;
+  Vec3 entry, far_end, near_flow;
   Face face;
   double angle_deg;
   bool allowed, ok, plugged;
@@ -114,6 +114,7 @@ Layout decode(const Scene& scene, const Genome& genome) {
         const BlockExit e = scene.exit_block(from, dir);
         Candidate k;
         k.entry = e.hit ? e.point : from;
+        k.near_flow = from;
         k.far_end = far_end;
         k.face = face_of_normal(e.normal);
         k.angle_deg = std::acos(std::clamp(std::abs(dir.dot(e.normal.normalized())), 0.0, 1.0)) * 180 / kPi;
@@ -136,6 +137,7 @@ Layout decode(const Scene& scene, const Genome& genome) {
       b.entry_angle_deg = k.angle_deg;
       b.entry_allowed = k.allowed;
       b.plugged = k.plugged;
+      b.dead_end = k.plugged ? (k.near_flow - k.entry).norm() : 0.0;
       b.drilled_length = k.length;
       b.diameter = D;
       b.circuit = int(c);

@@ -62,11 +62,11 @@ void save_layout(const std::string& path, const Genome& genome) {
 void save_bores_csv(const std::string& path, const Layout& layout) {
   io::AtomicFile file(path);
   auto& out = file.stream();
-  out << "name,circuit,segment,p0x,p0y,p0z,p1x,p1y,p1z,diameter,entry_face,plugged\n";
+  out << "name,circuit,segment,p0x,p0y,p0z,p1x,p1y,p1z,diameter,entry_face,plugged,dead_end\n";
   for (const Bore& b : layout.bores) {
     out << b.name() << ',' << b.circuit << ',' << b.segment << ',' << b.hole.p0.x() << ',' << b.hole.p0.y() << ','
         << b.hole.p0.z() << ',' << b.hole.p1.x() << ',' << b.hole.p1.y() << ',' << b.hole.p1.z() << ','
-        << b.diameter << ',' << to_string(b.entry_face) << ',' << (b.plugged ? 1 : 0) << '\n';
+        << b.diameter << ',' << to_string(b.entry_face) << ',' << (b.plugged ? 1 : 0) << ',' << b.dead_end << '\n';
   }
   file.commit();
 }

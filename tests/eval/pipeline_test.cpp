@@ -150,6 +150,8 @@ TEST_CASE("pipeline: decoder routes axis-parallel holes, plugs side entries", "[
   CHECK(layout.bores[1].plugged);
   CHECK(layout.bores[1].entry_face == mold::Face::NegX);
   CHECK(layout.bores[1].hole.p0.x() == 0);
+  CHECK(layout.bores[1].dead_end == Approx(70));  // from the plug at x = 0 to the junction at x = 70
+  CHECK(layout.bores[0].dead_end == 0);
   // Through the drill point past the far junction: 0.5 D cot(59 deg).
   CHECK(layout.bores[1].hole.p1.x() == Approx(110 + 4 / std::tan(59 * M_PI / 180)));
   for (const auto& b : layout.bores) {

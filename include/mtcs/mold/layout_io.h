@@ -20,7 +20,8 @@ namespace mtcs::mold {
 // spec's drilling.diameters.
 Genome load_layout(const std::string& path, const MoldSpec& spec);
 void save_layout(const std::string& path, const Genome& genome);
-// bores.csv: name,circuit,segment,p0x,p0y,p0z,p1x,p1y,p1z,diameter,entry_face,plugged
+// bores.csv: name,circuit,segment,p0x,p0y,p0z,p1x,p1y,p1z,diameter,entry_face,plugged,dead_end
+// (p0 the entry on the block face, p1 the far end with the drill point; dead_end in mm)
 void save_bores_csv(const std::string& path, const Layout& layout);
 // bores.stl: every hole as a closed 24-gon prism.
 void save_bores_stl(const std::string& path, const Layout& layout);
