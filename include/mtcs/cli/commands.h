@@ -20,5 +20,6 @@ Command add_distance_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_evaluate_command(CLI::App& app);
 Command add_optimize_command(CLI::App& app);
+Command add_hypervolume_command(CLI::App& app);
 
 }  // namespace mtcs::cli

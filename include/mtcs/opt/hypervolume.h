@@ -1,0 +1,20 @@
+#pragma once
+// Hypervolume of a set of points (minimisation) against a reference point, and every point's
+// exclusive contribution. d = 2: one sort and a sweep; d = 3: the dimension sweep over a 2-D
+// staircase, O(n log n); d >= 4: WFG (While, Bradstreet & Barone 2012), slicing down to the 3-D
+// sweep. Points that do not strictly dominate the reference point add nothing.
+
+#include <vector>
+
+namespace mtcs::opt {
+
+using Point = std::vector<double>;
+
+double hypervolume(const std::vector<Point>& points, const Point& ref);
+
+// Exclusive contributions HV(S) - HV(S \ {p}), in input order: 0 for a point weakly dominated by
+// another (duplicates included) or on the reference boundary. Computed as the volume of p's box
+// minus the hypervolume of the limit set {max(p, q)} inside it.
+std::vector<double> contributions(const std::vector<Point>& points, const Point& ref);
+
+}  // namespace mtcs::opt

@@ -1,0 +1,143 @@
+// Hypervolume against the exact values of shared/cases/hv_fronts (42 fronts, d = 2..5), and
+// contributions against an independent exact oracle: HV(S) - HV(S \ {p}) over the grid of all
+// coordinates, summed in CGAL's exact rationals (Gmpq).
+
+#include <CGAL/Gmpq.h>
+
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <map>
+#include <random>
+#include <sstream>
+
+#include "mtcs/opt/hypervolume.h"
+
+using namespace mtcs::opt;
+
+namespace {
+
+struct Front {
+  std::vector<Point> points;
+  Point ref;
+};
+
+Front read(const std::string& path) {
+  std::ifstream in(path);
+  Front f;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream ss(line);
+    std::string first;
+    if (!(ss >> first)) continue;
+    Point p;
+    if (first == "#") {
+      ss >> first;  // "ref"
+      for (double v; ss >> v;) p.push_back(v);
+      f.ref = p;
+      continue;
+    }
+    ss.clear();
+    ss.str(line);
+    for (double v; ss >> v;) p.push_back(v);
+    f.points.push_back(p);
+  }
+  return f;
+}
+
+// Exact hypervolume: every cell of the grid spanned by the coordinates, counted once if some
+// point dominates it, volumes summed as exact rationals. Small sets only.
+CGAL::Gmpq exact_hv(const std::vector<Point>& pts, const Point& ref) {
+  const std::size_t d = ref.size();
+  std::vector<std::vector<double>> axes(d);
+  for (std::size_t k = 0; k < d; ++k) {
+    axes[k].push_back(ref[k]);
+    for (const Point& p : pts)
+      if (p[k] < ref[k]) axes[k].push_back(p[k]);
+    std::sort(axes[k].begin(), axes[k].end());
+    axes[k].erase(std::unique(axes[k].begin(), axes[k].end()), axes[k].end());
+  }
+  CGAL::Gmpq total = 0;
+  std::vector<std::size_t> cell(d, 0);
+  for (;;) {
+    bool valid = true;
+    for (std::size_t k = 0; k < d; ++k) valid = valid && cell[k] + 1 < axes[k].size();
+    if (valid) {
+      bool covered = false;
+      for (const Point& p : pts) {
+        bool dom = true;
+        for (std::size_t k = 0; k < d && dom; ++k) dom = p[k] <= axes[k][cell[k]] && p[k] < ref[k];
+        covered = covered || dom;
+      }
+      if (covered) {
+        CGAL::Gmpq v = 1;
+        for (std::size_t k = 0; k < d; ++k) v *= CGAL::Gmpq(axes[k][cell[k] + 1]) - CGAL::Gmpq(axes[k][cell[k]]);
+        total += v;
+      }
+    }
+    std::size_t k = 0;
+    while (k < d && ++cell[k] >= axes[k].size()) cell[k++] = 0;
+    if (k == d) break;
+  }
+  return total;
+}
+
+}  // namespace
+
+TEST_CASE("hypervolume: the 42 certified fronts to 1e-12 relative", "[opt][hypervolume]") {
+  std::ifstream expected(MTCS_TEST_DATA "/hv_fronts/expected.csv");
+  std::string line;
+  std::getline(expected, line);
+  int fronts = 0;
+  while (std::getline(expected, line)) {
+    std::istringstream ss(line);
+    std::string name, d, n, hv;
+    std::getline(ss, name, ','), std::getline(ss, d, ','), std::getline(ss, n, ','), std::getline(ss, hv, ',');
+    const Front f = read(MTCS_TEST_DATA "/hv_fronts/" + name + ".txt");
+    const double want = std::stod(hv);
+    INFO(name);
+    CHECK(std::abs(hypervolume(f.points, f.ref) - want) <= 1e-12 * want);
+    ++fronts;
+  }
+  CHECK(fronts == 42);
+}
+
+TEST_CASE("hypervolume: contributions equal the exact leave-one-out differences", "[opt][hypervolume]") {
+  std::mt19937_64 rng(12);
+  std::uniform_int_distribution<int> coord(0, 20);
+  for (std::size_t d = 2; d <= 5; ++d) {
+    for (int trial = 0; trial < 12; ++trial) {
+      // Coarse coordinates make ties, duplicates and points on the reference boundary common.
+      const int n = d <= 3 ? 9 : 6;
+      std::vector<Point> pts(static_cast<std::size_t>(n), Point(d));
+      for (auto& p : pts)
+        for (double& v : p) v = coord(rng) / 20.0;
+      if (trial % 3 == 0) pts[1] = pts[0];  // a duplicate
+      const Point ref(d, 1.0);
+      const CGAL::Gmpq all = exact_hv(pts, ref);
+      CHECK(std::abs(hypervolume(pts, ref) - CGAL::to_double(all)) <= 1e-14);
+      const auto c = contributions(pts, ref);
+      for (std::size_t i = 0; i < pts.size(); ++i) {
+        std::vector<Point> rest = pts;
+        rest.erase(rest.begin() + long(i));
+        const double exact = CGAL::to_double(all - exact_hv(rest, ref));
+        INFO("d " << d << " trial " << trial << " point " << i);
+        CHECK(std::abs(c[i] - exact) <= 1e-14);
+        if (exact == 0) CHECK(c[i] == 0);
+      }
+      if (trial % 3 == 0) CHECK((c[0] == 0 && c[1] == 0));
+    }
+  }
+}
+
+TEST_CASE("hypervolume: reference boundary, dominated points, a tiny contribution", "[opt][hypervolume]") {
+  const Point ref{1, 1};
+  // On the boundary: no volume, no contribution, no effect on the others.
+  CHECK(hypervolume({{0.5, 1.0}}, ref) == 0);
+  CHECK(contributions({{0.5, 1.0}, {0.5, 0.5}}, ref) == std::vector<double>{0, 0.25});
+  // Dominated: nothing.
+  CHECK(contributions({{0.2, 0.2}, {0.4, 0.4}}, ref)[1] == 0);
+  // A contribution of 1e-12 next to ones of about 0.1 is resolved.
+  const double e = 1e-6;
+  const auto c = contributions({{0.2, 0.6}, {0.6 - e, 0.6 - e}, {0.6, 0.2}}, ref);
+  CHECK(c[1] == Approx(e * e).epsilon(1e-3));
+}
