@@ -14,6 +14,7 @@
 #include "mtcs/io/atomic_file.h"
 
 #include "bench_evaluate.h"
+#include "bench_hypervolume.h"
 #include "bench_optimize.h"
 #include "mtcs/mold/layout_io.h"
 #include "run_config.h"
@@ -219,6 +220,22 @@ Command add_bench_command(CLI::App& app) {
   optimize->add_option("--evaluations", oo->evaluations, "budget per run")->capture_default_str();
   optimize->add_option("--trace", oo->trace, "convergence CSV to write");
 
+  CLI::App* hv = bench->add_subcommand(
+      "hypervolume",
+      "Hypervolume and all contributions, ours against pagmo 2.18 in the same run, on every front\n"
+      "of a folder (one point per line, '# ref ...'; expected.csv with exact values if present).\n"
+      "Example: mtcs bench hypervolume --fronts tests/data/hv_fronts");
+  struct HvOptions {
+    std::string fronts;
+    int repeat = 3;
+    std::size_t max_contribution_n = 1000;
+  };
+  auto ho = std::make_shared<HvOptions>();
+  hv->add_option("--fronts", ho->fronts, "folder of fronts")->required()->check(CLI::ExistingDirectory);
+  hv->add_option("--repeat", ho->repeat, "timed repetitions (median)")->capture_default_str();
+  hv->add_option("--max-contribution-n", ho->max_contribution_n, "largest front whose contributions are timed")
+      ->capture_default_str();
+
   for (CLI::App* s : {dist, sweep, stiff}) {
     s->add_option("--pairs", opt->pairs, "CSV of cylinder pairs with dist_lo, dist_hi")->required()->check(CLI::ExistingFile);
     s->add_option("--repeat", opt->repeat, "queries per timed batch")->capture_default_str()->check(CLI::Range(1, 1000000));
@@ -228,7 +245,8 @@ Command add_bench_command(CLI::App& app) {
   stiff->add_option("--tolerance", opt->tolerance, "kernel tolerance")->capture_default_str();
   sweep->add_option("--tolerances", opt->sweep, "tolerances to sweep")->delimiter(',');
 
-  return {bench, [opt, dist, sweep, stiff, evaluate, eo, optimize, oo] {
+  return {bench, [opt, dist, sweep, stiff, evaluate, eo, optimize, oo, hv, ho] {
+            if (hv->parsed()) return bench_hypervolume(ho->fronts, ho->repeat, ho->max_contribution_n);
             if (optimize->parsed()) {
               const mold::Scene scene(mold::load_mold_spec(oo->mold));
               const eval::Pipeline pipeline(scene);

@@ -129,7 +129,46 @@ double hv_any(std::vector<Point> pts, const Point& ref) {
 
 double hypervolume(const std::vector<Point>& points, const Point& ref) { return hv_any(inside(points, ref), ref); }
 
+namespace {
+
+// 2-D, O(n log n) and without cancellation: a staircase point p owns the rectangle between its
+// neighbours; the points it alone dominates lie in that rectangle's x-range, and p's exclusive
+// area is the part of the rectangle below their own staircase, summed as positive terms.
+std::vector<double> contributions2(const std::vector<Point>& points, const Point& ref) {
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (points[i][0] < ref[0] && points[i][1] < ref[1]) order.push_back(i);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return points[a][0] != points[b][0] ? points[a][0] < points[b][0] : points[a][1] < points[b][1];
+  });
+  std::vector<std::size_t> stair;  // positions in `order`
+  double best_y = ref[1];
+  for (std::size_t k = 0; k < order.size(); ++k)
+    if (points[order[k]][1] < best_y) stair.push_back(k), best_y = points[order[k]][1];
+  std::vector<double> out(points.size(), 0.0);
+  for (std::size_t j = 0; j < stair.size(); ++j) {
+    const std::size_t pos = stair[j];
+    const Point& p = points[order[pos]];
+    if (pos + 1 < order.size() && points[order[pos + 1]] == p) continue;  // a duplicate: both 0
+    const std::size_t end = j + 1 < stair.size() ? stair[j + 1] : order.size();
+    const double right = j + 1 < stair.size() ? points[order[end]][0] : ref[0];
+    const double top = j > 0 ? points[order[stair[j - 1]]][1] : ref[1];
+    double area = 0, x = p[0], h = top;
+    for (std::size_t k = pos + 1; k < end; ++k) {
+      const Point& q = points[order[k]];
+      if (q[1] >= h) continue;  // above the secondary staircase: covers nothing new
+      area += (q[0] - x) * (h - p[1]);
+      x = q[0], h = q[1];
+    }
+    out[order[pos]] = area + (right - x) * (h - p[1]);
+  }
+  return out;
+}
+
+}  // namespace
+
 std::vector<double> contributions(const std::vector<Point>& points, const Point& ref) {
+  if (ref.size() == 2) return contributions2(points, ref);
   const std::vector<Point> in = inside(points, ref);
   std::vector<double> out(points.size(), 0.0);
   for (std::size_t i = 0; i < points.size(); ++i) {

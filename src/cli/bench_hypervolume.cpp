@@ -1,0 +1,110 @@
+// mtcs bench hypervolume: ours against pagmo 2.18 in the same run, on the fronts of a folder
+// (shared/cases/hv_fronts format): hypervolume and all contributions, time and agreement.
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "bench_hypervolume.h"
+#include "mtcs/opt/hypervolume.h"
+#include "pagmo_peer.h"
+
+namespace mtcs::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Front {
+  std::vector<std::vector<double>> points;
+  std::vector<double> ref;
+};
+
+Front read(const fs::path& path) {
+  std::ifstream in(path);
+  Front f;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream ss(line);
+    std::string first;
+    if (!(ss >> first)) continue;
+    std::vector<double> p;
+    if (first == "#") {
+      ss >> first;
+      for (double v; ss >> v;) p.push_back(v);
+      f.ref = p;
+      continue;
+    }
+    ss.clear();
+    ss.str(line);
+    for (double v; ss >> v;) p.push_back(v);
+    f.points.push_back(p);
+  }
+  return f;
+}
+
+// Median seconds of `repeat` calls (at least one).
+template <class F>
+double timed(int repeat, F&& f) {
+  std::vector<double> t;
+  for (int i = 0; i < std::max(1, repeat); ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    f();
+    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::nth_element(t.begin(), t.begin() + long(t.size() / 2), t.end());
+  return t[t.size() / 2];
+}
+
+}  // namespace
+
+int bench_hypervolume(const std::string& dir, int repeat, std::size_t max_contribution_n) {
+  std::map<std::string, double> expected;
+  {
+    std::ifstream in(fs::path(dir) / "expected.csv");
+    std::string line;
+    std::getline(in, line);
+    while (std::getline(in, line)) {
+      std::istringstream ss(line);
+      std::string name, d, n, hv;
+      std::getline(ss, name, ','), std::getline(ss, d, ','), std::getline(ss, n, ','), std::getline(ss, hv, ',');
+      expected[name] = std::stod(hv);
+    }
+  }
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ".txt") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  std::cout << "front,d,n,ours_hv_s,pagmo_hv_s,hv_speedup,ours_err,pagmo_err,ours_contrib_s,pagmo_contrib_s,"
+               "contrib_speedup,contrib_max_rel_diff\n";
+  std::cout.precision(4);
+  for (const auto& path : files) {
+    const Front f = read(path);
+    const std::string name = path.stem().string();
+    double ours = 0, theirs = 0;
+    const double t_ours = timed(repeat, [&] { ours = opt::hypervolume(f.points, f.ref); });
+    const double t_theirs = timed(repeat, [&] { theirs = pagmo_hypervolume(f.points, f.ref); });
+    const double want = expected.count(name) ? expected[name] : ours;
+    std::cout << name << ',' << f.ref.size() << ',' << f.points.size() << ',' << t_ours << ',' << t_theirs << ','
+              << t_theirs / t_ours << ',' << std::abs(ours - want) / want << ',' << std::abs(theirs - want) / want;
+    if (f.points.size() <= max_contribution_n) {
+      std::vector<double> co, cp;
+      const double tc_ours = timed(1, [&] { co = opt::contributions(f.points, f.ref); });
+      const double tc_theirs = timed(1, [&] { cp = pagmo_contributions(f.points, f.ref); });
+      double worst = 0;
+      for (std::size_t i = 0; i < co.size(); ++i)
+        worst = std::max(worst, std::abs(co[i] - cp[i]) / std::max(1e-300, std::max(std::abs(co[i]), std::abs(cp[i]))));
+      std::cout << ',' << tc_ours << ',' << tc_theirs << ',' << tc_theirs / tc_ours << ',' << worst;
+    } else {
+      std::cout << ",,,,";
+    }
+    std::cout << '\n';
+  }
+  return 0;
+}
+
+}  // namespace mtcs::cli
