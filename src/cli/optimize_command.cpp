@@ -24,6 +24,8 @@
 #include "mtcs/io/input_error.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
+#include "mtcs/opt/benchmark_problems.h"
+#include "mtcs/opt/sms_emoa.h"
 #include "mtcs/store/run_store.h"
 #include "run_config.h"
 
@@ -56,7 +58,55 @@ struct Options {
   int threads = 0;
   bool quiet = false;
   int polish = 0;  // COBYLA evaluations after the ES (0: none)
+  std::string problem;    // a built-in test problem instead of a mold
+  std::string algorithm = "es";
+  std::vector<double> ref;
+  bool json = false;
 };
+
+// A built-in multi-objective test problem with SMS-EMOA: prints a JSON summary, and stores the
+// population every mu steps when --out is given.
+int run_test_problem(const Options& o) {
+  if (o.algorithm != "sms-emoa") throw io::InputError("", 0, 0, "algorithm", "test problems run with --algorithm sms-emoa");
+  std::unique_ptr<opt::Problem> problem;
+  try {
+    problem = opt::make_benchmark_problem(o.problem);
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError("", 0, 0, "problem", e.what());
+  }
+  opt::SmsConfig c;
+  c.seed = o.seed.value_or(1);
+  c.evaluations = o.evaluations.value_or(20000);
+  c.ref = o.ref.empty() ? std::vector<double>(std::size_t(opt::objective_count(o.problem)), 1.1) : o.ref;
+  if (int(c.ref.size()) != opt::objective_count(o.problem))
+    throw io::InputError("", 0, 0, "ref", "needs " + std::to_string(opt::objective_count(o.problem)) + " values");
+  std::optional<store::RunStore> db;
+  if (!o.out.empty() && o.out != "mtcs-run") {
+    fs::create_directories(o.out);
+    db = store::RunStore::create((fs::path(o.out) / "run.sqlite").string(),
+                                 {{"problem", o.problem}, {"algorithm", "sms-emoa"}, {"seed", std::to_string(c.seed)},
+                                  {"program", "mtcs 0.1.0"}});
+  }
+  const opt::SmsEmoa sms(*problem, c);
+  const auto t0 = std::chrono::steady_clock::now();
+  const opt::Generation last = opt::run(sms, nullptr, [&](const opt::Generation& g) {
+    if (db && g.index % c.mu == 0) db->save(g, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const auto front = opt::SmsEmoa::front(last);
+  nlohmann::ordered_json j;
+  j["problem"] = o.problem;
+  j["algorithm"] = "sms-emoa";
+  j["seed"] = c.seed;
+  j["evaluations"] = last.evaluations;
+  j["hypervolume"] = opt::hypervolume(front, c.ref);
+  j["reference_point"] = c.ref;
+  j["front_size"] = front.size();
+  j["seconds"] = seconds;
+  if (o.json) std::cout << j.dump() << "\n";
+  else std::cout << j.dump(2) << "\n";
+  return 0;
+}
 
 // One status line on a terminal, a log line every few generations otherwise.
 class Progress {
@@ -208,7 +258,16 @@ Command add_optimize_command(CLI::App& app) {
   sub->add_option("--polish", o->polish,
                   "then refine the best layout's hole coordinates with NLopt's COBYLA for this many evaluations")
       ->check(CLI::Range(0, 10000000));
+  sub->add_option("--problem", o->problem, "a built-in test problem instead of a mold: zdt1-4, zdt6, dtlz1-7");
+  sub->add_option("--algorithm", o->algorithm, "es (molds) or sms-emoa (test problems)")->capture_default_str()
+      ->check(CLI::IsMember({"es", "sms-emoa"}));
+  sub->add_option("--ref", o->ref, "reference point of the reported hypervolume, r1,r2,... (default 1.1 each)")
+      ->delimiter(',');
+  sub->add_flag("--json", o->json, "test problems: the summary as one line of JSON");
   return {sub, [o, sub] {
+            if (!o->problem.empty()) return run_test_problem(*o);
+            if (o->algorithm != "es")
+              throw io::InputError(o->mold, 0, 0, "algorithm", "molds run with the ES for now (SMS-EMOA on molds is next)");
             if (o->resume.empty() && o->mold.empty())
               throw io::InputError("", 0, 0, "mold", "give a mold spec, or --resume DIR");
             (void)sub;

@@ -1,0 +1,46 @@
+#pragma once
+// SMS-EMOA (Beume, Naujoks & Emmerich 2007): a steady-state (mu + 1) algorithm. Each step makes
+// one offspring (recombination of two random parents, then mutation) and removes one member of
+// the worst non-dominated front: either the one dominated by most others, then by least
+// exclusive hypervolume ("domcount-then-hv", the paper's rule for fronts after the first), or by
+// least contribution alone ("hv-only"). Infeasible points come after every feasible one,
+// ordered by violation (constrained domination). Contributions use the given reference point.
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "mtcs/opt/evolution_strategy.h"
+#include "mtcs/opt/hypervolume.h"
+
+namespace mtcs::opt {
+
+struct SmsConfig {
+  int mu = 100;
+  long evaluations = 20000;
+  std::uint64_t seed = 1;
+  Point ref;                     // reference point for the contributions (and the reported HV)
+  bool domcount_then_hv = true;  // false: least contribution only
+};
+
+class SmsEmoa {
+ public:
+  SmsEmoa(const Problem& problem, SmsConfig config);
+
+  Generation initial() const;
+  // One step: one offspring, one removal. The generation index counts steps.
+  Generation step(const Generation& previous) const;
+  bool done(const Generation& g) const { return g.evaluations >= config_.evaluations; }
+  const SmsConfig& config() const { return config_; }
+
+  // The feasible non-dominated points of a population, and their hypervolume.
+  static std::vector<Point> front(const Generation& g);
+
+ private:
+  const Problem& problem_;
+  SmsConfig config_;
+};
+
+Generation run(const SmsEmoa& algorithm, const Generation* start, const std::function<void(const Generation&)>& on_step);
+
+}  // namespace mtcs::opt

@@ -1,0 +1,136 @@
+#include "mtcs/opt/sms_emoa.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace mtcs::opt {
+namespace {
+
+// a constrained-dominates b: feasible beats infeasible, less violation beats more, then Pareto.
+bool dominates(const Score& a, const Score& b) {
+  if (a.feasible != b.feasible) return a.feasible;
+  if (!a.feasible) return a.violation < b.violation;
+  bool strictly = false;
+  for (std::size_t k = 0; k < a.objectives.size(); ++k) {
+    if (a.objectives[k] > b.objectives[k]) return false;
+    strictly = strictly || a.objectives[k] < b.objectives[k];
+  }
+  return strictly;
+}
+
+// Indices of the worst non-dominated front (fast non-dominated sorting, Deb et al.).
+std::vector<std::size_t> worst_front(const std::vector<Individual>& pop, bool* is_first) {
+  const std::size_t n = pop.size();
+  std::vector<int> count(n, 0);
+  std::vector<std::vector<std::size_t>> beats(n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j)
+      if (i != j && dominates(pop[i].score, pop[j].score)) beats[i].push_back(j), ++count[j];
+  std::vector<std::size_t> current;
+  for (std::size_t i = 0; i < n; ++i)
+    if (count[i] == 0) current.push_back(i);
+  *is_first = true;
+  for (;;) {
+    std::vector<std::size_t> next;
+    for (const std::size_t i : current)
+      for (const std::size_t j : beats[i])
+        if (--count[j] == 0) next.push_back(j);
+    if (next.empty()) return current;
+    current = std::move(next);
+    *is_first = false;
+  }
+}
+
+}  // namespace
+
+SmsEmoa::SmsEmoa(const Problem& problem, SmsConfig config) : problem_(problem), config_(std::move(config)) {}
+
+Generation SmsEmoa::initial() const {
+  Generation g;
+  std::vector<Genotype> xs;
+  for (int i = 0; i < config_.mu; ++i) {
+    Rng rng = Rng::for_individual(config_.seed, 0, std::uint64_t(i));
+    xs.push_back(problem_.sample(rng));
+  }
+  const auto scores = EvolutionStrategy::evaluate_all(problem_, xs);
+  for (int i = 0; i < config_.mu; ++i) g.population.push_back({xs[std::size_t(i)], problem_.initial_steps(xs[std::size_t(i)]), scores[std::size_t(i)]});
+  g.evaluations = config_.mu;
+  return g;
+}
+
+Generation SmsEmoa::step(const Generation& prev) const {
+  Generation next = prev;
+  next.index = prev.index + 1;
+  Rng rng = Rng::for_individual(config_.seed, std::uint64_t(next.index), 0);
+  const int mu = int(prev.population.size());
+  const Individual& a = prev.population[std::size_t(rng.below(mu))];
+  const Individual& b = prev.population[std::size_t(rng.below(mu))];
+  Individual child;
+  child.x = problem_.recombine(a.x, b.x, rng);
+  child.steps = a.steps;
+  problem_.mutate(child.x, child.steps, rng);
+  child.score = problem_.evaluate(child.x);
+  next.population.push_back(std::move(child));
+  ++next.evaluations;
+
+  // Reduce: drop one member of the worst front.
+  bool first = false;
+  const std::vector<std::size_t> worst = worst_front(next.population, &first);
+  std::size_t drop = worst.front();
+  if (worst.size() > 1) {
+    const bool feasible = next.population[worst.front()].score.feasible;
+    if (!feasible) {
+      // Infeasible front: the largest violation goes.
+      for (const std::size_t i : worst)
+        if (next.population[i].score.violation > next.population[drop].score.violation) drop = i;
+    } else {
+      // Candidates: the whole worst front, or (paper's rule, fronts after the first) those
+      // dominated by the most members; among them the least exclusive hypervolume goes.
+      std::vector<int> count(worst.size(), 0);
+      if (config_.domcount_then_hv && !first)
+        for (std::size_t w = 0; w < worst.size(); ++w)
+          for (const auto& other : next.population)
+            count[w] += dominates(other.score, next.population[worst[w]].score) ? 1 : 0;
+      const int most = *std::max_element(count.begin(), count.end());
+      std::vector<std::size_t> tied;
+      for (std::size_t w = 0; w < worst.size(); ++w)
+        if (count[w] == most) tied.push_back(w);
+      std::size_t w = tied.front();
+      if (tied.size() > 1) {
+        std::vector<Point> pts;
+        for (const std::size_t i : worst) pts.push_back(next.population[i].score.objectives);
+        const std::vector<double> c = contributions(pts, config_.ref);
+        for (const std::size_t t : tied)
+          if (c[t] < c[w]) w = t;
+      }
+      drop = worst[w];
+    }
+  }
+  next.population.erase(next.population.begin() + long(drop));
+  return next;
+}
+
+std::vector<Point> SmsEmoa::front(const Generation& g) {
+  std::vector<Point> out;
+  for (std::size_t i = 0; i < g.population.size(); ++i) {
+    const auto& s = g.population[i].score;
+    if (!s.feasible) continue;
+    bool dominated = false;
+    for (std::size_t j = 0; j < g.population.size() && !dominated; ++j)
+      dominated = j != i && dominates(g.population[j].score, s);
+    if (!dominated) out.push_back(s.objectives);
+  }
+  return out;
+}
+
+Generation run(const SmsEmoa& algorithm, const Generation* start, const std::function<void(const Generation&)>& on_step) {
+  Generation g = start ? *start : algorithm.initial();
+  if (!start && on_step) on_step(g);
+  while (!algorithm.done(g)) {
+    g = algorithm.step(g);
+    if (on_step) on_step(g);
+  }
+  return g;
+}
+
+}  // namespace mtcs::opt
