@@ -15,6 +15,7 @@
 
 #include "bench_evaluate.h"
 #include "bench_hypervolume.h"
+#include "bench_sms.h"
 #include "bench_optimize.h"
 #include "mtcs/mold/layout_io.h"
 #include "run_config.h"
@@ -236,6 +237,24 @@ Command add_bench_command(CLI::App& app) {
   hv->add_option("--max-contribution-n", ho->max_contribution_n, "largest front whose contributions are timed")
       ->capture_default_str();
 
+  CLI::App* sms = bench->add_subcommand(
+      "sms-emoa",
+      "Our SMS-EMOA against pagmo's NSGA-II and MOEA/D (mu = 100) on a ZDT or DTLZ problem, same\n"
+      "budget and seeds; hypervolume of each final non-dominated set against (1.1, ...). CSV:\n"
+      "  problem,algorithm,seed,evaluations,hypervolume,seconds\n"
+      "Example: mtcs bench sms-emoa --problem zdt1 --seeds 11 --evaluations 20000");
+  struct SmsOptions {
+    std::string problem = "zdt1";
+    std::vector<std::string> algorithms{"sms-emoa", "nsga2", "moead"};
+    int seeds = 11;
+    long evaluations = 20000;
+  };
+  auto so = std::make_shared<SmsOptions>();
+  sms->add_option("--problem", so->problem, "zdt1-4, zdt6, dtlz1-7")->capture_default_str();
+  sms->add_option("--algorithms", so->algorithms, "sms-emoa, nsga2, moead")->delimiter(',');
+  sms->add_option("--seeds", so->seeds, "seeds 1..K")->capture_default_str();
+  sms->add_option("--evaluations", so->evaluations, "budget per run")->capture_default_str();
+
   for (CLI::App* s : {dist, sweep, stiff}) {
     s->add_option("--pairs", opt->pairs, "CSV of cylinder pairs with dist_lo, dist_hi")->required()->check(CLI::ExistingFile);
     s->add_option("--repeat", opt->repeat, "queries per timed batch")->capture_default_str()->check(CLI::Range(1, 1000000));
@@ -245,8 +264,9 @@ Command add_bench_command(CLI::App& app) {
   stiff->add_option("--tolerance", opt->tolerance, "kernel tolerance")->capture_default_str();
   sweep->add_option("--tolerances", opt->sweep, "tolerances to sweep")->delimiter(',');
 
-  return {bench, [opt, dist, sweep, stiff, evaluate, eo, optimize, oo, hv, ho] {
+  return {bench, [opt, dist, sweep, stiff, evaluate, eo, optimize, oo, hv, ho, sms, so] {
             if (hv->parsed()) return bench_hypervolume(ho->fronts, ho->repeat, ho->max_contribution_n);
+            if (sms->parsed()) return bench_sms(so->problem, so->algorithms, so->seeds, so->evaluations);
             if (optimize->parsed()) {
               const mold::Scene scene(mold::load_mold_spec(oo->mold));
               const eval::Pipeline pipeline(scene);
