@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "bench_hypervolume.h"
+#include "mtcs/io/front_file.h"
 #include "mtcs/opt/hypervolume.h"
 #include "pagmo_peer.h"
 
@@ -18,34 +19,6 @@ namespace mtcs::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct Front {
-  std::vector<std::vector<double>> points;
-  std::vector<double> ref;
-};
-
-Front read(const fs::path& path) {
-  std::ifstream in(path);
-  Front f;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream ss(line);
-    std::string first;
-    if (!(ss >> first)) continue;
-    std::vector<double> p;
-    if (first == "#") {
-      ss >> first;
-      for (double v; ss >> v;) p.push_back(v);
-      f.ref = p;
-      continue;
-    }
-    ss.clear();
-    ss.str(line);
-    for (double v; ss >> v;) p.push_back(v);
-    f.points.push_back(p);
-  }
-  return f;
-}
 
 // Median seconds of `repeat` calls (at least one).
 template <class F>
@@ -83,7 +56,7 @@ int bench_hypervolume(const std::string& dir, int repeat, std::size_t max_contri
                "contrib_speedup,contrib_max_rel_diff\n";
   std::cout.precision(4);
   for (const auto& path : files) {
-    const Front f = read(path);
+    const io::FrontFile f = io::read_front(path.string());
     const std::string name = path.stem().string();
     double ours = 0, theirs = 0;
     const double t_ours = timed(repeat, [&] { ours = opt::hypervolume(f.points, f.ref); });

@@ -36,7 +36,7 @@ std::vector<std::vector<double>> pagmo_run(const std::string& name, const std::s
   const unsigned generations = unsigned(std::max<long>(1, (evaluations - pop_size) / pop_size));
   const double n = double(prob.get_nx());
   pagmo::algorithm algo = algorithm == "nsga2" ? pagmo::algorithm{pagmo::nsga2(generations, 0.9, 20., 1. / n, 20., seed)}
-                                               : pagmo::algorithm{pagmo::moead(generations, "grid", "tchebycheff", 20u,
+                                               : pagmo::algorithm{pagmo::moead(generations, prob.get_nobj() == 2 ? "grid" : "low discrepancy", "tchebycheff", 20u,
                                                                                1.0, 0.5, 20., 0.9, 2u, true, seed)};
   pagmo::population pop{prob, pop_size, seed};
   pop = algo.evolve(pop);

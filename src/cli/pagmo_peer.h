@@ -15,7 +15,7 @@ std::vector<double> pagmo_contributions(const std::vector<std::vector<double>>& 
 namespace mtcs::cli {
 
 // pagmo's NSGA-II (Deb's settings: crossover 0.9, eta_c 20, mutation 1/n, eta_m 20) or MOEA/D
-// (grid weights, Tchebycheff) on pagmo's own ZDT/DTLZ, population 100: the final objective
+// (grid weights for 2 objectives, low-discrepancy for 3; Tchebycheff) on pagmo's own ZDT/DTLZ, population 100: the final objective
 // vectors. name: zdt1..zdt6, dtlz1..dtlz7; algorithm: nsga2, moead.
 std::vector<std::vector<double>> pagmo_run(const std::string& name, const std::string& algorithm, long evaluations,
                                            unsigned seed);

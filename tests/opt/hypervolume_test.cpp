@@ -10,39 +10,15 @@
 #include <random>
 #include <sstream>
 
+#include "mtcs/io/front_file.h"
 #include "mtcs/opt/hypervolume.h"
 
 using namespace mtcs::opt;
 
 namespace {
 
-struct Front {
-  std::vector<Point> points;
-  Point ref;
-};
-
-Front read(const std::string& path) {
-  std::ifstream in(path);
-  Front f;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream ss(line);
-    std::string first;
-    if (!(ss >> first)) continue;
-    Point p;
-    if (first == "#") {
-      ss >> first;  // "ref"
-      for (double v; ss >> v;) p.push_back(v);
-      f.ref = p;
-      continue;
-    }
-    ss.clear();
-    ss.str(line);
-    for (double v; ss >> v;) p.push_back(v);
-    f.points.push_back(p);
-  }
-  return f;
-}
+using Front = mtcs::io::FrontFile;
+Front read(const std::string& path) { return mtcs::io::read_front(path); }
 
 // Exact hypervolume: every cell of the grid spanned by the coordinates, counted once if some
 // point dominates it, volumes summed as exact rationals. Small sets only.
