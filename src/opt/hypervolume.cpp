@@ -165,10 +165,33 @@ std::vector<double> contributions2(const std::vector<Point>& points, const Point
   return out;
 }
 
+// 3-D: slab by slab along z, each point's exclusive area in the 2-D projection of the points
+// at or below the slab (the 2-D staircase sweep above), times the slab's height. Every term is
+// positive: no cancellation however small a contribution, O(n^2 log n).
+std::vector<double> contributions3(const std::vector<Point>& points, const Point& ref) {
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (points[i][0] < ref[0] && points[i][1] < ref[1] && points[i][2] < ref[2]) order.push_back(i);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return points[a][2] < points[b][2]; });
+  std::vector<double> out(points.size(), 0.0);
+  std::vector<Point> slice;
+  const Point ref2{ref[0], ref[1]};
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    slice.push_back({points[order[k]][0], points[order[k]][1]});
+    const double top = k + 1 < order.size() ? points[order[k + 1]][2] : ref[2];
+    const double height = top - points[order[k]][2];
+    if (height <= 0) continue;  // the next point shares this z: one slab for both
+    const std::vector<double> area = contributions2(slice, ref2);
+    for (std::size_t j = 0; j <= k; ++j) out[order[j]] += area[j] * height;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<double> contributions(const std::vector<Point>& points, const Point& ref) {
   if (ref.size() == 2) return contributions2(points, ref);
+  if (ref.size() == 3) return contributions3(points, ref);
   const std::vector<Point> in = inside(points, ref);
   std::vector<double> out(points.size(), 0.0);
   for (std::size_t i = 0; i < points.size(); ++i) {
