@@ -160,6 +160,11 @@ int run_optimize(const Options& o) {
     config = parse_run_config(config_text, db_path + ":config", names);
   } else {
     if (!o.config.empty()) config = load_run_config(o.config, names);
+    if (o.algorithm != "es") config.algorithm = o.algorithm;
+    if (!o.ref.empty()) {
+      if (o.ref.size() != names.size()) throw io::InputError("", 0, 0, "ref", "needs one value per objective");
+      config.ref = o.ref;
+    }
     if (o.seed) config.es.seed = *o.seed;
     if (o.evaluations) config.es.evaluations = *o.evaluations;
     fs::create_directories(out_dir);
@@ -179,17 +184,40 @@ int run_optimize(const Options& o) {
   // Waypoint moves finer than a tenth of the smallest drill change nothing that matters.
   es_config.min_step = 0.1 * *std::min_element(scene.spec().drilling.diameters.begin(), scene.spec().drilling.diameters.end());
   const opt::EvolutionStrategy es(problem, es_config);
+  // SMS-EMOA: the reference point in raw units, from the scaled one of the config.
+  const auto& obj = scene.spec().objectives;
+  opt::SmsConfig sms_config;
+  sms_config.mu = config.es.mu;
+  sms_config.evaluations = config.es.evaluations;
+  sms_config.seed = config.es.seed;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const double scale = obj.use[k] == mold::Objective::Uniformity     ? obj.scale_uniformity
+                         : obj.use[k] == mold::Objective::WorstCovered ? obj.scale_worst_covered
+                                                                       : obj.scale_cost;
+    sms_config.ref.push_back((config.ref.empty() ? 4.0 : config.ref[k]) * scale);
+  }
+  const opt::SmsEmoa sms(problem, sms_config);
+  const bool pareto = config.algorithm == "sms-emoa";
   const auto previous = db->last();
   const double seconds_before = previous ? db->summaries().back().seconds : 0;
   const long evals_before = previous ? previous->evaluations : 0;
   Progress progress(o.quiet, config.log_every, config.es.evaluations);
   const auto t0 = std::chrono::steady_clock::now();
   auto on_generation = [&](const opt::Generation& g) {
+    // SMS-EMOA steps one offspring at a time: store (and report) every mu steps.
+    if (pareto && g.index % sms_config.mu != 0) return;
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     db->save(g, seconds_before + s);
     progress(g, s, g.evaluations - evals_before);
   };
-  const opt::Generation last = opt::run(es, previous ? &*previous : nullptr, on_generation);
+  opt::Generation last = pareto ? opt::run(sms, previous ? &*previous : nullptr, on_generation)
+                                : opt::run(es, previous ? &*previous : nullptr, on_generation);
+  if (pareto) {
+    if (last.index % sms_config.mu != 0)  // the last steps, unless just stored
+      db->save(last, seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    std::stable_sort(last.population.begin(), last.population.end(),
+                     [&](const opt::Individual& a, const opt::Individual& b) { return problem.better(a.score, b.score); });
+  }
   progress.done();
   const double seconds = seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
@@ -221,6 +249,22 @@ int run_optimize(const Options& o) {
   for (std::size_t k = 0; k < names.size() && k < best.score.objectives.size(); ++k)
     summary["objectives"][names[k]] = best.score.objectives[k];
   summary["violation"] = best.score.violation;
+  if (pareto) {
+    const auto front = opt::SmsEmoa::front(last);
+    summary["algorithm"] = "sms-emoa";
+    summary["front_size"] = front.size();
+    summary["hypervolume"] = opt::hypervolume(front, sms_config.ref);
+    summary["reference_point"] = sms_config.ref;
+    // front.csv: the final feasible non-dominated objective vectors, for plotting.
+    io::AtomicFile csv((fs::path(out_dir) / "front.csv").string());
+    for (std::size_t k = 0; k < names.size(); ++k) csv.stream() << (k ? "," : "") << names[k];
+    csv.stream() << "\n";
+    for (const auto& f : front) {
+      for (std::size_t k = 0; k < f.size(); ++k) csv.stream() << (k ? "," : "") << f[k];
+      csv.stream() << "\n";
+    }
+    csv.commit();
+  }
   if (o.polish > 0) summary["polish"] = polish_json;
   io::AtomicFile file((fs::path(out_dir) / "summary.json").string());
   file.stream() << summary.dump(2) << "\n";
@@ -259,15 +303,15 @@ Command add_optimize_command(CLI::App& app) {
                   "then refine the best layout's hole coordinates with NLopt's COBYLA for this many evaluations")
       ->check(CLI::Range(0, 10000000));
   sub->add_option("--problem", o->problem, "a built-in test problem instead of a mold: zdt1-4, zdt6, dtlz1-7");
-  sub->add_option("--algorithm", o->algorithm, "es (molds) or sms-emoa (test problems)")->capture_default_str()
+  sub->add_option("--algorithm", o->algorithm,
+                  "es (one weighted objective) or sms-emoa (a Pareto front; writes front.csv)")->capture_default_str()
       ->check(CLI::IsMember({"es", "sms-emoa"}));
-  sub->add_option("--ref", o->ref, "reference point of the reported hypervolume, r1,r2,... (default 1.1 each)")
+  sub->add_option("--ref", o->ref,
+                  "SMS-EMOA reference point, r1,r2,...: test problems 1.1 each; molds in scaled objectives, 4 each")
       ->delimiter(',');
   sub->add_flag("--json", o->json, "test problems: the summary as one line of JSON");
   return {sub, [o, sub] {
             if (!o->problem.empty()) return run_test_problem(*o);
-            if (o->algorithm != "es")
-              throw io::InputError(o->mold, 0, 0, "algorithm", "molds run with the ES for now (SMS-EMOA on molds is next)");
             if (o->resume.empty() && o->mold.empty())
               throw io::InputError("", 0, 0, "mold", "give a mold spec, or --resume DIR");
             (void)sub;

@@ -21,9 +21,18 @@ RunConfig parse_run_config(const std::string& text, const std::string& origin,
   }
   RunConfig c;
   if (root.IsNull()) return c;
-  r.expect_map(root, "", {"algorithm", "es", "evaluations", "seed", "weights", "mutation", "log_every"});
-  if (root["algorithm"] && r.text(root["algorithm"], "algorithm") != "es")
-    r.fail(root["algorithm"], "algorithm", "expected es (sms-emoa comes with the multi-objective issue)");
+  r.expect_map(root, "", {"algorithm", "es", "evaluations", "seed", "weights", "mutation", "log_every", "ref"});
+  if (root["algorithm"]) {
+    c.algorithm = r.text(root["algorithm"], "algorithm");
+    if (c.algorithm != "es" && c.algorithm != "sms-emoa") r.fail(root["algorithm"], "algorithm", "expected es or sms-emoa");
+  }
+  if (root["ref"]) {
+    r.expect_sequence(root["ref"], "ref");
+    for (std::size_t i = 0; i < root["ref"].size(); ++i)
+      c.ref.push_back(r.number(root["ref"][i], io::indexed("ref", i), 1e-12, 1e12));
+    if (c.ref.size() != objective_names.size())
+      r.fail(root["ref"], "ref", "needs one value per objective (" + std::to_string(objective_names.size()) + ")");
+  }
   if (root["es"]) {
     const YAML::Node& es = root["es"];
     r.expect_map(es, "es", {"mu", "lambda", "rho", "plus", "recombination"});
@@ -72,7 +81,12 @@ std::string RunConfig::to_yaml(const std::vector<std::string>& objective_names) 
   YAML::Emitter out;
   out.SetDoublePrecision(17);
   out << YAML::BeginMap;
-  out << YAML::Key << "algorithm" << YAML::Value << "es";
+  out << YAML::Key << "algorithm" << YAML::Value << algorithm;
+  if (!ref.empty()) {
+    out << YAML::Key << "ref" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+    for (const double v : ref) out << v;
+    out << YAML::EndSeq;
+  }
   out << YAML::Key << "es" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "mu" << YAML::Value << es.mu
       << YAML::Key << "lambda" << YAML::Value << es.lambda << YAML::Key << "rho" << YAML::Value << es.rho << YAML::Key
       << "plus" << YAML::Value << es.plus << YAML::Key << "recombination" << YAML::Value << es.recombination

@@ -11,7 +11,9 @@
 namespace mtcs::cli {
 
 struct RunConfig {
-  opt::EsConfig es;
+  std::string algorithm = "es";  // or sms-emoa: a Pareto front over the mold's objectives
+  opt::EsConfig es;              // es.mu, es.evaluations and es.seed serve SMS-EMOA too
+  std::vector<double> ref;       // SMS-EMOA: reference point in scaled objectives (default 4 each)
   std::vector<double> weights;  // per objective, in the spec's order; empty: all 1
   MutationRates mutation;
   int log_every = 10;           // generations between log lines when not on a terminal

@@ -130,6 +130,21 @@ TEST_CASE("mtcs optimize --polish refines with COBYLA and stays feasible", "[cli
   CHECK(j["polish"]["evaluations"].get<int>() <= 801);
 }
 
+TEST_CASE("mtcs optimize --algorithm sms-emoa on a mold writes its front and hypervolume", "[cli][optimize]") {
+  const fs::path dir = scratch("sms");
+  fs::remove_all(dir);
+  REQUIRE(run_mtcs("optimize " + kMold + " --algorithm sms-emoa --evaluations 1500 --out " + dir.string() + " --quiet") == 0);
+  std::ifstream in(dir / "summary.json");
+  const auto j = nlohmann::json::parse(in);
+  CHECK(j["algorithm"] == "sms-emoa");
+  CHECK(j["reference_point"].size() == 3);
+  CHECK(j["reference_point"][0].get<double>() == 4 * 5);  // 4 x the uniformity scale of plate.yaml
+  CHECK(j["hypervolume"].get<double>() > 0);
+  CHECK(fs::exists(dir / "front.csv"));
+  const RunStore db = RunStore::open((dir / "run.sqlite").string());
+  CHECK(db.summaries().size() >= 10);
+}
+
 TEST_CASE("mtcs optimize refuses to overwrite a run and reports bad configs", "[cli][optimize]") {
   const fs::path dir = scratch("again");
   fs::remove_all(dir);
