@@ -1,5 +1,7 @@
 #include "mtcs/opt/evolution_strategy.h"
 
+#include "mtcs/opt/run.h"
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -111,13 +113,7 @@ Generation EvolutionStrategy::step(const Generation& prev) const {
 
 Generation run(const EvolutionStrategy& es, const Generation* start,
                const std::function<void(const Generation&)>& on_generation) {
-  Generation g = start ? *start : es.initial();
-  if (!start && on_generation) on_generation(g);
-  while (!es.done(g)) {
-    g = es.step(g);
-    if (on_generation) on_generation(g);
-  }
-  return g;
+  return run_to_budget(es, start, on_generation);
 }
 
 }  // namespace mtcs::opt

@@ -1,5 +1,7 @@
 #include "mtcs/opt/sms_emoa.h"
 
+#include "mtcs/opt/run.h"
+
 #include <algorithm>
 #include <numeric>
 
@@ -124,13 +126,7 @@ std::vector<Point> SmsEmoa::front(const Generation& g) {
 }
 
 Generation run(const SmsEmoa& algorithm, const Generation* start, const std::function<void(const Generation&)>& on_step) {
-  Generation g = start ? *start : algorithm.initial();
-  if (!start && on_step) on_step(g);
-  while (!algorithm.done(g)) {
-    g = algorithm.step(g);
-    if (on_step) on_step(g);
-  }
-  return g;
+  return run_to_budget(algorithm, start, on_step);
 }
 
 }  // namespace mtcs::opt
