@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   const std::vector<mtcs::cli::Command> commands{
       mtcs::cli::add_optimize_command(app),
       mtcs::cli::add_evaluate_command(app),
+      mtcs::cli::add_replay_command(app),
       mtcs::cli::add_distance_command(app),
       mtcs::cli::add_hypervolume_command(app),
       mtcs::cli::add_bench_command(app),

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <thread>
 
 #include <unistd.h>
@@ -143,6 +144,26 @@ TEST_CASE("mtcs optimize --algorithm sms-emoa on a mold writes its front and hyp
   CHECK(fs::exists(dir / "front.csv"));
   const RunStore db = RunStore::open((dir / "run.sqlite").string());
   CHECK(db.summaries().size() >= 10);
+}
+
+TEST_CASE("mtcs replay --verify reproduces a stored run, and catches a changed mold", "[cli][replay]") {
+  const fs::path dir = scratch("replay"), mold = scratch("replay_plate.yaml");
+  fs::remove_all(dir);
+  std::ifstream src(kMold);
+  std::stringstream text;
+  text << src.rdbuf();
+  std::ofstream(mold) << text.str();
+  REQUIRE(run_mtcs("optimize " + mold.string() + " --out " + dir.string() + " --evaluations 1000 --quiet") == 0);
+  CHECK(run_mtcs("replay " + dir.string() + " --verify") == 0);
+  CHECK(fs::exists(dir / "replay" / "front_0.csv"));
+  CHECK(fs::exists(dir / "replay" / "front_0.json"));
+  // A different cost per hole: every stored cost disagrees with the replay.
+  std::string changed = text.str();
+  const auto at = changed.find("setup: 20");
+  REQUIRE(at != std::string::npos);
+  changed.replace(at, 9, "setup: 21");
+  std::ofstream(mold) << changed;
+  CHECK(run_mtcs("replay " + dir.string() + " --verify") == 1);
 }
 
 TEST_CASE("mtcs optimize refuses to overwrite a run and reports bad configs", "[cli][optimize]") {
