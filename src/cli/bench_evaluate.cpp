@@ -4,6 +4,7 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -12,25 +13,12 @@
 #include "bench_evaluate.h"
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/mold/decoder.h"
+#include "mtcs/opt/rng.h"
 
 namespace mtcs::cli {
 namespace {
 
 using geometry::Vec3;
-
-// splitmix64: a small, fully specified generator, so that the random layouts are the same on
-// every platform.
-struct SplitMix {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return double(next() >> 11) * 0x1.0p-53; }
-  int below(int n) { return int(uniform() * n); }
-};
 
 int axis_of(mold::Face f) {
   int k = 0;
@@ -40,7 +28,7 @@ int axis_of(mold::Face f) {
 
 // A circuit of `bores` axis-parallel legs from an inlet face to an outlet face; coordinates
 // uniform in the block's inner 80%.
-mold::Circuit random_circuit(const mold::Scene& scene, SplitMix& rng, int bores, double diameter) {
+mold::Circuit random_circuit(const mold::Scene& scene, opt::Rng& rng, int bores, double diameter) {
   const auto& spec = scene.spec();
   const geometry::Box& b = scene.block_bounds();
   const Vec3 lo = b.min + 0.1 * b.size(), hi = b.max - 0.1 * b.size();
@@ -60,10 +48,22 @@ mold::Circuit random_circuit(const mold::Scene& scene, SplitMix& rng, int bores,
   int prev = axis_of(in);
   p[prev] = inside(prev);  // first leg: straight in from the inlet face
   c.waypoints.push_back(p);
+  // Legs along drillable axes only (the decoder keeps a circuit in its inlet's plane along the
+  // others), never twice along one axis in a row. With two drillable axes a path between faces
+  // of the same axis needs an odd number of legs: an even request gets one more.
+  std::vector<int> axes;
+  for (const mold::Face f : spec.drilling.allowed_faces)
+    if (std::find(axes.begin(), axes.end(), axis_of(f)) == axes.end()) axes.push_back(axis_of(f));
   for (int leg = 1; leg + 1 < bores; ++leg) {
-    int k;
-    do k = rng.below(3);
-    while (k == prev || (leg + 2 == bores && k == axis_of(out)));
+    std::vector<int> choice;
+    for (const int k : axes)
+      if (k != prev && (leg + 2 != bores || k != axis_of(out))) choice.push_back(k);
+    if (choice.empty()) {  // parity: only the outlet's axis is left
+      ++bores;
+      for (const int k : axes)
+        if (k != prev) choice.push_back(k);
+    }
+    const int k = choice[std::size_t(rng.below(int(choice.size())))];
     p[k] = inside(k);
     c.waypoints.push_back(p);
     prev = k;
@@ -78,7 +78,7 @@ mold::Circuit random_circuit(const mold::Scene& scene, SplitMix& rng, int bores,
 
 std::vector<mold::Genome> random_genomes(const mold::Scene& scene, int count, int circuits, int bores,
                                          std::uint64_t seed) {
-  SplitMix rng{seed};
+  opt::Rng rng(seed);  // the optimisers' generator: the same layouts on every platform
   const auto& diameters = scene.spec().drilling.diameters;
   std::vector<mold::Genome> out(static_cast<std::size_t>(count));
   for (auto& g : out)

@@ -18,8 +18,8 @@ struct EvaluateBench {
   std::map<std::string, double> stage_seconds;  // mean per evaluation
 };
 
-// `count` layouts of `circuits` circuits of `bores` axis-parallel legs each, reproducible from
-// the seed.
+// `count` layouts of `circuits` circuits of `bores` axis-parallel legs each (one more where the
+// drillable axes force an odd count), reproducible from the seed.
 std::vector<mold::Genome> random_genomes(const mold::Scene& scene, int count, int circuits, int bores,
                                          std::uint64_t seed);
 EvaluateBench bench_evaluate(const mold::Scene& scene, const std::vector<mold::Genome>& genomes, int threads);

@@ -190,12 +190,8 @@ int run_optimize(const Options& o) {
   sms_config.mu = config.es.mu;
   sms_config.evaluations = config.es.evaluations;
   sms_config.seed = config.es.seed;
-  for (std::size_t k = 0; k < names.size(); ++k) {
-    const double scale = obj.use[k] == mold::Objective::Uniformity     ? obj.scale_uniformity
-                         : obj.use[k] == mold::Objective::WorstCovered ? obj.scale_worst_covered
-                                                                       : obj.scale_cost;
-    sms_config.ref.push_back((config.ref.empty() ? 4.0 : config.ref[k]) * scale);
-  }
+  for (std::size_t k = 0; k < names.size(); ++k)
+    sms_config.ref.push_back((config.ref.empty() ? 4.0 : config.ref[k]) * obj.scale(obj.use[k]));
   const opt::SmsEmoa sms(problem, sms_config);
   const bool pareto = config.algorithm == "sms-emoa";
   const auto previous = db->last();
@@ -285,7 +281,8 @@ Command add_optimize_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   CLI::App* sub = app.add_subcommand(
       "optimize",
-      "Optimise the cooling bores of a mold with the evolution strategy.\n"
+      "Optimise the cooling bores of a mold: the evolution strategy (one weighted objective) or\n"
+      "SMS-EMOA (--algorithm sms-emoa: a Pareto front, front.csv), or SMS-EMOA on a test problem.\n"
       "Every generation is stored in DIR/run.sqlite; an interrupted run (even kill -9) continues\n"
       "with --resume DIR and ends exactly as an uninterrupted one. Results in DIR: run.sqlite,\n"
       "best.layout.yaml (edit and re-score with mtcs evaluate), bores.csv, bores.stl, summary.json.\n"

@@ -8,10 +8,7 @@ Fitness fitness(const Evaluation& e, const mold::MoldSpec& spec, const std::vect
   const auto& o = spec.objectives;
   double value = 0;
   for (std::size_t k = 0; k < e.objectives.size(); ++k) {
-    const double scale = o.use[k] == mold::Objective::Uniformity     ? o.scale_uniformity
-                         : o.use[k] == mold::Objective::WorstCovered ? o.scale_worst_covered
-                                                                     : o.scale_cost;
-    value += (k < weights.size() ? weights[k] : 1.0) * e.objectives[k] / scale;
+    value += (k < weights.size() ? weights[k] : 1.0) * e.objectives[k] / o.scale(o.use[k]);
   }
   Fitness f{e.feasible(), e.violation, value};
   switch (spec.penalty.variant) {

@@ -31,17 +31,21 @@ void sort_population(const Problem& problem, std::vector<Individual>& pop) {
 
 }  // namespace
 
-Generation EvolutionStrategy::initial() const {
+Generation EvolutionStrategy::sample_population(const Problem& problem, std::uint64_t seed, int count) {
   Generation g;
   std::vector<Genotype> xs;
-  for (int i = 0; i < config_.mu; ++i) {
-    Rng rng = Rng::for_individual(config_.seed, 0, std::uint64_t(i));
-    xs.push_back(problem_.sample(rng));
+  for (int i = 0; i < count; ++i) {
+    Rng rng = Rng::for_individual(seed, 0, std::uint64_t(i));
+    xs.push_back(problem.sample(rng));
   }
-  const auto scores = evaluate_all(problem_, xs);
-  for (int i = 0; i < config_.mu; ++i)
-    g.population.push_back({xs[i], problem_.initial_steps(xs[i]), scores[i]});
-  g.evaluations = config_.mu;
+  const auto scores = evaluate_all(problem, xs);
+  for (std::size_t i = 0; i < xs.size(); ++i) g.population.push_back({xs[i], problem.initial_steps(xs[i]), scores[i]});
+  g.evaluations = count;
+  return g;
+}
+
+Generation EvolutionStrategy::initial() const {
+  Generation g = sample_population(problem_, config_.seed, config_.mu);
   sort_population(problem_, g.population);
   return g;
 }

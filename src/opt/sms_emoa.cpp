@@ -48,16 +48,7 @@ std::vector<std::size_t> worst_front(const std::vector<Individual>& pop, bool* i
 SmsEmoa::SmsEmoa(const Problem& problem, SmsConfig config) : problem_(problem), config_(std::move(config)) {}
 
 Generation SmsEmoa::initial() const {
-  Generation g;
-  std::vector<Genotype> xs;
-  for (int i = 0; i < config_.mu; ++i) {
-    Rng rng = Rng::for_individual(config_.seed, 0, std::uint64_t(i));
-    xs.push_back(problem_.sample(rng));
-  }
-  const auto scores = EvolutionStrategy::evaluate_all(problem_, xs);
-  for (int i = 0; i < config_.mu; ++i) g.population.push_back({xs[std::size_t(i)], problem_.initial_steps(xs[std::size_t(i)]), scores[std::size_t(i)]});
-  g.evaluations = config_.mu;
-  return g;
+  return EvolutionStrategy::sample_population(problem_, config_.seed, config_.mu);
 }
 
 Generation SmsEmoa::step(const Generation& prev) const {

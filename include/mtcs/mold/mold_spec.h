@@ -83,6 +83,11 @@ struct Objectives {
   double scale_uniformity = 1, scale_worst_covered = 1, scale_cost = 1;
   Length target_wall_distance{2.0, true};
   double cost_setup = 20, cost_per_mm = 0.05, cost_deep_factor = 0.02, cost_plug = 5;
+
+  // The divisor that makes objective o comparable to the others.
+  double scale(Objective o) const {
+    return o == Objective::Uniformity ? scale_uniformity : o == Objective::WorstCovered ? scale_worst_covered : scale_cost;
+  }
 };
 
 enum class PenaltyVariant { ConstrainedDomination, StaticLinear, StaticQuadratic, Death };

@@ -49,6 +49,9 @@ class EvolutionStrategy {
 
   // Evaluates in parallel (TBB); results in input order.
   static std::vector<Score> evaluate_all(const Problem& problem, const std::vector<Genotype>& xs);
+  // The initial population of every optimiser here: `count` samples drawn from the
+  // generators of generation 0, evaluated in parallel, in sampling order.
+  static Generation sample_population(const Problem& problem, std::uint64_t seed, int count);
 
  private:
   const Problem& problem_;
