@@ -2,5 +2,7 @@
 # Configure and build mtcs (Release) into build/, with two jobs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Paths relative to the checkout in ccache's hashes: clones and worktrees share the cache.
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
 cmake --build build -j2 ${MTCS_BUILD_TARGET:+--target "$MTCS_BUILD_TARGET"}
