@@ -13,10 +13,10 @@ using Point = std::vector<double>;
 double hypervolume(const std::vector<Point>& points, const Point& ref);
 
 // Exclusive contributions HV(S) - HV(S \ {p}), in input order: 0 for a point weakly dominated by
-// another (duplicates included) or on the reference boundary. d = 2: a staircase sweep, and
-// d = 3: the same, slab by slab along z — sums of positive terms, exact to rounding however
-// small the contribution. d >= 4: the volume of p's box minus the hypervolume of the limit set
-// {max(p, q)} inside it (absolute error ~ 1e-16 of p's box).
+// another (duplicates included) or on the reference boundary. Every contribution is a sum of
+// positive terms, exact to rounding however small it is. d = 2: a staircase sweep, O(n log n);
+// d = 3: a sweep along z keeping each point's exclusive slice as boxes, O(n log n); d >= 4:
+// slab by slab along the last coordinates down to the 3-D sweep, O(n^(d-2) log n).
 std::vector<double> contributions(const std::vector<Point>& points, const Point& ref);
 
 }  // namespace mtcs::opt
