@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "contributions3d.h"
+#include "wfg.h"
 #include "mtcs/opt/hypervolume.h"
 
 namespace mtcs::opt {
@@ -92,6 +93,39 @@ void contributions_slabs(const std::vector<Point>& points, const std::vector<std
   }
 }
 
+// d >= 5: the slabs cost O(n^3 log n) and more; WFG's box minus the limit set's hypervolume is
+// fast but cancels when the contribution is tiny next to the box. Such points (relative size
+// below `kCancellation`, error then above ~1e-12 relative) are recomputed by the slabs on
+// {p} + the limit set, where p's contribution is the same and the set is small.
+constexpr double kCancellation = 1e-4;
+
+std::vector<double> contributions_wfg(const std::vector<Point>& points, const std::vector<std::size_t>& members,
+                                      const Point& ref) {
+  const std::size_t d = ref.size();
+  std::vector<double> rows;
+  rows.reserve(members.size() * d);
+  for (const std::size_t i : members) rows.insert(rows.end(), points[i].begin(), points[i].end());
+  detail::Wfg wfg(ref);
+  std::vector<double> out(points.size(), 0.0);
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    double box = 0;
+    const double exclusive = wfg.exclusive(rows, k, box);
+    if (exclusive > kCancellation * box) {
+      out[members[k]] = exclusive;
+      continue;
+    }
+    std::vector<Point> local = wfg.limit_points(rows, k);
+    local.push_back(points[members[k]]);
+    std::vector<std::size_t> order(local.size());
+    for (std::size_t j = 0; j < order.size(); ++j) order[j] = j;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return local[a][d - 1] < local[b][d - 1]; });
+    std::vector<double> c(local.size(), 0.0);
+    contributions_slabs(local, order, ref, d, 1.0, c);
+    out[members[k]] = c.back();
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<double> contributions(const std::vector<Point>& points, const Point& ref) {
@@ -104,6 +138,7 @@ std::vector<double> contributions(const std::vector<Point>& points, const Point&
     if (strictly_inside(points[i], ref)) members.push_back(i);
   std::stable_sort(members.begin(), members.end(),
                    [&](std::size_t a, std::size_t b) { return points[a][d - 1] < points[b][d - 1]; });
+  if (d >= 5) return contributions_wfg(points, members, ref);
   contributions_slabs(points, members, ref, d, 1.0, out);
   return out;
 }

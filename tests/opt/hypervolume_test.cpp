@@ -81,9 +81,9 @@ TEST_CASE("hypervolume: contributions equal the exact leave-one-out differences"
   std::mt19937_64 rng(12);
   std::uniform_int_distribution<int> coord(0, 20);
   for (std::size_t d = 2; d <= 5; ++d) {
-    for (int trial = 0; trial < 12; ++trial) {
+    for (int trial = 0; trial < (d <= 3 ? 12 : 30); ++trial) {
       // Coarse coordinates make ties, duplicates and points on the reference boundary common.
-      const int n = d <= 3 ? 9 : 6;
+      const int n = d <= 3 ? 9 : 7;
       std::vector<Point> pts(static_cast<std::size_t>(n), Point(d));
       for (auto& p : pts)
         for (double& v : p) v = coord(rng) / 20.0;
@@ -116,6 +116,51 @@ TEST_CASE("hypervolume: reference boundary, dominated points, a tiny contributio
   const double e = 1e-6;
   const auto c = contributions({{0.2, 0.6}, {0.6 - e, 0.6 - e}, {0.6, 0.2}}, ref);
   CHECK(c[1] == Approx(e * e).epsilon(1e-3));
+}
+
+TEST_CASE("hypervolume: tiny contributions in 3 to 5 objectives match their closed form", "[opt][hypervolume]") {
+  // Corners p_k (0.2 in objective k, 0.6 elsewhere) and q = (0.6 - e, ...): q alone covers the
+  // points of its box with at least two objectives below 0.6, sum over m >= 2 of
+  // C(d, m) e^m 0.4^(d - m): about 1e-12 of q's box, the case where box-minus-the-rest cancels.
+  for (std::size_t d = 3; d <= 5; ++d) {
+    const double e = 1e-6;
+    std::vector<Point> pts;
+    for (std::size_t k = 0; k < d; ++k) {
+      Point p(d, 0.6);
+      p[k] = 0.2;
+      pts.push_back(p);
+    }
+    pts.push_back(Point(d, 0.6 - e));
+    long double expected = 0, binomial = 1;
+    for (std::size_t m = 1; m <= d; ++m) {
+      binomial = binomial * static_cast<long double>(d - m + 1) / static_cast<long double>(m);
+      if (m >= 2) expected += binomial * std::pow(static_cast<long double>(e), int(m)) * std::pow(0.4L, int(d - m));
+    }
+    const auto c = contributions(pts, Point(d, 1.0));
+    INFO("d = " << d);
+    CHECK(std::abs(c.back() - double(expected)) <= 1e-9 * double(expected));
+  }
+}
+
+TEST_CASE("hypervolume: 3-D contributions on a large front full of ties equal leave-one-out differences", "[opt][hypervolume]") {
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<int> coord(0, 12);
+  std::vector<Point> pts;
+  while (pts.size() < 300) {
+    // Near the plane x + y + z = 1.5 on a coarse grid: many mutually non-dominated points, ties.
+    const double x = coord(rng) / 12.0, y = coord(rng) / 12.0;
+    const double z = std::clamp(std::round((1.5 - x - y) * 12.0 + coord(rng) % 3 - 1) / 12.0, 0.0, 1.0);
+    pts.push_back({x, y, z});
+  }
+  const Point ref{1.05, 1.05, 1.05};
+  const double all = hypervolume(pts, ref);
+  const auto c = contributions(pts, ref);
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    std::vector<Point> rest = pts;
+    rest.erase(rest.begin() + long(i));
+    INFO("point " << i);
+    CHECK(std::abs(c[i] - (all - hypervolume(rest, ref))) <= 1e-14);
+  }
 }
 
 #include "cli/pagmo_peer.h"
