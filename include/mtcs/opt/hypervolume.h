@@ -13,10 +13,11 @@ using Point = std::vector<double>;
 double hypervolume(const std::vector<Point>& points, const Point& ref);
 
 // Exclusive contributions HV(S) - HV(S \ {p}), in input order: 0 for a point weakly dominated by
-// another (duplicates included) or on the reference boundary. Every contribution is a sum of
-// positive terms, exact to rounding however small it is. d = 2: a staircase sweep, O(n log n);
-// d = 3: a sweep along z keeping each point's exclusive slice as boxes, O(n log n); d >= 4:
-// slab by slab along the last coordinates down to the 3-D sweep, O(n^(d-2) log n).
+// another (duplicates included) or on the reference boundary. d = 2: a staircase sweep,
+// O(n log n); d = 3: a sweep along z keeping each point's exclusive slice as boxes, O(n log n);
+// d = 4: slab by slab along the last objective over the 3-D sweep, O(n^2 log n). All sums of
+// positive terms, exact to rounding however small. d >= 5: WFG's box minus the limit set's
+// hypervolume, recomputed by the slabs where that would cancel (relative error <~ 1e-12).
 std::vector<double> contributions(const std::vector<Point>& points, const Point& ref);
 
 }  // namespace mtcs::opt
