@@ -20,14 +20,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Median seconds of `repeat` calls (at least one).
+// Seconds per call: the median of `repeat` samples (at least one), each sample as many calls as
+// fill 2 ms, so that microsecond calls are not timer noise.
 template <class F>
 double timed(int repeat, F&& f) {
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
+  f();
+  const double once = std::chrono::duration<double>(Clock::now() - t0).count();
+  const int calls = once >= 2e-3 ? 1 : int(std::min(1e5, 2e-3 / std::max(once, 1e-8)));
   std::vector<double> t;
   for (int i = 0; i < std::max(1, repeat); ++i) {
-    const auto t0 = std::chrono::steady_clock::now();
-    f();
-    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    const auto start = Clock::now();
+    for (int c = 0; c < calls; ++c) f();
+    t.push_back(std::chrono::duration<double>(Clock::now() - start).count() / calls);
   }
   std::nth_element(t.begin(), t.begin() + long(t.size() / 2), t.end());
   return t[t.size() / 2];
@@ -66,8 +72,8 @@ int bench_hypervolume(const std::string& dir, int repeat, std::size_t max_contri
               << t_theirs / t_ours << ',' << std::abs(ours - want) / want << ',' << std::abs(theirs - want) / want;
     if (f.points.size() <= max_contribution_n) {
       std::vector<double> co, cp;
-      const double tc_ours = timed(1, [&] { co = opt::contributions(f.points, f.ref); });
-      const double tc_theirs = timed(1, [&] { cp = pagmo_contributions(f.points, f.ref); });
+      const double tc_ours = timed(repeat, [&] { co = opt::contributions(f.points, f.ref); });
+      const double tc_theirs = timed(repeat, [&] { cp = pagmo_contributions(f.points, f.ref); });
       double worst = 0;
       for (std::size_t i = 0; i < co.size(); ++i)
         worst = std::max(worst, std::abs(co[i] - cp[i]) / std::max(1e-300, std::max(std::abs(co[i]), std::abs(cp[i]))));

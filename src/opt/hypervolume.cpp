@@ -21,7 +21,7 @@ double hypervolume(const std::vector<Point>& points, const Point& ref) {
     for (const double v : rows) lo = std::min(lo, v);
     return ref[0] - lo;
   }
-  return detail::Wfg(ref).hypervolume(std::move(rows));
+  return detail::Wfg<double>(ref).hypervolume(std::move(rows));
 }
 
 }  // namespace mtcs::opt

@@ -8,7 +8,8 @@
 namespace mtcs::opt::detail {
 namespace {
 
-double area2(const double* rows, std::size_t n, std::size_t stride, const double* ref, std::vector<std::size_t>& order) {
+template <class Real>
+Real area2(const double* rows, std::size_t n, std::size_t stride, const double* ref, std::vector<std::size_t>& order) {
   order.resize(n);
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -16,14 +17,15 @@ double area2(const double* rows, std::size_t n, std::size_t stride, const double
     const double* q = rows + b * stride;
     return p[0] != q[0] ? p[0] < q[0] : p[1] < q[1];
   });
-  double area = 0, best_y = ref[1];
+  Real area = 0;
+  double best_y = ref[1];
   for (std::size_t k = 0; k < n; ++k) {
     const double* p = rows + order[k] * stride;
     if (p[1] >= best_y) continue;
     std::size_t j = k + 1;
     while (j < n && rows[order[j] * stride + 1] >= p[1]) ++j;
     const double next_x = j < n ? rows[order[j] * stride] : ref[0];
-    area += (next_x - p[0]) * (ref[1] - p[1]);
+    area += (Real(next_x) - Real(p[0])) * (Real(ref[1]) - Real(p[1]));
     best_y = p[1];
     k = j - 1;
   }
@@ -31,12 +33,13 @@ double area2(const double* rows, std::size_t n, std::size_t stride, const double
 }
 
 // The dimension sweep along z over a 2-D staircase.
-double volume3(const double* rows, std::size_t n, std::size_t stride, const double* ref, std::vector<std::size_t>& order) {
+template <class Real>
+Real volume3(const double* rows, std::size_t n, std::size_t stride, const double* ref, std::vector<std::size_t>& order) {
   order.resize(n);
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rows[a * stride + 2] < rows[b * stride + 2]; });
   std::map<double, double> stair;
-  double area = 0, volume = 0;
+  Real area = 0, volume = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const double* p = rows + order[k] * stride;
     const double x = p[0], y = p[1];
@@ -46,72 +49,102 @@ double volume3(const double* rows, std::size_t n, std::size_t stride, const doub
     if (!covered) {
       double at = x, h = top;
       while (right != stair.end() && right->second >= y) {
-        area += (right->first - at) * (h - y);
+        area += (Real(right->first) - Real(at)) * (Real(h) - Real(y));
         at = right->first, h = right->second;
         right = stair.erase(right);
       }
-      area += ((right != stair.end() ? right->first : ref[0]) - at) * (h - y);
+      area += (Real(right != stair.end() ? right->first : ref[0]) - Real(at)) * (Real(h) - Real(y));
       stair.emplace_hint(right, x, y);
     }
     const double next_z = k + 1 < n ? rows[order[k + 1] * stride + 2] : ref[2];
-    volume += area * (next_z - p[2]);
+    volume += area * (Real(next_z) - Real(p[2]));
   }
   return volume;
 }
 
 }  // namespace
 
-std::vector<double>& Wfg::level(std::size_t depth) {
+template <class Real>
+std::vector<double>& Wfg<Real>::level(std::size_t depth) {
   if (rows_.size() <= depth) rows_.resize(depth + 1);
   return rows_[depth];
 }
 
-double Wfg::hypervolume(std::vector<double> points) {
+template <class Real>
+Real Wfg<Real>::hypervolume(std::vector<double> points) {
   const std::size_t n = points.size() / d_;
   level(0) = std::move(points);
   return hv(0, n, d_);
 }
 
-std::size_t Wfg::limit_set(const double* p, const double* rows, std::size_t n, std::size_t dims, std::size_t depth,
-                           std::size_t skip) {
+template <class Real>
+std::size_t Wfg<Real>::limit_set(const double* p, const double* rows, std::size_t n, std::size_t dims, std::size_t depth,
+                                 std::size_t skip, bool by_sum) {
   std::vector<double>& out = level(depth);
   out.resize(n * d_);
+  const auto covers = [dims](const double* a, const double* b) {
+    std::size_t k = 0;
+    while (k < dims && a[k] <= b[k]) ++k;
+    return k == dims;
+  };
   std::size_t m = 0;
+  if (!by_sum) {
+    // Keep the non-dominated ones as they come: the cheapest for the small sets of the recursion.
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j == skip) continue;
+      double* l = out.data() + m * d_;
+      for (std::size_t k = 0; k < dims; ++k) l[k] = std::max(p[k], rows[j * d_ + k]);
+      bool dominated = false;
+      for (std::size_t i = 0; i < m && !dominated; ++i) dominated = covers(out.data() + i * d_, l);
+      if (dominated) continue;
+      for (std::size_t i = 0; i < m;) {
+        if (covers(l, out.data() + i * d_)) {
+          std::copy_n(out.data() + --m * d_, dims, out.data() + i * d_);  // swap-remove
+        } else {
+          ++i;
+        }
+      }
+      if (l != out.data() + m * d_) std::copy_n(l, dims, out.data() + m * d_);
+      ++m;
+    }
+    return m;
+  }
+  // By increasing coordinate sum, so that a point is only checked against those kept before it
+  // and never evicts one (a dominating point has the smaller sum): pays off on whole fronts.
+  std::vector<double>& candidates = scratch_;
+  candidates.resize(n * d_);
+  order_.clear();
+  sums_.resize(n);
   for (std::size_t j = 0; j < n; ++j) {
     if (j == skip) continue;
-    double* l = out.data() + m * d_;
-    for (std::size_t k = 0; k < dims; ++k) l[k] = std::max(p[k], rows[j * d_ + k]);
+    double* l = candidates.data() + j * d_;
+    double sum = 0;
+    for (std::size_t k = 0; k < dims; ++k) sum += l[k] = std::max(p[k], rows[j * d_ + k]);
+    sums_[j] = sum;
+    order_.push_back(j);
+  }
+  std::sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) {
+    if (sums_[a] != sums_[b]) return sums_[a] < sums_[b];
+    // Rounding can tie the sums of a dominating and a dominated point: then the first
+    // coordinate where they differ decides.
+    return std::lexicographical_compare(candidates.data() + a * d_, candidates.data() + a * d_ + dims,
+                                        candidates.data() + b * d_, candidates.data() + b * d_ + dims);
+  });
+  for (const std::size_t j : order_) {
+    const double* l = candidates.data() + j * d_;
     bool dominated = false;
-    for (std::size_t i = 0; i < m && !dominated; ++i) {
-      const double* o = out.data() + i * d_;
-      std::size_t k = 0;
-      while (k < dims && o[k] <= l[k]) ++k;
-      dominated = k == dims;
-    }
-    if (dominated) continue;
-    // Drop the kept points the new one dominates (swap-remove keeps the array dense).
-    for (std::size_t i = 0; i < m;) {
-      double* o = out.data() + i * d_;
-      std::size_t k = 0;
-      while (k < dims && l[k] <= o[k]) ++k;
-      if (k == dims) {
-        --m;
-        std::copy_n(out.data() + m * d_, dims, o);
-      } else {
-        ++i;
-      }
-    }
-    if (l != out.data() + m * d_) std::copy_n(l, dims, out.data() + m * d_);
-    ++m;
+    for (std::size_t i = 0; i < m && !dominated; ++i) dominated = covers(out.data() + i * d_, l);
+    if (!dominated) std::copy_n(l, dims, out.data() + m++ * d_);
   }
   return m;
 }
 
-double Wfg::hv(std::size_t depth, std::size_t n, std::size_t dims) {
+template <class Real>
+Real Wfg<Real>::hv(std::size_t depth, std::size_t n, std::size_t dims) {
   if (n == 0) return 0;
   const double* ref = ref_.data();
-  if (dims == 2) return area2(level(depth).data(), n, d_, ref, order_);
-  if (dims == 3) return volume3(level(depth).data(), n, d_, ref, order_);
+  if (dims == 2) return area2<Real>(level(depth).data(), n, d_, ref, order_);
+  if (dims == 3) return volume3<Real>(level(depth).data(), n, d_, ref, order_);
   // Worst last coordinate first: each point's limit set among the later ones then lies in its
   // own last coordinate, one dimension fewer.
   {
@@ -125,32 +158,38 @@ double Wfg::hv(std::size_t depth, std::size_t n, std::size_t dims) {
     for (std::size_t i = 0; i < n; ++i) std::copy_n(rows.data() + order_[i] * d_, d_, sorted.data() + i * d_);
     rows.swap(sorted);
   }
-  double volume = 0;
+  Real volume = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const double* p = level(depth).data() + i * d_;
-    double box = 1;
-    for (std::size_t k = 0; k + 1 < dims; ++k) box *= ref[k] - p[k];
+    Real box = 1;
+    for (std::size_t k = 0; k + 1 < dims; ++k) box *= Real(ref[k]) - Real(p[k]);
     const std::size_t m = limit_set(p, p + d_, n - i - 1, dims - 1, depth + 1);
     p = level(depth).data() + i * d_;  // level(depth + 1) may have grown rows_
-    volume += (ref[dims - 1] - p[dims - 1]) * (box - hv(depth + 1, m, dims - 1));
+    volume += (Real(ref[dims - 1]) - Real(p[dims - 1])) * (box - hv(depth + 1, m, dims - 1));
   }
   return volume;
 }
 
-double Wfg::exclusive(const std::vector<double>& points, std::size_t i, double& box) {
+template <class Real>
+Real Wfg<Real>::exclusive(const std::vector<double>& points, std::size_t i, Real& box) {
   const double* p = points.data() + i * d_;
   box = 1;
-  for (std::size_t k = 0; k < d_; ++k) box *= ref_[k] - p[k];
-  const std::size_t m = limit_set(p, points.data(), points.size() / d_, d_, 0, i);
-  return box - hv(0, m, d_);
+  for (std::size_t k = 0; k < d_; ++k) box *= Real(ref_[k]) - Real(p[k]);
+  last_limit_size_ = limit_set(p, points.data(), points.size() / d_, d_, 0, i, points.size() / d_ >= 128);
+  return box - hv(0, last_limit_size_, d_);
 }
 
-std::vector<std::vector<double>> Wfg::limit_points(const std::vector<double>& points, std::size_t i) {
-  const std::size_t m = limit_set(points.data() + i * d_, points.data(), points.size() / d_, d_, 0, i);
-  const std::vector<double>& rows = level(0);
+template <class Real>
+std::vector<std::vector<double>> Wfg<Real>::last_limit_set() const {
+  // hv() reorders the rows of its level in place but keeps them.
+  const std::size_t m = last_limit_size_;
+  const std::vector<double>& rows = rows_.front();
   std::vector<std::vector<double>> out;
   for (std::size_t j = 0; j < m; ++j) out.emplace_back(rows.begin() + long(j * d_), rows.begin() + long((j + 1) * d_));
   return out;
 }
+
+template class Wfg<double>;
+template class Wfg<long double>;
 
 }  // namespace mtcs::opt::detail
