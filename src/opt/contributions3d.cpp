@@ -17,8 +17,11 @@
 
 #include "contributions3d.h"
 
+#include <array>
+#include <cstddef>
 #include <iterator>
 #include <map>
+#include <memory_resource>
 
 namespace mtcs::opt::detail {
 namespace {
@@ -32,12 +35,14 @@ struct Owner {
   std::size_t index;  // into the caller's points
   double y;
   double z0;                               // p's own strip
-  std::map<double, Secondary> secondary;  // S(p) by x: x increasing, y decreasing
+  std::pmr::map<double, Secondary> secondary;  // S(p) by x: x increasing, y decreasing
 };
 
 class Sweep {
  public:
   Sweep(const Point& ref, double scale, std::vector<double>& out) : ref_(ref), scale_(scale), out_(out) {}
+  Sweep(const Sweep&) = delete;
+  Sweep& operator=(const Sweep&) = delete;
 
   void add(std::size_t index, double x, double y, double z) {
     auto after = stair_.upper_bound(x);  // first owner with x' > x
@@ -59,9 +64,9 @@ class Sweep {
   }
 
  private:
-  using Stair = std::map<double, Owner>;
+  using Stair = std::pmr::map<double, Owner>;
   using It = Stair::iterator;
-  using SecIt = std::map<double, Secondary>::iterator;
+  using SecIt = std::pmr::map<double, Secondary>::iterator;
 
   double top(It it) const { return it == stair_.begin() ? ref_[1] : std::prev(it)->second.y; }
   double right(It it) const { return std::next(it) == stair_.end() ? ref_[0] : std::next(it)->first; }
@@ -131,7 +136,7 @@ class Sweep {
     }
     // The owners it dominates stop contributing and become its secondary staircase; what they
     // dominated is now dominated twice.
-    Owner owner{index, y, z, {}};
+    Owner owner{index, y, z, std::pmr::map<double, Secondary>(&pool_)};
     for (auto it = first; it != last; ++it) {
       close_all(it, z);
       owner.secondary.emplace_hint(owner.secondary.end(), it->first, Secondary{it->second.y, z});
@@ -143,7 +148,10 @@ class Sweep {
   const Point& ref_;
   double scale_;
   std::vector<double>& out_;
-  Stair stair_;
+  // Tree nodes from one arena, freed with the sweep: the sweep is mostly allocation otherwise.
+  std::array<std::byte, 8192> buffer_;
+  std::pmr::monotonic_buffer_resource pool_{buffer_.data(), buffer_.size()};
+  Stair stair_{&pool_};
 };
 
 }  // namespace
