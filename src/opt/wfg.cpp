@@ -88,15 +88,6 @@ std::size_t Wfg<Real>::limit_set(const double* p, const double* rows, std::size_
     return k == dims;
   };
   std::size_t m = 0;
-  if (dims <= 3) {
-    // The 2-D and 3-D sweeps step over dominated points themselves: no filter needed.
-    for (std::size_t j = 0; j < n; ++j) {
-      if (j == skip) continue;
-      double* l = out.data() + m++ * d_;
-      for (std::size_t k = 0; k < dims; ++k) l[k] = std::max(p[k], rows[j * d_ + k]);
-    }
-    return m;
-  }
   if (!by_sum) {
     // Keep the non-dominated ones as they come: the cheapest for the small sets of the recursion.
     for (std::size_t j = 0; j < n; ++j) {
