@@ -82,10 +82,11 @@ std::size_t Wfg<Real>::limit_set(const double* p, const double* rows, std::size_
                                  std::size_t skip, bool by_sum) {
   std::vector<double>& out = level(depth);
   out.resize(n * d_);
+  // Branch-free: the outcome is a coin toss per coordinate, which branches mispredict.
   const auto covers = [dims](const double* a, const double* b) {
-    std::size_t k = 0;
-    while (k < dims && a[k] <= b[k]) ++k;
-    return k == dims;
+    bool all = true;
+    for (std::size_t k = 0; k < dims; ++k) all &= a[k] <= b[k];
+    return all;
   };
   std::size_t m = 0;
   if (!by_sum) {
