@@ -20,23 +20,34 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Seconds per call: the median of `repeat` samples (at least one), each sample as many calls as
-// fill 2 ms, so that microsecond calls are not timer noise.
-template <class F>
-double timed(int repeat, F&& f) {
+// Seconds per call of ours and theirs: medians of `repeat` samples (at least one) taken in
+// turns, so that load from elsewhere hits both alike; each sample as many calls as fill 2 ms,
+// so that microsecond calls are not timer noise.
+template <class F, class G>
+std::pair<double, double> timed(int repeat, F&& ours, G&& theirs) {
   using Clock = std::chrono::steady_clock;
-  const auto t0 = Clock::now();
-  f();
-  const double once = std::chrono::duration<double>(Clock::now() - t0).count();
-  const int calls = once >= 2e-3 ? 1 : int(std::min(1e5, 2e-3 / std::max(once, 1e-8)));
-  std::vector<double> t;
-  for (int i = 0; i < std::max(1, repeat); ++i) {
+  const auto batch = [](auto& f) {
+    const auto t0 = Clock::now();
+    f();
+    const double once = std::chrono::duration<double>(Clock::now() - t0).count();
+    return once >= 2e-3 ? 1 : int(std::min(1e5, 2e-3 / std::max(once, 1e-8)));
+  };
+  const int n_ours = batch(ours), n_theirs = batch(theirs);
+  const auto sample = [](auto& f, int calls) {
     const auto start = Clock::now();
     for (int c = 0; c < calls; ++c) f();
-    t.push_back(std::chrono::duration<double>(Clock::now() - start).count() / calls);
+    return std::chrono::duration<double>(Clock::now() - start).count() / calls;
+  };
+  std::vector<double> a, b;
+  for (int i = 0; i < std::max(1, repeat); ++i) {
+    a.push_back(sample(ours, n_ours));
+    b.push_back(sample(theirs, n_theirs));
   }
-  std::nth_element(t.begin(), t.begin() + long(t.size() / 2), t.end());
-  return t[t.size() / 2];
+  const auto median = [](std::vector<double>& t) {
+    std::nth_element(t.begin(), t.begin() + long(t.size() / 2), t.end());
+    return t[t.size() / 2];
+  };
+  return {median(a), median(b)};
 }
 
 }  // namespace
@@ -65,15 +76,15 @@ int bench_hypervolume(const std::string& dir, int repeat, std::size_t max_contri
     const io::FrontFile f = io::read_front(path.string());
     const std::string name = path.stem().string();
     double ours = 0, theirs = 0;
-    const double t_ours = timed(repeat, [&] { ours = opt::hypervolume(f.points, f.ref); });
-    const double t_theirs = timed(repeat, [&] { theirs = pagmo_hypervolume(f.points, f.ref); });
+    const auto [t_ours, t_theirs] = timed(
+        repeat, [&] { ours = opt::hypervolume(f.points, f.ref); }, [&] { theirs = pagmo_hypervolume(f.points, f.ref); });
     const double want = expected.count(name) ? expected[name] : ours;
     std::cout << name << ',' << f.ref.size() << ',' << f.points.size() << ',' << t_ours << ',' << t_theirs << ','
               << t_theirs / t_ours << ',' << std::abs(ours - want) / want << ',' << std::abs(theirs - want) / want;
     if (f.points.size() <= max_contribution_n) {
       std::vector<double> co, cp;
-      const double tc_ours = timed(repeat, [&] { co = opt::contributions(f.points, f.ref); });
-      const double tc_theirs = timed(repeat, [&] { cp = pagmo_contributions(f.points, f.ref); });
+      const auto [tc_ours, tc_theirs] = timed(
+          repeat, [&] { co = opt::contributions(f.points, f.ref); }, [&] { cp = pagmo_contributions(f.points, f.ref); });
       double worst = 0;
       for (std::size_t i = 0; i < co.size(); ++i)
         worst = std::max(worst, std::abs(co[i] - cp[i]) / std::max(1e-300, std::max(std::abs(co[i]), std::abs(cp[i]))));
