@@ -35,7 +35,7 @@ def main(d):
     for i, v in enumerate(variants):
         hv = [float(r["hypervolume"]) for r in runs if r["variant"] == v]
         q1, med, q3 = quartiles(hv)
-        jitter = [i + 0.12 * (k - (len(hv) - 1) / 2) / max(1, len(hv)) for k in range(len(hv))]
+        jitter = [i + 0.3 * (k - (len(hv) - 1) / 2) / max(1, len(hv)) for k in range(len(hv))]
         left.scatter(jitter, hv, s=18, alpha=0.7, color=f"C{i}")
         left.errorbar([i], [med], yerr=[[med - q1], [q3 - med]], fmt="_", markersize=30, capsize=8, color="k")
     left.set_xticks(range(len(variants)), variants, rotation=12)
