@@ -172,7 +172,7 @@ void write_summary(const fs::path& out, const Options& o, const std::vector<RunR
   md << "), **reference point (" << joined(ref, ", ", 6) << ")**. IQR: first to third quartile (linear interpolation). "
      << "Feasible share: of the layouts evaluated in the first, middle (5th) and last tenth of the budget, median over "
      << "seeds.\n\n"
-     << "| variant | median HV | IQR | runs with a feasible front | feasible share (1st / 5th / 10th tenth) | µs per evaluation |\n"
+     << "| variant | median HV | IQR | runs with a feasible front | feasible share (1st / 5th / 10th tenth) | µs per evaluation (wall, selection included) |\n"
      << "|---|---:|---|---:|---|---:|\n";
   std::vector<std::vector<double>> hv_of;
   for (const auto& variant : o.variants) {
