@@ -169,28 +169,30 @@ void write_summary(const fs::path& out, const Options& o, const std::vector<RunR
      << "objectives (";
   for (std::size_t k = 0; k < names.size(); ++k)
     md << (k ? ", " : "") << names[k] << " / " << fmt(spec.objectives.scale(spec.objectives.use[k]));
-  md << "), **reference point (" << joined(ref, ", ", 6) << ")**. IQR: first to third quartile (linear interpolation). "
+  md << "), **reference point (" << joined(ref, ", ", 6) << ")**; a front beyond it in some objective adds 0. "
+     << "IQR: first to third quartile (linear interpolation). "
      << "Feasible share: of the layouts evaluated in the first, middle (5th) and last tenth of the budget, median over "
      << "seeds.\n\n"
-     << "| variant | median HV | IQR | runs with a feasible front | feasible share (1st / 5th / 10th tenth) | µs per evaluation (wall, selection included) |\n"
+     << "| variant | median HV | IQR | runs: feasible front / HV > 0 | feasible share (1st / 5th / 10th tenth) | µs per evaluation (wall, selection included) |\n"
      << "|---|---:|---|---:|---|---:|\n";
   std::vector<std::vector<double>> hv_of;
   for (const auto& variant : o.variants) {
     std::vector<double> hv, us;
     std::vector<std::vector<double>> share(kDeciles);
-    int with_front = 0;
+    int with_front = 0, with_volume = 0;
     for (const auto& r : runs) {
       if (r.variant != variant) continue;
       hv.push_back(r.hypervolume);
       us.push_back(1e6 * r.seconds / double(r.evaluations));
       with_front += r.front_size > 0;
+      with_volume += r.hypervolume > 0;
       for (std::size_t d = 0; d < r.windows.size(); ++d)
         if (r.windows[d].evaluated) share[d].push_back(double(r.windows[d].feasible) / double(r.windows[d].evaluated));
     }
     hv_of.push_back(hv);
     auto share_at = [&](int d) { return share[std::size_t(d)].empty() ? std::string("–") : fmt(100 * quantile(share[std::size_t(d)], 0.5), 3) + "%"; };
     md << "| " << variant << " | " << fmt(quantile(hv, 0.5)) << " | " << fmt(quantile(hv, 0.25)) << "–"
-       << fmt(quantile(hv, 0.75)) << " | " << with_front << "/" << hv.size() << " | " << share_at(0) << " / "
+       << fmt(quantile(hv, 0.75)) << " | " << with_front << " / " << with_volume << " of " << hv.size() << " | " << share_at(0) << " / "
        << share_at(4) << " / " << share_at(9) << " | " << fmt(quantile(us, 0.5), 3) << " |\n";
   }
   md << "\nWilcoxon rank-sum (Mann–Whitney U) tests on the final HV, two-sided, each pair on its own (no "
