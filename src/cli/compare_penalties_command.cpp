@@ -210,7 +210,8 @@ void write_summary(const fs::path& out, const Options& o, const std::vector<RunR
                      << fmt(t.u, 17) << ',' << fmt(t.p, 17) << ',' << (t.exact ? "exact" : "normal") << '\n';
     }
   tests.commit();
-  md << "\nFiles: runs.csv (every run), feasible_share.csv (every tenth of every run), rank_tests.csv, penalties.png.\n";
+  md << "\nFiles: runs.csv (every run), feasible_share.csv (every tenth of every run), rank_tests.csv, penalties.png "
+        "(scripts/plot_penalties.py DIR renders it).\n";
   io::AtomicFile summary((out / "summary.md").string());
   summary.stream() << md.str();
   summary.commit();

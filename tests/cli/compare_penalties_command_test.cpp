@@ -5,35 +5,18 @@
 
 #include <catch2/catch.hpp>
 #include <algorithm>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 
-#include <unistd.h>
+#include "run_mtcs.h"
 
+using mtcs_test::has_matplotlib;
+using mtcs_test::run_mtcs;
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_compare_penalties_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
-}
-
-int run_mtcs(const std::string& args, const fs::path& err = "/dev/null") {
-  const int status = std::system((std::string(MTCS_BINARY) + " " + args + " 2>" + err.string()).c_str());
-  return WEXITSTATUS(status);
-}
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+fs::path scratch(const std::string& name) { return mtcs_test::scratch("compare_penalties", name); }
+std::string read(const fs::path& p) { return mtcs_test::read_text(p); }
 
 using Row = std::map<std::string, std::string>;
 
@@ -65,8 +48,6 @@ double median(std::vector<double> v) {
   const std::size_t n = v.size();
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
-
-bool has_matplotlib() { return std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") == 0; }
 
 const std::string kMold = MTCS_SOURCE_DIR "/molds/plate.yaml";
 const std::string kVariants = "constrained_domination,static_quadratic,death";

@@ -4,32 +4,18 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
-
-#include <unistd.h>
 
 #include "mtcs/mesh/mesh_io.h"
+#include "run_mtcs.h"
 
+using mtcs_test::has_matplotlib;
+using mtcs_test::run_mtcs;
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_replay_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
-}
-
-int run_mtcs(const std::string& args) {
-  const int status = std::system((std::string(MTCS_BINARY) + " " + args + " 2>/dev/null").c_str());
-  return WEXITSTATUS(status);
-}
-
-bool has_matplotlib() { return std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") == 0; }
+fs::path scratch(const std::string& name) { return mtcs_test::scratch("replay_cli", name); }
 
 // Volume of the bores in a bores.csv, each a prism on a regular 24-gon of the bore's radius.
 double prism_volume(const fs::path& bores_csv) {
