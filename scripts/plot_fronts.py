@@ -49,6 +49,8 @@ def main(path):
         tmp = os.path.join(d, frame["png"] + ".tmp.png")
         fig.savefig(tmp, dpi=80)
         os.replace(tmp, os.path.join(d, frame["png"]))  # nothing half-written
+        if (n + 1) % 100 == 0 or n + 1 == len(spec["frames"]):
+            print(f"front plots: {n + 1}/{len(spec['frames'])}", flush=True)
 
 
 if __name__ == "__main__":

@@ -33,18 +33,28 @@ int run_python(const std::vector<std::string>& args, bool quiet) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+std::string script_path(const std::string& script) { return (std::filesystem::path(MTCS_SCRIPTS_DIR) / script).string(); }
+
 }  // namespace
 
+std::string plot_command(const std::string& script, const std::vector<std::string>& args) {
+  std::string command = std::string(kPython) + " " + script_path(script);
+  for (const auto& a : args) command += " " + a;
+  return command;
+}
+
 bool render_plot(const std::string& script, const std::vector<std::string>& args, std::ostream& log) {
-  const std::string path = (std::filesystem::path(MTCS_SCRIPTS_DIR) / script).string();
-  std::string by_hand = std::string(kPython) + " " + path;
-  for (const auto& a : args) by_hand += " " + a;
+  const std::string by_hand = plot_command(script, args);
   if (!std::filesystem::exists(kPython) || run_python({"-c", "import matplotlib"}, true) != 0) {
     log << "no plot: " << kPython << " with matplotlib is not installed (apt-get install python3-matplotlib); "
         << "render it later with: " << by_hand << "\n";
     return false;
   }
-  std::vector<std::string> full{path};
+  if (!std::filesystem::exists(script_path(script))) {
+    log << "no plot: " << script_path(script) << " is missing (mtcs looks for the scripts of the checkout it was built from)\n";
+    return false;
+  }
+  std::vector<std::string> full{script_path(script)};
   full.insert(full.end(), args.begin(), args.end());
   if (run_python(full, false) != 0) {
     log << "the plot script failed; run it by hand: " << by_hand << "\n";

@@ -31,6 +31,7 @@ struct Options {
   std::string dir;
   std::optional<int> generation;
   bool verify = false;
+  bool plots = true;
 };
 
 // Per objective, [lowest, highest] over the feasible fronts of every stored generation: the
@@ -127,7 +128,10 @@ int run_replay(const Options& o) {
   std::cerr << "replayed " << indices.size() << " generation(s), " << checked << " individuals: " << mismatches
             << " objective mismatch(es); fronts in " << out.string() << "/\n";
   std::ostringstream plot_log;
-  if (render_plot("plot_fronts.py", {(out / "frames.json").string()}, plot_log))
+  if (!o.plots)
+    std::cerr << "no front plots (--no-plots); render them with: "
+              << plot_command("plot_fronts.py", {(out / "frames.json").string()}) << "\n";
+  else if (render_plot("plot_fronts.py", {(out / "frames.json").string()}, plot_log))
     std::cerr << "front plots: " << out.string() << "/front_*.png (an animation: ffmpeg -framerate 10 -pattern_type glob -i '"
               << out.string() << "/front_*.png' front.mp4)\n";
   else
@@ -151,6 +155,7 @@ Command add_replay_command(CLI::App& app) {
   sub->add_option("dir", o->dir, "run folder (with run.sqlite)")->required();
   sub->add_option("--generation", o->generation, "only this stored generation");
   sub->add_flag("--verify", o->verify, "fail unless the replay reproduces every objective exactly");
+  sub->add_flag("!--no-plots", o->plots, "no PNGs (about 0.1 s per generation); frames.json is still written");
   return {sub, [o] { return run_replay(*o); }};
 }
 
