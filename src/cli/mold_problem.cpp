@@ -203,7 +203,20 @@ opt::Score MoldProblem::evaluate(const opt::Genotype& g) const {
     std::snprintf(num, sizeof num, " %.6g/%.6g", v.distance, v.margin);
     detail += num;
   }
+  ++evaluated_;
+  if (e.feasible()) ++feasible_;
   return {e.objectives, e.violation, e.feasible(), f.value, std::move(detail)};
+}
+
+opt::Score MoldProblem::ranking(const opt::Score& s) const {
+  if (spec_.penalty.variant == mold::PenaltyVariant::ConstrainedDomination) return s;
+  const double term = eval::penalty_term(s.feasible, s.violation, spec_.penalty);
+  opt::Score r = s;
+  for (std::size_t k = 0; k < r.objectives.size(); ++k)
+    r.objectives[k] += term * spec_.objectives.scale(spec_.objectives.use[k]);
+  r.feasible = true;
+  r.violation = 0;
+  return r;
 }
 
 bool MoldProblem::better(const opt::Score& a, const opt::Score& b) const {

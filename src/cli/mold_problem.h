@@ -5,6 +5,8 @@
 //
 // Genotype layout: [K, then per circuit: diameter index, n, x0, y0, z0, ..., x(n-1), y, z].
 
+#include <atomic>
+
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/mold/genome.h"
 #include "mtcs/opt/problem.h"
@@ -29,6 +31,13 @@ class MoldProblem final : public opt::Problem {
   opt::Genotype recombine(const opt::Genotype& a, const opt::Genotype& b, opt::Rng& rng) const override;
   opt::Score evaluate(const opt::Genotype& g) const override;
   bool better(const opt::Score& a, const opt::Score& b) const override;
+  // Constrained domination as it is; the penalty variants rank every layout as feasible, by each
+  // objective plus the variant's penalty term (in scaled units: the same term on each).
+  opt::Score ranking(const opt::Score& s) const override;
+
+  // Layouts evaluated so far, and how many of them were feasible.
+  long evaluated() const { return evaluated_; }
+  long feasible_evaluated() const { return feasible_; }
 
   mold::Genome genome(const opt::Genotype& g) const;
   opt::Genotype encode(const mold::Genome& genome) const;
@@ -45,6 +54,7 @@ class MoldProblem final : public opt::Problem {
   std::vector<double> weights_;
   MutationRates rates_;
   double initial_step_;
+  mutable std::atomic<long> evaluated_{0}, feasible_{0};
 };
 
 }  // namespace mtcs::cli

@@ -27,7 +27,7 @@
 #include "mtcs/opt/benchmark_problems.h"
 #include "mtcs/opt/sms_emoa.h"
 #include "mtcs/store/run_store.h"
-#include "run_config.h"
+#include "mold_run.h"
 
 namespace mtcs::cli {
 namespace {
@@ -159,14 +159,7 @@ int run_optimize(const Options& o) {
       throw io::InputError(mold_path, 0, 0, "", "the mold spec changed since the run started; start a new run");
     config = parse_run_config(config_text, db_path + ":config", names);
   } else {
-    if (!o.config.empty()) config = load_run_config(o.config, names);
-    if (o.algorithm != "es") config.algorithm = o.algorithm;
-    if (!o.ref.empty()) {
-      if (o.ref.size() != names.size()) throw io::InputError("", 0, 0, "ref", "needs one value per objective");
-      config.ref = o.ref;
-    }
-    if (o.seed) config.es.seed = *o.seed;
-    if (o.evaluations) config.es.evaluations = *o.evaluations;
+    config = resolve_run_config({o.config, o.algorithm == "es" ? "" : o.algorithm, o.ref, o.seed, o.evaluations}, names);
     fs::create_directories(out_dir);
     if (fs::exists(db_path))
       throw io::InputError(db_path, 0, 0, "", "a run exists here: resume it with --resume " + out_dir + " or choose --out");
@@ -180,20 +173,8 @@ int run_optimize(const Options& o) {
   std::optional<tbb::global_control> limit;
   if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
   const MoldProblem problem(pipeline, config.weights, config.mutation);
-  opt::EsConfig es_config = config.es;
-  // Waypoint moves finer than a tenth of the smallest drill change nothing that matters.
-  es_config.min_step = 0.1 * *std::min_element(scene.spec().drilling.diameters.begin(), scene.spec().drilling.diameters.end());
-  const opt::EvolutionStrategy es(problem, es_config);
-  // SMS-EMOA: the reference point in raw units, from the scaled one of the config.
-  const auto& obj = scene.spec().objectives;
-  opt::SmsConfig sms_config;
-  sms_config.mu = config.es.mu;
-  sms_config.evaluations = config.es.evaluations;
-  sms_config.seed = config.es.seed;
-  for (std::size_t k = 0; k < names.size(); ++k)
-    sms_config.ref.push_back((config.ref.empty() ? 4.0 : config.ref[k]) * obj.scale(obj.use[k]));
-  const opt::SmsEmoa sms(problem, sms_config);
-  const bool pareto = config.algorithm == "sms-emoa";
+  const MoldOptimizer optimizer(problem, scene, config);
+  const bool pareto = optimizer.pareto();
   const auto previous = db->last();
   const double seconds_before = previous ? db->summaries().back().seconds : 0;
   const long evals_before = previous ? previous->evaluations : 0;
@@ -201,15 +182,14 @@ int run_optimize(const Options& o) {
   const auto t0 = std::chrono::steady_clock::now();
   auto on_generation = [&](const opt::Generation& g) {
     // SMS-EMOA steps one offspring at a time: store (and report) every mu steps.
-    if (pareto && g.index % sms_config.mu != 0) return;
+    if (pareto && g.index % optimizer.mu() != 0) return;
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     db->save(g, seconds_before + s);
     progress(g, s, g.evaluations - evals_before);
   };
-  opt::Generation last = pareto ? opt::run(sms, previous ? &*previous : nullptr, on_generation)
-                                : opt::run(es, previous ? &*previous : nullptr, on_generation);
+  opt::Generation last = optimizer.run(previous ? &*previous : nullptr, on_generation);
   if (pareto) {
-    if (last.index % sms_config.mu != 0)  // the last steps, unless just stored
+    if (last.index % optimizer.mu() != 0)  // the last steps, unless just stored
       db->save(last, seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     std::stable_sort(last.population.begin(), last.population.end(),
                      [&](const opt::Individual& a, const opt::Individual& b) { return problem.better(a.score, b.score); });
@@ -249,8 +229,8 @@ int run_optimize(const Options& o) {
     const auto front = opt::SmsEmoa::front(last);
     summary["algorithm"] = "sms-emoa";
     summary["front_size"] = front.size();
-    summary["hypervolume"] = opt::hypervolume(front, sms_config.ref);
-    summary["reference_point"] = sms_config.ref;
+    summary["hypervolume"] = opt::hypervolume(front, optimizer.raw_reference());
+    summary["reference_point"] = optimizer.raw_reference();
     // front.csv: the final feasible non-dominated objective vectors, for plotting.
     io::AtomicFile csv((fs::path(out_dir) / "front.csv").string());
     for (std::size_t k = 0; k < names.size(); ++k) csv.stream() << (k ? "," : "") << names[k];

@@ -10,16 +10,17 @@ Fitness fitness(const Evaluation& e, const mold::MoldSpec& spec, const std::vect
   for (std::size_t k = 0; k < e.objectives.size(); ++k) {
     value += (k < weights.size() ? weights[k] : 1.0) * e.objectives[k] / o.scale(o.use[k]);
   }
-  Fitness f{e.feasible(), e.violation, value};
-  switch (spec.penalty.variant) {
-    case mold::PenaltyVariant::StaticLinear: f.value += spec.penalty.weight * e.violation; break;
-    case mold::PenaltyVariant::StaticQuadratic: f.value += spec.penalty.weight * e.violation * e.violation; break;
-    case mold::PenaltyVariant::Death:
-      if (!f.feasible) f.value = std::numeric_limits<double>::infinity();
-      break;
-    case mold::PenaltyVariant::ConstrainedDomination: break;
+  return {e.feasible(), e.violation, value + penalty_term(e.feasible(), e.violation, spec.penalty)};
+}
+
+double penalty_term(bool feasible, double violation, const mold::Penalty& penalty) {
+  switch (penalty.variant) {
+    case mold::PenaltyVariant::StaticLinear: return penalty.weight * violation;
+    case mold::PenaltyVariant::StaticQuadratic: return penalty.weight * violation * violation;
+    case mold::PenaltyVariant::Death: return feasible ? 0 : std::numeric_limits<double>::infinity();
+    case mold::PenaltyVariant::ConstrainedDomination: return 0;
   }
-  return f;
+  return 0;
 }
 
 bool better(const Fitness& a, const Fitness& b, mold::PenaltyVariant variant) {

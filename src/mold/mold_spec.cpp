@@ -199,11 +199,9 @@ Penalty parse_penalty(const YamlReader& r, const YAML::Node& n) {
   Penalty p;
   if (n["variant"]) {
     const std::string s = r.text(n["variant"], "penalty.variant");
-    if (s == "constrained_domination") p.variant = PenaltyVariant::ConstrainedDomination;
-    else if (s == "static_linear") p.variant = PenaltyVariant::StaticLinear;
-    else if (s == "static_quadratic") p.variant = PenaltyVariant::StaticQuadratic;
-    else if (s == "death") p.variant = PenaltyVariant::Death;
-    else r.fail(n["variant"], "penalty.variant", "expected constrained_domination, static_linear, static_quadratic or death; got '" + s + "'");
+    const auto variant = penalty_variant(s);
+    if (!variant) r.fail(n["variant"], "penalty.variant", "expected " + kPenaltyVariantNames + "; got '" + s + "'");
+    p.variant = *variant;
   }
   if (n["power"]) p.power = r.number(n["power"], "penalty.power", 1, 4);
   if (n["weight"]) p.weight = r.number(n["weight"], "penalty.weight", 0, kHuge);
@@ -277,6 +275,13 @@ std::string to_string(Objective o) {
     case Objective::Cost: return "cost";
   }
   return "?";
+}
+
+std::optional<PenaltyVariant> penalty_variant(const std::string& name) {
+  for (const auto v : {PenaltyVariant::ConstrainedDomination, PenaltyVariant::StaticLinear,
+                       PenaltyVariant::StaticQuadratic, PenaltyVariant::Death})
+    if (to_string(v) == name) return v;
+  return std::nullopt;
 }
 
 std::string to_string(PenaltyVariant v) {

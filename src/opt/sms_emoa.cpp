@@ -21,13 +21,13 @@ bool dominates(const Score& a, const Score& b) {
 }
 
 // Indices of the worst non-dominated front (fast non-dominated sorting, Deb et al.).
-std::vector<std::size_t> worst_front(const std::vector<Individual>& pop, bool* is_first) {
-  const std::size_t n = pop.size();
+std::vector<std::size_t> worst_front(const std::vector<Score>& scores, bool* is_first) {
+  const std::size_t n = scores.size();
   std::vector<int> count(n, 0);
   std::vector<std::vector<std::size_t>> beats(n);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < n; ++j)
-      if (i != j && dominates(pop[i].score, pop[j].score)) beats[i].push_back(j), ++count[j];
+      if (i != j && dominates(scores[i], scores[j])) beats[i].push_back(j), ++count[j];
   std::vector<std::size_t> current;
   for (std::size_t i = 0; i < n; ++i)
     if (count[i] == 0) current.push_back(i);
@@ -66,24 +66,27 @@ Generation SmsEmoa::step(const Generation& prev) const {
   next.population.push_back(std::move(child));
   ++next.evaluations;
 
-  // Reduce: drop one member of the worst front.
+  // Reduce: drop one member of the worst front, ranked as the problem asks (its penalty method).
+  std::vector<Score> ranked;
+  ranked.reserve(next.population.size());
+  for (const auto& ind : next.population) ranked.push_back(problem_.ranking(ind.score));
   bool first = false;
-  const std::vector<std::size_t> worst = worst_front(next.population, &first);
+  const std::vector<std::size_t> worst = worst_front(ranked, &first);
   std::size_t drop = worst.front();
   if (worst.size() > 1) {
-    const bool feasible = next.population[worst.front()].score.feasible;
+    const bool feasible = ranked[worst.front()].feasible;
     if (!feasible) {
       // Infeasible front: the largest violation goes.
       for (const std::size_t i : worst)
-        if (next.population[i].score.violation > next.population[drop].score.violation) drop = i;
+        if (ranked[i].violation > ranked[drop].violation) drop = i;
     } else {
       // Candidates: the whole worst front, or (paper's rule, fronts after the first) those
       // dominated by the most members; among them the least exclusive hypervolume goes.
       std::vector<int> count(worst.size(), 0);
       if (config_.domcount_then_hv && !first)
         for (std::size_t w = 0; w < worst.size(); ++w)
-          for (const auto& other : next.population)
-            count[w] += dominates(other.score, next.population[worst[w]].score) ? 1 : 0;
+          for (const auto& other : ranked)
+            count[w] += dominates(other, ranked[worst[w]]) ? 1 : 0;
       const int most = *std::max_element(count.begin(), count.end());
       std::vector<std::size_t> tied;
       for (std::size_t w = 0; w < worst.size(); ++w)
@@ -91,7 +94,7 @@ Generation SmsEmoa::step(const Generation& prev) const {
       std::size_t w = tied.front();
       if (tied.size() > 1) {
         std::vector<Point> pts;
-        for (const std::size_t i : worst) pts.push_back(next.population[i].score.objectives);
+        for (const std::size_t i : worst) pts.push_back(ranked[i].objectives);
         const std::vector<double> c = contributions(pts, config_.ref);
         for (const std::size_t t : tied)
           if (c[t] < c[w]) w = t;

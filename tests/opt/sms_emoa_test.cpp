@@ -3,6 +3,9 @@
 // ZDT2 0.5344; the best 100 points can reach 0.8721 on ZDT1), and its determinism.
 
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+#include <memory>
 
 #include "mtcs/opt/benchmark_problems.h"
 #include "mtcs/opt/sms_emoa.h"
@@ -45,4 +48,53 @@ TEST_CASE("benchmark problems: known points", "[opt][sms-emoa]") {
   const auto f = dtlz2->evaluate(x).objectives;
   CHECK(f[0] * f[0] + f[1] * f[1] + f[2] * f[2] == Approx(1.0));
   CHECK_THROWS_AS(make_benchmark_problem("zdt5"), std::invalid_argument);
+}
+
+namespace {
+
+// ZDT1 with a constraint x0 <= 0.5, ranked as a death penalty does: an infeasible point's
+// objectives are infinite (worse than any feasible point, equal to every infeasible one).
+class DeathRankedZdt1 final : public Problem {
+ public:
+  DeathRankedZdt1() : zdt1_(make_benchmark_problem("zdt1")) {}
+  std::string name() const override { return "zdt1-death"; }
+  Genotype sample(Rng& rng) const override { return zdt1_->sample(rng); }
+  std::vector<double> initial_steps(const Genotype& g) const override { return zdt1_->initial_steps(g); }
+  void mutate(Genotype& g, const std::vector<double>& s, Rng& rng) const override { zdt1_->mutate(g, s, rng); }
+  Genotype recombine(const Genotype& a, const Genotype& b, Rng& rng) const override { return zdt1_->recombine(a, b, rng); }
+  Score evaluate(const Genotype& g) const override {
+    Score s = zdt1_->evaluate(g);
+    s.violation = std::max(0.0, g[0] - 0.5);
+    s.feasible = s.violation == 0;
+    return s;
+  }
+  Score ranking(const Score& s) const override {
+    if (s.feasible) return s;
+    Score r = s;
+    for (double& v : r.objectives) v = std::numeric_limits<double>::infinity();
+    r.feasible = true, r.violation = 0;
+    return r;
+  }
+
+ private:
+  std::unique_ptr<Problem> zdt1_;
+};
+
+}  // namespace
+
+TEST_CASE("SMS-EMOA ranks by the problem's ranking: a death penalty's infinite objectives", "[opt][sms-emoa]") {
+  const DeathRankedZdt1 p;
+  SmsConfig c;
+  c.mu = 20;
+  c.evaluations = 3000;
+  c.ref = {1.1, 1.1};
+  const Generation last = run(SmsEmoa(p, c), nullptr, {});
+  // Infinite points contribute nothing and lose to every feasible point: none survives.
+  for (const auto& ind : last.population) CHECK(ind.score.feasible);
+  const auto front = SmsEmoa::front(last);
+  REQUIRE(front.size() > 1);
+  for (const auto& f : front) CHECK(f[0] <= 0.5);
+  const double hv = hypervolume(front, c.ref);
+  CHECK(std::isfinite(hv));
+  CHECK(hv > 0.3);
 }

@@ -42,6 +42,9 @@ struct Fitness {
 };
 
 Fitness fitness(const Evaluation& e, const mold::MoldSpec& spec, const std::vector<double>& weights);
+// The penalty variant's term, in scaled-objective units: weight x CV (static linear), weight x
+// CV^2 (static quadratic), infinity for an infeasible layout (death), 0 (constrained domination).
+double penalty_term(bool feasible, double violation, const mold::Penalty& penalty);
 // Strict weak ordering: constrained domination (feasible first, then less violation, then
 // value) for that variant; otherwise by value alone.
 bool better(const Fitness& a, const Fitness& b, mold::PenaltyVariant variant);

@@ -92,6 +92,9 @@ struct Objectives {
 
 enum class PenaltyVariant { ConstrainedDomination, StaticLinear, StaticQuadratic, Death };
 std::string to_string(PenaltyVariant v);
+// The variant of that name (as to_string spells it), or none.
+std::optional<PenaltyVariant> penalty_variant(const std::string& name);
+inline const std::string kPenaltyVariantNames = "constrained_domination, static_linear, static_quadratic or death";
 
 struct Penalty {
   PenaltyVariant variant = PenaltyVariant::ConstrainedDomination;

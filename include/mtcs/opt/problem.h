@@ -46,6 +46,10 @@ class Problem {
   virtual Score evaluate(const Genotype& g) const = 0;
   // Strict weak order of scores; the default compares values.
   virtual bool better(const Score& a, const Score& b) const { return a.value < b.value; }
+  // The score SMS-EMOA ranks by. The default is the score itself, ranked by constrained
+  // domination (feasible first, then less violation, then Pareto); a problem with a penalty
+  // method instead folds the violation into the objectives and calls every point feasible.
+  virtual Score ranking(const Score& s) const { return s; }
 };
 
 }  // namespace mtcs::opt

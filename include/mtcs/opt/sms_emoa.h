@@ -3,8 +3,10 @@
 // one offspring (recombination of two random parents, then mutation) and removes one member of
 // the worst non-dominated front: either the one dominated by most others, then by least
 // exclusive hypervolume ("domcount-then-hv", the paper's rule for fronts after the first), or by
-// least contribution alone ("hv-only"). Infeasible points come after every feasible one,
-// ordered by violation (constrained domination). Contributions use the given reference point.
+// least contribution alone ("hv-only"). Points are ranked by Problem::ranking: by default
+// infeasible points come after every feasible one, ordered by violation (constrained
+// domination); a penalty method ranks penalised objectives instead. Contributions use the given
+// reference point.
 
 #include <cstdint>
 #include <functional>
@@ -33,7 +35,8 @@ class SmsEmoa {
   bool done(const Generation& g) const { return g.evaluations >= config_.evaluations; }
   const SmsConfig& config() const { return config_; }
 
-  // The feasible non-dominated points of a population, and their hypervolume.
+  // The feasible non-dominated points of a population (by the scores themselves, whatever the
+  // ranking the search used).
   static std::vector<Point> front(const Generation& g);
 
  private:

@@ -1,0 +1,41 @@
+#pragma once
+// Running the built mtcs as a user would, from CLI tests: a scratch folder per test process
+// (tests run in parallel), the exit code, files read whole.
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace mtcs_test {
+
+namespace fs = std::filesystem;
+
+// DIR/name in a folder of this process, e.g. scratch("replay", "run").
+inline fs::path scratch(const std::string& topic, const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("mtcs_" + topic + "_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+// mtcs ARGS with stderr to `err`; the exit code.
+inline int run_mtcs(const std::string& args, const fs::path& err = "/dev/null") {
+  const int status = std::system((std::string(MTCS_BINARY) + " " + args + " 2>" + err.string()).c_str());
+  return WEXITSTATUS(status);
+}
+
+inline std::string read_text(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// Whether the PNG plots can be rendered here (the commands skip them otherwise).
+inline bool has_matplotlib() { return std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") == 0; }
+
+}  // namespace mtcs_test
