@@ -152,11 +152,53 @@ std::optional<TriangleBvh::Hit> TriangleBvh::first_hit(const Vec3& p, const Vec3
   return best;
 }
 
-double cylinder_clearance(const TriangleBvh& bvh, const Vec3& p0, const Vec3& p1, double radius, double cap) {
-  const double axis = bvh.segment_distance(p0, p1, cap + radius);
-  if (axis <= radius) return 0;
-  if (bvh.contains(p0)) return 0;  // the axis does not reach the surface: all inside or all out
-  return std::min(cap, axis - radius);
+geometry::TriangleDistanceResult TriangleBvh::cylinder_distance(const geometry::Cylinder& cyl, double cap) const {
+  geometry::TriangleDistanceResult best{cap, Vec3::Zero(), Vec3::Zero(), true};
+  if (tris_.empty()) return best;
+  // Two lower bounds per node: the box of the cylinder (each axis' half-extent is
+  // r sqrt(1 - w_k^2)) against the node's box, cheap; then the capsule against the node's box.
+  const Vec3 axis = cyl.p1 - cyl.p0;
+  const double len2 = axis.squaredNorm();
+  const Vec3 half = len2 > 0 ? Vec3(cyl.radius * (Vec3::Ones() - axis.cwiseAbs2() / len2).cwiseMax(0.0).cwiseSqrt())
+                             : Vec3(cyl.radius, cyl.radius, 0);
+  const Box cyl_box{cyl.p0.cwiseMin(cyl.p1) - half, cyl.p0.cwiseMax(cyl.p1) + half};
+  auto capsule_bound = [&](const Box& box) {
+    return geometry::segment_box_distance(cyl.p0, cyl.p1, box) - cyl.radius;
+  };
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (box_box_distance(cyl_box, node.box) >= best.distance) continue;
+    if (capsule_bound(node.box) >= best.distance) continue;
+    if (node.count > 0) {
+      for (int i = node.first; i < node.first + node.count; ++i) {
+        const auto d = geometry::distance(cyl, {tris_[i][0], tris_[i][1], tris_[i][2]}, {.upper_bound = best.distance});
+        if (d.bounded) continue;
+        best = d;
+        if (d.intersecting()) return best;
+      }
+      continue;
+    }
+    // Nearer child last, so that it is visited first.
+    const double dl = box_box_distance(cyl_box, nodes_[node.first].box);
+    const double dr = box_box_distance(cyl_box, nodes_[node.first + 1].box);
+    if (dl < dr) stack[top++] = node.first + 1, stack[top++] = node.first;
+    else stack[top++] = node.first, stack[top++] = node.first + 1;
+  }
+  return best;
+}
+
+Clearance cylinder_clearance(const TriangleBvh& bvh, const geometry::Cylinder& cylinder, double upper_bound) {
+  const auto d = bvh.cylinder_distance(cylinder, upper_bound);
+  // No contact with the surface: the cylinder is wholly inside the solid or wholly outside, and
+  // any of its points tells which.
+  if (d.distance > 0) {
+    const Vec3 mid = (cylinder.p0 + cylinder.p1) / 2;
+    if (bvh.contains(mid)) return {0, false, true, mid, mid};
+  }
+  return {d.distance, d.bounded, false, d.on_cylinder, d.on_triangle};
 }
 
 }  // namespace mtcs::mesh

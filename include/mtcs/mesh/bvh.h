@@ -6,9 +6,11 @@
 // axis of the node's centroid box (balanced depth, cheap to build; the surface-area heuristic
 // is the mesh issue's to weigh).
 
+#include <limits>
 #include <optional>
 #include <vector>
 
+#include "mtcs/geometry/cylinder_triangle_distance.h"
 #include "mtcs/mesh/triangle_mesh.h"
 
 namespace mtcs::mesh {
@@ -20,6 +22,10 @@ class TriangleBvh {
   // Distance from the segment to the surface when it is below `cap`; otherwise some value
   // >= cap (the search stops there).
   double segment_distance(const Vec3& p0, const Vec3& p1, double cap) const;
+
+  // Distance from the solid cylinder to the surface (not the solid) when it is below `cap`;
+  // otherwise `bounded` and a proven lower bound >= cap. Witnesses as in geometry::distance.
+  geometry::TriangleDistanceResult cylinder_distance(const geometry::Cylinder& cylinder, double cap) const;
 
   // Whether p lies inside the closed surface (parity of the crossings of a ray).
   bool contains(const Vec3& p) const;
@@ -49,10 +55,21 @@ class TriangleBvh {
   std::vector<std::array<Vec3, 3>> tris_;
 };
 
-// Clearance of a solid cylinder from the solid bounded by the mesh, first version: the capsule
-// around the cylinder (distance of the axis minus the radius), 0 when the axis touches or lies
-// inside the solid. Never larger than the true distance: conservative by at most the radius at
-// the bore's flat ends. Values >= cap are reported as cap.
-double cylinder_clearance(const TriangleBvh& bvh, const Vec3& p0, const Vec3& p1, double radius, double cap);
+// Clearance of a solid cylinder from the solid bounded by a closed mesh: the exact distance to
+// the surface, or 0 when the cylinder touches it or lies inside the solid ("buried": no surface
+// within reach, but the axis midpoint is inside). With `upper_bound` (the clearance the caller
+// needs) the search stops as soon as it is proved: `bounded` then means distance >= upper_bound.
+struct Clearance {
+  double distance = 0;
+  bool bounded = false;
+  bool buried = false;
+  Vec3 on_cylinder = Vec3::Zero();  // witnesses, unspecified when bounded; the axis midpoint
+  Vec3 on_surface = Vec3::Zero();   // twice when buried
+
+  Vec3 where() const { return (on_cylinder + on_surface) / 2; }
+};
+
+Clearance cylinder_clearance(const TriangleBvh& bvh, const geometry::Cylinder& cylinder,
+                             double upper_bound = std::numeric_limits<double>::infinity());
 
 }  // namespace mtcs::mesh
