@@ -11,6 +11,8 @@
 // the triangle; it contains the axis' crossing with the plane if there is one, and otherwise a
 // rim crosses the plane (the height over the cylinder is extreme on the rims, and the axis
 // stays on one side), whose crossing points are then inside the triangle.
+// Lower bounds for the early exit, cheap ones only (the edges' own pretests bound the rest):
+// how far the triangle lies beyond an end plane, and the axis' distance to the triangle's plane.
 
 #include "mtcs/geometry/cylinder_triangle_distance.h"
 
@@ -34,24 +36,35 @@ TriangleDistanceResult touching(const Vec3& x) { return {0, x, x, false}; }
 
 TriangleDistanceResult distance(const Cylinder& cyl, const Triangle& tri, const DistanceRequest& request) {
   const double upper = request.upper_bound;
-  // Capsule lower bound; an axis touching the triangle is an intersection.
-  const double axis_distance = segment_triangle_distance(cyl.p0, cyl.p1, tri.a, tri.b, tri.c);
-  const double lower = axis_distance - cyl.radius;
-  if (lower >= upper) return {lower, Vec3::Zero(), Vec3::Zero(), true};
+  // How far the triangle lies beyond an end plane.
+  const Vec3 axis = cyl.p1 - cyl.p0;
+  const double len = axis.norm();
+  const Vec3 w = len > 0 ? Vec3(axis / len) : Vec3::UnitZ();
+  const double ta = w.dot(tri.a - cyl.p0), tb = w.dot(tri.b - cyl.p0), tc = w.dot(tri.c - cyl.p0);
+  const double slab = std::max(-std::max({ta, tb, tc}), std::min({ta, tb, tc}) - len);
+  if (slab >= upper) return {slab, Vec3::Zero(), Vec3::Zero(), true};
+  // The axis against the triangle's plane: crossing it inside the triangle is an intersection;
+  // staying on one side bounds the distance from below (the plane holds the triangle).
   const Vec3 normal = (tri.b - tri.a).cross(tri.c - tri.a);
   const double area2 = normal.norm();
-  if (axis_distance == 0) {
-    const double h0 = normal.dot(cyl.p0 - tri.a), h1 = normal.dot(cyl.p1 - tri.a);
-    return touching(h0 == h1 ? cyl.p0 : Vec3(cyl.p0 + (h0 / (h0 - h1)) * (cyl.p1 - cyl.p0)));
+  double lower = slab;
+  if (area2 > 0) {
+    const double h0 = normal.dot(cyl.p0 - tri.a) / area2, h1 = normal.dot(cyl.p1 - tri.a) / area2;
+    if ((h0 > 0 && h1 > 0) || (h0 < 0 && h1 < 0)) {
+      lower = std::max(lower, std::min(std::abs(h0), std::abs(h1)) - cyl.radius);
+    } else if (h0 != h1) {
+      const Vec3 x = cyl.p0 + (h0 / (h0 - h1)) * axis;
+      if (projects_inside(x, tri, normal)) return touching(x);
+    } else if (segment_triangle_distance(cyl.p0, cyl.p1, tri.a, tri.b, tri.c) == 0) {
+      return touching(cyl.p0);  // the axis lies in the plane and meets the triangle
+    }
   }
+  if (lower >= upper) return {lower, Vec3::Zero(), Vec3::Zero(), true};
 
   TriangleDistanceResult best{std::numeric_limits<double>::infinity(), Vec3::Zero(), Vec3::Zero(), false};
   // Rims against the triangle's interior (a zero-area triangle has none: its edges cover it).
   if (area2 > 0) {
     const Vec3 n = normal / area2;
-    const Vec3 axis = cyl.p1 - cyl.p0;
-    const double len = axis.norm();
-    const Vec3 w = len > 0 ? Vec3(axis / len) : Vec3::UnitZ();
     const Vec3 across = n - n.dot(w) * w;  // the plane's steepest direction within the end disks
     const double slope = across.norm();
     const Vec3 u = slope > 0 ? Vec3(across / slope) : Vec3::Zero();

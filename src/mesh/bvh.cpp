@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "mtcs/geometry/segment_distance.h"
+
 namespace mtcs::mesh {
 namespace {
 
@@ -58,6 +60,11 @@ TriangleBvh::TriangleBvh(const TriangleMesh& mesh) {
   nodes_.reserve(tris_.size() / 2 + 2);
   nodes_.resize(1);
   build(0, 0, int(tris_.size()), centroids);
+  spheres_.reserve(tris_.size());
+  for (std::size_t i = 0; i < tris_.size(); ++i) {
+    const Vec3 c = centroids[i];
+    spheres_.push_back({c, std::max({(tris_[i][0] - c).norm(), (tris_[i][1] - c).norm(), (tris_[i][2] - c).norm()})});
+  }
 }
 
 void TriangleBvh::build(int node, int first, int count, std::vector<Vec3>& centroids) {
@@ -155,25 +162,63 @@ std::optional<TriangleBvh::Hit> TriangleBvh::first_hit(const Vec3& p, const Vec3
 geometry::TriangleDistanceResult TriangleBvh::cylinder_distance(const geometry::Cylinder& cyl, double cap) const {
   geometry::TriangleDistanceResult best{cap, Vec3::Zero(), Vec3::Zero(), true};
   if (tris_.empty()) return best;
-  // Two lower bounds per node: the box of the cylinder (each axis' half-extent is
-  // r sqrt(1 - w_k^2)) against the node's box, cheap; then the capsule against the node's box.
+  // Node tests, all cheap (an exact segment-box distance costs more than it saves):
+  //  * lower bound, for ordering and pruning: the larger of the cylinder's box (half-extent
+  //    r sqrt(1 - w_k^2) along axis k) to the node's box, the capsule to the node's bounding
+  //    sphere, and how far the node lies beyond an end plane;
+  //  * a node the axis misses even when its box is grown by best + r along every axis (a cube
+  //    around each point contains the ball) holds nothing closer than best.
   const Vec3 axis = cyl.p1 - cyl.p0;
   const double len2 = axis.squaredNorm();
   const Vec3 half = len2 > 0 ? Vec3(cyl.radius * (Vec3::Ones() - axis.cwiseAbs2() / len2).cwiseMax(0.0).cwiseSqrt())
                              : Vec3(cyl.radius, cyl.radius, 0);
   const Box cyl_box{cyl.p0.cwiseMin(cyl.p1) - half, cyl.p0.cwiseMax(cyl.p1) + half};
-  auto capsule_bound = [&](const Box& box) {
-    return geometry::segment_box_distance(cyl.p0, cyl.p1, box) - cyl.radius;
+  const geometry::Segment axis_segment{cyl.p0, cyl.p1};
+  const double len = std::sqrt(len2);
+  const Vec3 w = len > 0 ? Vec3(axis / len) : Vec3::UnitZ();
+  auto lower_bound = [&](const Box& box) {
+    const Vec3 center = (box.min + box.max) / 2, extent = box.max - center;
+    const double sphere = geometry::point_segment_distance(center, axis_segment) - extent.norm() - cyl.radius;
+    // The box beyond an end plane: the capsule bound is weakest there.
+    const double t = w.dot(center - cyl.p0), spread = w.cwiseAbs().dot(extent);
+    const double slab = std::max(-(t + spread), t - spread - len);
+    return std::max({box_box_distance(cyl_box, box), sphere, slab});
   };
-  int stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const Node& node = nodes_[stack[--top]];
-    if (box_box_distance(cyl_box, node.box) >= best.distance) continue;
-    if (capsule_bound(node.box) >= best.distance) continue;
+  auto axis_reaches = [&](const Box& box, double grow) {
+    double t0 = 0, t1 = 1;
+    for (int k = 0; k < 3; ++k) {
+      const double lo = box.min[k] - grow, hi = box.max[k] + grow;
+      if (axis[k] == 0) {
+        if (cyl.p0[k] < lo || cyl.p0[k] > hi) return false;
+        continue;
+      }
+      double a = (lo - cyl.p0[k]) / axis[k], b = (hi - cyl.p0[k]) / axis[k];
+      if (a > b) std::swap(a, b);
+      t0 = std::max(t0, a), t1 = std::min(t1, b);
+      if (t0 > t1) return false;
+    }
+    return true;
+  };
+  // Best-first: the node with the smallest bound next, so that the nearest triangles are met
+  // early and the cap tightens before the far ones are reached.
+  struct Entry {
+    double bound;
+    int node;
+    bool operator<(const Entry& o) const { return bound > o.bound; }  // min-heap
+  };
+  thread_local std::vector<Entry> heap;
+  heap.clear();
+  heap.push_back({lower_bound(nodes_[0].box), 0});
+  while (!heap.empty()) {
+    std::pop_heap(heap.begin(), heap.end());
+    const Entry e = heap.back();
+    heap.pop_back();
+    if (e.bound >= best.distance) break;  // every other entry is farther
+    const Node& node = nodes_[e.node];
+    if (!axis_reaches(node.box, best.distance + cyl.radius)) continue;
     if (node.count > 0) {
       for (int i = node.first; i < node.first + node.count; ++i) {
+        if (geometry::point_segment_distance(spheres_[i].center, axis_segment) - spheres_[i].radius - cyl.radius >= best.distance) continue;
         const auto d = geometry::distance(cyl, {tris_[i][0], tris_[i][1], tris_[i][2]}, {.upper_bound = best.distance});
         if (d.bounded) continue;
         best = d;
@@ -181,23 +226,29 @@ geometry::TriangleDistanceResult TriangleBvh::cylinder_distance(const geometry::
       }
       continue;
     }
-    // Nearer child last, so that it is visited first.
-    const double dl = box_box_distance(cyl_box, nodes_[node.first].box);
-    const double dr = box_box_distance(cyl_box, nodes_[node.first + 1].box);
-    if (dl < dr) stack[top++] = node.first + 1, stack[top++] = node.first;
-    else stack[top++] = node.first, stack[top++] = node.first + 1;
+    for (const int child : {node.first, node.first + 1}) {
+      const double bound = lower_bound(nodes_[child].box);
+      if (bound >= best.distance) continue;
+      heap.push_back({bound, child});
+      std::push_heap(heap.begin(), heap.end());
+    }
   }
   return best;
 }
 
 Clearance cylinder_clearance(const TriangleBvh& bvh, const geometry::Cylinder& cylinder, double upper_bound) {
-  const auto d = bvh.cylinder_distance(cylinder, upper_bound);
-  // No contact with the surface: the cylinder is wholly inside the solid or wholly outside, and
-  // any of its points tells which.
-  if (d.distance > 0) {
-    const Vec3 mid = (cylinder.p0 + cylinder.p1) / 2;
-    if (bvh.contains(mid)) return {0, false, true, mid, mid};
+  // A cylinder whose axis midpoint is inside the solid meets it: buried or crossing the
+  // surface, the distance is 0 either way. One ray cast settles that before the search, which
+  // would otherwise look for the nearest triangle of a buried cylinder in vain.
+  const Vec3 mid = (cylinder.p0 + cylinder.p1) / 2;
+  if (bvh.contains(mid)) {
+    // The smallest cap: the search visits only what may touch, to tell buried from crossing.
+    const auto touch = bvh.cylinder_distance(cylinder, std::numeric_limits<double>::denorm_min());
+    if (touch.bounded) return {0, false, true, mid, mid};
+    return {0, false, false, touch.on_cylinder, touch.on_triangle};
   }
+  // Outside: no contact with the surface means wholly outside.
+  const auto d = bvh.cylinder_distance(cylinder, upper_bound);
   return {d.distance, d.bounded, false, d.on_cylinder, d.on_triangle};
 }
 

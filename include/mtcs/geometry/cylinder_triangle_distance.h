@@ -7,8 +7,8 @@
 // cylinder point is the rim point nearest the triangle's plane (closed form; a disk or a shell
 // parallel to the plane has a closest pair on a rim or an edge as well). Intersection: an edge
 // meets the cylinder, the axis crosses the triangle, or a rim crosses the plane inside it; when
-// none of them does, the two are disjoint. The capsule (axis distance minus radius) is a lower
-// bound that ends the query early when it reaches the upper bound.
+// none of them does, the two are disjoint. Cheap lower bounds (beyond an end plane; the axis'
+// distance to the plane minus the radius) end the query early when they reach the upper bound.
 
 #include <limits>
 

@@ -1,8 +1,9 @@
 #pragma once
 // A CSV of solid cylinders (bores), one a row: id,p0x,p0y,p0z,p1x,p1y,p1z,r. Columns are found
-// by header name; extra columns (e.g. the certified cases' dist_lo, dist_hi, category) are
-// ignored.
+// by header name; the certified cases' dist_lo, dist_hi, category are read when present, other
+// extra columns are ignored.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,8 @@ namespace mtcs::io {
 struct NamedCylinder {
   std::string id;
   geometry::Cylinder cylinder;
+  std::optional<double> dist_lo, dist_hi;  // certified interval, when the file has it
+  std::string category;
   int line = 0;  // 1-based line in the file
 };
 

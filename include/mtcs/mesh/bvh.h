@@ -53,6 +53,12 @@ class TriangleBvh {
 
   std::vector<Node> nodes_;
   std::vector<std::array<Vec3, 3>> tris_;
+  // Per triangle (same order): a bounding sphere, the cheapest distance bound at the leaves.
+  struct Sphere {
+    Vec3 center;
+    double radius;
+  };
+  std::vector<Sphere> spheres_;
 };
 
 // Clearance of a solid cylinder from the solid bounded by a closed mesh: the exact distance to
