@@ -34,7 +34,8 @@ TriangleDistanceResult touching(const Vec3& x) { return {0, x, x, false}; }
 
 }  // namespace
 
-TriangleDistanceResult distance(const Cylinder& cyl, const Triangle& tri, const DistanceRequest& request) {
+TriangleDistanceResult distance(const Cylinder& cyl, const Triangle& tri, const DistanceRequest& request,
+                                unsigned skip_edges) {
   const double upper = request.upper_bound;
   // How far the triangle lies beyond an end plane.
   const Vec3 axis = cyl.p1 - cyl.p0;
@@ -90,15 +91,21 @@ TriangleDistanceResult distance(const Cylinder& cyl, const Triangle& tri, const 
     }
   }
   // Edges against the solid cylinder.
-  for (const auto& [e0, e1] : {std::pair{tri.a, tri.b}, std::pair{tri.b, tri.c}, std::pair{tri.c, tri.a}}) {
+  const std::pair<const Vec3&, const Vec3&> edges[3] = {{tri.a, tri.b}, {tri.b, tri.c}, {tri.c, tri.a}};
+  unsigned examined = 0;
+  for (unsigned k = 0; k < 3; ++k) {
+    if (skip_edges >> k & 1u) continue;
+    examined |= 1u << k;
     DistanceRequest edge_request = request;
     edge_request.upper_bound = std::min(upper, best.distance);
-    const DistanceResult d = geometry::distance(cyl, Cylinder{e0, e1, 0.0}, edge_request);
+    const DistanceResult d = geometry::distance(cyl, Cylinder{edges[k].first, edges[k].second, 0.0}, edge_request);
     if (d.bounded || !(d.distance < best.distance)) continue;
     best = {d.distance, d.witness_a, d.witness_b, false};
-    if (d.intersecting()) return best;
+    if (d.intersecting()) break;
   }
-  if (!(best.distance < upper)) return {std::max(lower, upper), Vec3::Zero(), Vec3::Zero(), true};
+  best.edges_examined = examined;
+  if (best.intersecting()) return best;
+  if (!(best.distance < upper)) return {std::max(lower, upper), Vec3::Zero(), Vec3::Zero(), true, examined};
   return best;
 }
 

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 
-#include "mtcs/geometry/segment_distance.h"
 
 namespace mtcs::mesh {
 namespace {
@@ -47,10 +47,49 @@ bool ray_hits_box(const Vec3& o, const Vec3& inv_d, const Box& b) {
   return t0 <= t1;
 }
 
+// The edges one query has examined, keyed by their vertex indices: open addressing in a fixed
+// table, cleared by bumping a stamp. When it fills up, edges are simply examined again.
+class EdgeSet {
+ public:
+  void clear() {
+    if (++stamp_ == 0) std::fill(stamps_.begin(), stamps_.end(), 0u), stamp_ = 1;
+    size_ = 0;
+  }
+  bool contains(std::uint64_t key) const {
+    for (std::size_t i = hash(key);; i = (i + 1) & kMask) {
+      if (stamps_[i] != stamp_) return false;
+      if (keys_[i] == key) return true;
+    }
+  }
+  void insert(std::uint64_t key) {
+    if (size_ >= kSize / 2) return;
+    std::size_t i = hash(key);
+    while (stamps_[i] == stamp_) {
+      if (keys_[i] == key) return;
+      i = (i + 1) & kMask;
+    }
+    stamps_[i] = stamp_, keys_[i] = key, ++size_;
+  }
+
+ private:
+  static constexpr std::size_t kSize = 4096, kMask = kSize - 1;
+  static std::size_t hash(std::uint64_t key) { return std::size_t((key * 0x9E3779B97F4A7C15ull) >> 52); }
+  std::array<std::uint64_t, kSize> keys_{};
+  std::array<std::uint32_t, kSize> stamps_{};
+  std::uint32_t stamp_ = 0;
+  std::size_t size_ = 0;
+};
+
+std::uint64_t edge_key(int a, int b) {
+  return a < b ? (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b)
+               : (std::uint64_t(std::uint32_t(b)) << 32) | std::uint32_t(a);
+}
+
 }  // namespace
 
 TriangleBvh::TriangleBvh(const TriangleMesh& mesh) {
   tris_.reserve(mesh.triangles.size());
+  corners_ = mesh.triangles;
   std::vector<Vec3> centroids;
   centroids.reserve(mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
@@ -87,9 +126,11 @@ void TriangleBvh::build(int node, int first, int count, std::vector<Vec3>& centr
                    [&](int a, int b) { return centroids[a][axis] < centroids[b][axis]; });
   std::vector<std::array<Vec3, 3>> tris(count);
   std::vector<Vec3> cents(count);
-  for (int i = 0; i < count; ++i) tris[i] = tris_[order[i]], cents[i] = centroids[order[i]];
+  std::vector<std::array<int, 3>> corners(count);
+  for (int i = 0; i < count; ++i) tris[i] = tris_[order[i]], cents[i] = centroids[order[i]], corners[i] = corners_[order[i]];
   std::copy(tris.begin(), tris.end(), tris_.begin() + first);
   std::copy(cents.begin(), cents.end(), centroids.begin() + first);
+  std::copy(corners.begin(), corners.end(), corners_.begin() + first);
 
   const int left = int(nodes_.size());
   nodes_.resize(nodes_.size() + 2);
@@ -173,17 +214,23 @@ geometry::TriangleDistanceResult TriangleBvh::cylinder_distance(const geometry::
   const Vec3 half = len2 > 0 ? Vec3(cyl.radius * (Vec3::Ones() - axis.cwiseAbs2() / len2).cwiseMax(0.0).cwiseSqrt())
                              : Vec3(cyl.radius, cyl.radius, 0);
   const Box cyl_box{cyl.p0.cwiseMin(cyl.p1) - half, cyl.p0.cwiseMax(cyl.p1) + half};
-  const geometry::Segment axis_segment{cyl.p0, cyl.p1};
   const double len = std::sqrt(len2);
   const Vec3 w = len > 0 ? Vec3(axis / len) : Vec3::UnitZ();
+  const double inv_len2 = len2 > 0 ? 1 / len2 : 0;
+  auto axis_dist2 = [&](const Vec3& p) {  // squared distance from p to the axis segment
+    const Vec3 q = p - cyl.p0;
+    const double t = std::clamp(q.dot(axis) * inv_len2, 0.0, 1.0);
+    return (q - t * axis).squaredNorm();
+  };
   auto lower_bound = [&](const Box& box) {
     const Vec3 center = (box.min + box.max) / 2, extent = box.max - center;
-    const double sphere = geometry::point_segment_distance(center, axis_segment) - extent.norm() - cyl.radius;
+    const double sphere = std::sqrt(axis_dist2(center)) - extent.norm() - cyl.radius;
     // The box beyond an end plane: the capsule bound is weakest there.
     const double t = w.dot(center - cyl.p0), spread = w.cwiseAbs().dot(extent);
     const double slab = std::max(-(t + spread), t - spread - len);
     return std::max({box_box_distance(cyl_box, box), sphere, slab});
   };
+  const Vec3 inv_axis = axis.cwiseInverse();
   auto axis_reaches = [&](const Box& box, double grow) {
     double t0 = 0, t1 = 1;
     for (int k = 0; k < 3; ++k) {
@@ -192,7 +239,7 @@ geometry::TriangleDistanceResult TriangleBvh::cylinder_distance(const geometry::
         if (cyl.p0[k] < lo || cyl.p0[k] > hi) return false;
         continue;
       }
-      double a = (lo - cyl.p0[k]) / axis[k], b = (hi - cyl.p0[k]) / axis[k];
+      double a = (lo - cyl.p0[k]) * inv_axis[k], b = (hi - cyl.p0[k]) * inv_axis[k];
       if (a > b) std::swap(a, b);
       t0 = std::max(t0, a), t1 = std::min(t1, b);
       if (t0 > t1) return false;
@@ -208,6 +255,9 @@ geometry::TriangleDistanceResult TriangleBvh::cylinder_distance(const geometry::
   };
   thread_local std::vector<Entry> heap;
   heap.clear();
+  // An edge's distance, once folded into `best`, cannot lower it again: each is examined once.
+  thread_local EdgeSet seen;
+  seen.clear();
   heap.push_back({lower_bound(nodes_[0].box), 0});
   while (!heap.empty()) {
     std::pop_heap(heap.begin(), heap.end());
@@ -218,8 +268,15 @@ geometry::TriangleDistanceResult TriangleBvh::cylinder_distance(const geometry::
     if (!axis_reaches(node.box, best.distance + cyl.radius)) continue;
     if (node.count > 0) {
       for (int i = node.first; i < node.first + node.count; ++i) {
-        if (geometry::point_segment_distance(spheres_[i].center, axis_segment) - spheres_[i].radius - cyl.radius >= best.distance) continue;
-        const auto d = geometry::distance(cyl, {tris_[i][0], tris_[i][1], tris_[i][2]}, {.upper_bound = best.distance});
+        const double reach = best.distance + spheres_[i].radius + cyl.radius;
+        if (axis_dist2(spheres_[i].center) >= reach * reach) continue;
+        const auto& v = corners_[i];
+        const std::uint64_t keys[3] = {edge_key(v[0], v[1]), edge_key(v[1], v[2]), edge_key(v[2], v[0])};
+        unsigned skip = 0;
+        for (unsigned k = 0; k < 3; ++k) skip |= unsigned(seen.contains(keys[k])) << k;
+        const auto d = geometry::distance(cyl, {tris_[i][0], tris_[i][1], tris_[i][2]}, {.upper_bound = best.distance}, skip);
+        for (unsigned k = 0; k < 3; ++k)
+          if (d.edges_examined >> k & 1u) seen.insert(keys[k]);
         if (d.bounded) continue;
         best = d;
         if (d.intersecting()) return best;

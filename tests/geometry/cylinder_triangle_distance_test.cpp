@@ -144,6 +144,13 @@ TEST_CASE("cylinder-triangle random and stiff cases against the convex reference
     if (expected > 1e-9 * s) CHECK(!r.intersecting());
     touching += r.intersecting();
     ++checked;
+    // Skipping edges (a mesh query examines each shared edge once): two complementary halves
+    // give the whole triangle, and each reports what it examined.
+    const auto first = distance(c, t, {}, 0b110), rest = distance(c, t, {}, 0b001);
+    CHECK(std::abs(std::min(first.distance, rest.distance) - r.distance) <= 1e-12 * s);
+    CHECK((std::min(first.distance, rest.distance) == 0) == r.intersecting());
+    CHECK((first.edges_examined & 0b110) == 0);
+    CHECK((rest.edges_examined & 0b001) == 0);
   }
   CHECK(checked == 3000);
   CHECK(touching > 100);  // the set exercises both verdicts

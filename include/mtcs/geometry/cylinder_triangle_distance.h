@@ -30,13 +30,17 @@ struct TriangleDistanceResult {
   Vec3 on_cylinder = Vec3::Zero();  // witnesses; unspecified when bounded
   Vec3 on_triangle = Vec3::Zero();
   bool bounded = false;
+  // Edges whose distance the result includes (bit k: the edge from corner k to corner k + 1).
+  unsigned edges_examined = 0;
 
   bool intersecting() const { return !bounded && distance == 0; }
 };
 
 // `request.upper_bound` and `request.tolerance` as in the cylinder-cylinder kernel; the other
-// fields are passed on to it for the edges.
+// fields are passed on to it for the edges. `skip_edges` (same bits as edges_examined) leaves
+// out edges the caller has examined already (in a mesh every edge belongs to two triangles): the
+// result is then that of the triangle without them.
 TriangleDistanceResult distance(const Cylinder& cylinder, const Triangle& triangle,
-                                const DistanceRequest& request = {});
+                                const DistanceRequest& request = {}, unsigned skip_edges = 0);
 
 }  // namespace mtcs::geometry

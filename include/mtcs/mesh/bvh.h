@@ -59,6 +59,7 @@ class TriangleBvh {
     double radius;
   };
   std::vector<Sphere> spheres_;
+  std::vector<std::array<int, 3>> corners_;  // vertex indices, to know an edge met before
 };
 
 // Clearance of a solid cylinder from the solid bounded by a closed mesh: the exact distance to
