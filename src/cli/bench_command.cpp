@@ -267,7 +267,7 @@ Command add_bench_command(CLI::App& app) {
       "Cylinder vs closed mesh against FCL 0.7 in the same run: BVH build time, median and p90\n"
       "microseconds per query, max error over S and wrong verdicts against the certified\n"
       "intervals, per category; ours exact, ours with the upper bound (bound-fraction x the\n"
-      "mesh's largest extent), FCL. CSV on stdout:\n"
+      "mesh's largest extent), ours on a median-split BVH, FCL. CSV on stdout:\n"
       "  mesh,triangles,method,upper_bound,build_ms,category,n,median_us,p90_us,max_rel_err,wrong_verdicts");
   clearance->footer(
       "Example:\n"

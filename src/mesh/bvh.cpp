@@ -87,7 +87,7 @@ std::uint64_t edge_key(int a, int b) {
 
 }  // namespace
 
-TriangleBvh::TriangleBvh(const TriangleMesh& mesh) {
+TriangleBvh::TriangleBvh(const TriangleMesh& mesh, SplitRule split_rule) : split_rule_(split_rule) {
   tris_.reserve(mesh.triangles.size());
   corners_ = mesh.triangles;
   std::vector<Vec3> centroids;
@@ -98,7 +98,7 @@ TriangleBvh::TriangleBvh(const TriangleMesh& mesh) {
   }
   nodes_.reserve(tris_.size() / 2 + 2);
   nodes_.resize(1);
-  build(0, 0, int(tris_.size()), centroids);
+  build(0, 0, int(tris_.size()), 0, centroids);
   spheres_.reserve(tris_.size());
   for (std::size_t i = 0; i < tris_.size(); ++i) {
     const Vec3 c = centroids[i];
@@ -106,7 +106,45 @@ TriangleBvh::TriangleBvh(const TriangleMesh& mesh) {
   }
 }
 
-void TriangleBvh::build(int node, int first, int count, std::vector<Vec3>& centroids) {
+// Binned surface-area heuristic along `axis`: how many triangles (in centroid order) go left so
+// that (left count x left box area + right count x right box area) is least.
+int TriangleBvh::sah_split(int first, int count, int axis, const Box& cbox, const std::vector<Vec3>& centroids) const {
+  constexpr int kBins = 16;
+  const double lo = cbox.min[axis], width = cbox.max[axis] - lo;
+  if (!(width > 0)) return count / 2;
+  std::array<Box, kBins> boxes;
+  std::array<int, kBins> counts{};
+  boxes.fill(empty_box());
+  for (int i = first; i < first + count; ++i) {
+    const int b = std::min(kBins - 1, int(kBins * (centroids[i][axis] - lo) / width));
+    ++counts[b];
+    for (const Vec3& v : tris_[i]) boxes[b].min = boxes[b].min.cwiseMin(v), boxes[b].max = boxes[b].max.cwiseMax(v);
+  }
+  auto area = [](const Box& b) {
+    const Vec3 e = (b.max - b.min).cwiseMax(0.0);
+    return e.x() * e.y() + e.y() * e.z() + e.z() * e.x();
+  };
+  std::array<double, kBins> right_cost{};  // right_cost[b]: bins b.. on the right
+  Box acc = empty_box();
+  int n = 0;
+  for (int b = kBins - 1; b > 0; --b) {
+    acc.min = acc.min.cwiseMin(boxes[b].min), acc.max = acc.max.cwiseMax(boxes[b].max), n += counts[b];
+    right_cost[b] = n > 0 ? n * area(acc) : 0;
+  }
+  acc = empty_box();
+  n = 0;
+  int best_left = count / 2;
+  double best = std::numeric_limits<double>::infinity();
+  for (int b = 1; b < kBins; ++b) {
+    acc.min = acc.min.cwiseMin(boxes[b - 1].min), acc.max = acc.max.cwiseMax(boxes[b - 1].max), n += counts[b - 1];
+    if (n == 0 || n == count) continue;
+    const double cost = n * area(acc) + right_cost[b];
+    if (cost < best) best = cost, best_left = n;
+  }
+  return best_left;
+}
+
+void TriangleBvh::build(int node, int first, int count, int depth, std::vector<Vec3>& centroids) {
   Box box = empty_box(), cbox = empty_box();
   for (int i = first; i < first + count; ++i) {
     for (const Vec3& v : tris_[i]) box.min = box.min.cwiseMin(v), box.max = box.max.cwiseMax(v);
@@ -118,8 +156,11 @@ void TriangleBvh::build(int node, int first, int count, std::vector<Vec3>& centr
   }
   int axis = 0;
   (cbox.max - cbox.min).maxCoeff(&axis);
-  const int half = count / 2;
-  // Median split: reorder triangles and centroids together.
+  // Below depth 48 the median: bounds the depth (the stack traversals hold 128 entries) whatever
+  // the heuristic makes of a mesh.
+  const bool sah = split_rule_ == SplitRule::SurfaceArea && depth < 48;
+  const int half = sah ? sah_split(first, count, axis, cbox, centroids) : count / 2;
+  // Reorder triangles, centroids and corners together: the `half` lowest centroids go left.
   std::vector<int> order(count);
   std::iota(order.begin(), order.end(), first);
   std::nth_element(order.begin(), order.begin() + half, order.end(),
@@ -135,8 +176,8 @@ void TriangleBvh::build(int node, int first, int count, std::vector<Vec3>& centr
   const int left = int(nodes_.size());
   nodes_.resize(nodes_.size() + 2);
   nodes_[node] = {box, left, 0};
-  build(left, first, half, centroids);
-  build(left + 1, first + half, count - half, centroids);
+  build(left, first, half, depth + 1, centroids);
+  build(left + 1, first + half, count - half, depth + 1, centroids);
 }
 
 double TriangleBvh::segment_distance(const Vec3& p0, const Vec3& p1, double cap) const {

@@ -87,10 +87,10 @@ TEST_CASE("mesh clearance certified: homer", "[mesh][clearance]") { check_mesh("
 TEST_CASE("mesh clearance certified: mcad_herringbone_gear", "[mesh][clearance]") { check_mesh("mcad_herringbone_gear"); }
 TEST_CASE("mesh clearance certified: openscad_example006", "[mesh][clearance]") { check_mesh("openscad_example006"); }
 
-TEST_CASE("mesh clearance equals brute force over every triangle", "[mesh][clearance]") {
+TEST_CASE("mesh clearance equals brute force over every triangle, with either split rule", "[mesh][clearance]") {
   for (const std::string name : {"homer", "mcad_herringbone_gear"}) {
     const auto m = mesh::read_mesh(MTCS_TEST_DATA "/meshes/" + name + ".off");
-    const mesh::TriangleBvh bvh(m);
+    const mesh::TriangleBvh bvh(m), bvh_median(m, mesh::TriangleBvh::SplitRule::Median);
     const auto box = m.bounds();
     const double extent = box.size().maxCoeff();
     std::mt19937_64 rng(6);
@@ -107,6 +107,9 @@ TEST_CASE("mesh clearance equals brute force over every triangle", "[mesh][clear
       INFO(name << " cylinder " << i << " brute " << brute << " got " << got.distance);
       CHECK(std::abs(got.distance - brute) <= 1e-12 * s);
       CHECK((got.distance == 0) == (brute == 0));
+      const auto median = mesh::cylinder_clearance(bvh_median, c);  // the other split rule
+      CHECK(std::abs(median.distance - brute) <= 1e-12 * s);
+      CHECK((median.distance == 0) == (brute == 0));
     }
   }
 }

@@ -1,10 +1,13 @@
 #pragma once
 // Bounding-volume hierarchy over the triangles of a closed mesh, for the bore queries: the
-// distance from a segment (a bore axis) to the surface, capped, and point containment.
+// exact distance from a solid cylinder (a bore) to the surface, capped by the clearance the
+// caller needs, the distance from a segment, and point containment.
 //
-// Flat arrays, leaves of up to 4 triangles, split at the median centroid along the longest
-// axis of the node's centroid box (balanced depth, cheap to build; the surface-area heuristic
-// is the mesh issue's to weigh).
+// Flat arrays, leaves of up to 4 triangles. Split rule: binned surface-area heuristic (16 bins
+// along the longest axis of the node's centroid box), which minimises the expected number of
+// nodes a query's bounds reach; the median split (balanced, cheaper to build) is kept for
+// comparison. Measured with `mtcs bench clearance` (experiments/mesh/README.md): SAH queries
+// are 5-25 % faster on five of the six meshes for 40-50 % more build time.
 
 #include <limits>
 #include <optional>
@@ -17,7 +20,8 @@ namespace mtcs::mesh {
 
 class TriangleBvh {
  public:
-  explicit TriangleBvh(const TriangleMesh& mesh);
+  enum class SplitRule { Median, SurfaceArea };
+  explicit TriangleBvh(const TriangleMesh& mesh, SplitRule split_rule = SplitRule::SurfaceArea);
 
   // Distance from the segment to the surface when it is below `cap`; otherwise some value
   // >= cap (the search stops there).
@@ -46,11 +50,13 @@ class TriangleBvh {
     int first;  // leaf: first triangle; inner: index of the left child (right = first + 1)
     int count;  // leaf: number of triangles; inner: 0
   };
-  void build(int node, int first, int count, std::vector<Vec3>& centroids);
+  void build(int node, int first, int count, int depth, std::vector<Vec3>& centroids);
+  int sah_split(int first, int count, int axis, const Box& cbox, const std::vector<Vec3>& centroids) const;
   // Calls leaf(triangle) for every triangle in a leaf whose box the ray p + t d meets.
   template <class Leaf>
   void visit_ray(const Vec3& p, const Vec3& d, Leaf&& leaf) const;
 
+  SplitRule split_rule_;
   std::vector<Node> nodes_;
   std::vector<std::array<Vec3, 3>> tris_;
   // Per triangle (same order): a bounding sphere, the cheapest distance bound at the leaves.
