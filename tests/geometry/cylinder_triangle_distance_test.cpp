@@ -155,3 +155,34 @@ TEST_CASE("cylinder-triangle random and stiff cases against the convex reference
   CHECK(checked == 3000);
   CHECK(touching > 100);  // the set exercises both verdicts
 }
+
+TEST_CASE("cylinder-triangle inside certified bounds from a dense grid", "[geometry][cylinder_triangle]") {
+  // The distance from a triangle point to the solid cylinder is 1-Lipschitz: over a barycentric
+  // grid of step 1/N every triangle point is within (longest edge) / N of a grid point, so
+  // [min over the grid - that radius, min over the grid] holds the true distance.
+  std::mt19937_64 rng(61);
+  std::uniform_real_distribution<double> u(-1, 1);
+  auto vec = [&] { return Vec3(u(rng), u(rng), u(rng)); };
+  constexpr int N = 400;
+  int separated = 0;
+  for (int i = 0; i < 150; ++i) {
+    const Cylinder c{vec() * 2, vec() * 2, 0.1 + 0.5 * std::abs(u(rng))};
+    const Vec3 center = vec() * 2.5;
+    const Triangle t{center + vec(), center + vec(), center + vec()};
+    double grid = std::numeric_limits<double>::infinity();
+    for (int a = 0; a <= N; ++a)
+      for (int b = 0; a + b <= N; ++b)
+        grid = std::min(grid, point_solid_distance(t.a + (double(a) / N) * (t.b - t.a) + (double(b) / N) * (t.c - t.a), c));
+    const double radius = std::max({(t.b - t.a).norm(), (t.c - t.b).norm(), (t.a - t.c).norm()}) / N;
+    const auto r = distance(c, t);
+    INFO("case " << i << " grid [" << grid - radius << ", " << grid << "] got " << r.distance);
+    CHECK(r.distance <= grid + 1e-12);
+    CHECK(r.distance >= grid - radius - 1e-12);
+    if (grid - radius > 0) {
+      CHECK(!r.intersecting());
+      ++separated;
+    }
+    if (grid == 0) CHECK(r.intersecting());
+  }
+  CHECK(separated > 50);
+}

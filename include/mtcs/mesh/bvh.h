@@ -29,6 +29,7 @@ class TriangleBvh {
 
   // Distance from the solid cylinder to the surface (not the solid) when it is below `cap`;
   // otherwise `bounded` and a proven lower bound >= cap. Witnesses as in geometry::distance.
+  // Thread-safe; allocates only to grow a per-thread search heap.
   geometry::TriangleDistanceResult cylinder_distance(const geometry::Cylinder& cylinder, double cap) const;
 
   // Whether p lies inside the closed surface (parity of the crossings of a ray).
