@@ -35,7 +35,25 @@ double ray_hit(const Vec3& o, const Vec3& d, const std::array<Vec3, 3>& t) {
   return e2.dot(q) * inv;
 }
 
-bool ray_hits(const Vec3& o, const Vec3& d, const std::array<Vec3, 3>& t) { return ray_hit(o, d, t) > 0; }
+// Ray-triangle crossing for parity counting: 1 crossed, 0 missed, -1 too close to call (the ray
+// passes within rounding of an edge or a vertex, or the origin lies on the plane), where a
+// parity count may take a crossing twice or not at all.
+int ray_crossing(const Vec3& o, const Vec3& d, const std::array<Vec3, 3>& t) {
+  const Vec3 e1 = t[1] - t[0], e2 = t[2] - t[0];
+  const Vec3 p = d.cross(e2);
+  const double det = e1.dot(p);
+  const double eps = 1e-12;
+  if (std::abs(det) <= eps * e1.norm() * e2.norm()) return 0;  // ray parallel to the plane
+  const double inv = 1 / det;
+  const Vec3 s = o - t[0];
+  const double u = s.dot(p) * inv;
+  const Vec3 q = s.cross(e1);
+  const double v = d.dot(q) * inv;
+  const double along = e2.dot(q) * inv;
+  if (u < -eps || v < -eps || u + v > 1 + eps || along < -eps * (s.norm() + 1)) return 0;
+  if (u <= eps || v <= eps || u + v >= 1 - eps || along <= eps * (s.norm() + 1)) return -1;
+  return 1;
+}
 
 bool ray_hits_box(const Vec3& o, const Vec3& inv_d, const Box& b) {
   double t0 = 0, t1 = std::numeric_limits<double>::infinity();
@@ -224,10 +242,23 @@ void TriangleBvh::visit_ray(const Vec3& p, const Vec3& d, Leaf&& leaf) const {
 
 bool TriangleBvh::contains(const Vec3& p) const {
   if (tris_.empty() || !bounds().contains(p)) return false;
-  // A direction unlikely to graze edges of CAD meshes (not along any axis or diagonal).
-  const Vec3 d = Vec3(0.5390, 0.6187, 0.5716).normalized();
+  // Directions unlikely to graze edges of CAD meshes (along no axis or diagonal). A ray that
+  // passes within rounding of an edge or vertex may count a crossing twice or miss it: it is
+  // cast again along the next direction.
+  static const std::array<Vec3, 3> directions{Vec3(0.5390, 0.6187, 0.5716).normalized(),
+                                              Vec3(-0.7071, 0.3123, 0.6349).normalized(),
+                                              Vec3(0.2211, -0.8567, 0.4663).normalized()};
   int crossings = 0;
-  visit_ray(p, d, [&](const std::array<Vec3, 3>& t) { crossings += ray_hits(p, d, t); });
+  for (const Vec3& d : directions) {
+    crossings = 0;
+    bool ambiguous = false;
+    visit_ray(p, d, [&](const std::array<Vec3, 3>& t) {
+      const int c = ray_crossing(p, d, t);
+      if (c < 0) ambiguous = true;
+      else crossings += c;
+    });
+    if (!ambiguous) break;
+  }
   return crossings % 2 == 1;
 }
 

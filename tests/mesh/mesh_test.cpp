@@ -83,3 +83,15 @@ TEST_CASE("meshes: cylinder clearance has closed forms on a box", "[mesh]") {
   CHECK(far.bounded);
   CHECK(far.distance >= 10);
 }
+
+TEST_CASE("meshes: containment when the ray passes through an edge or a vertex", "[mesh]") {
+  // Points placed so that the first ray direction exits through a face centre (on the face's
+  // diagonal edge, shared by its two triangles) or through a corner vertex.
+  const mesh::TriangleBvh bvh(mesh::box_mesh({{0, 0, 0}, {10, 10, 10}}));
+  const Vec3 d = Vec3(0.5390, 0.6187, 0.5716).normalized();
+  for (const Vec3& exit : {Vec3(10, 5, 5), Vec3(5, 10, 5), Vec3(5, 5, 10), Vec3(10, 10, 10), Vec3(10, 10, 4)}) {
+    INFO("exit " << exit.transpose());
+    CHECK(bvh.contains(exit - 3 * d));
+    CHECK_FALSE(bvh.contains(exit + 3 * d));
+  }
+}
