@@ -7,7 +7,7 @@
 // along the longest axis of the node's centroid box), which minimises the expected number of
 // nodes a query's bounds reach; the median split (balanced, cheaper to build) is kept for
 // comparison. Measured with `mtcs bench clearance` (experiments/mesh/README.md): SAH queries
-// are 5-25 % faster on five of the six meshes for 40-50 % more build time.
+// are 7-25 % faster on five of the six meshes for 30-50 % more build time.
 
 #include <limits>
 #include <optional>
