@@ -369,14 +369,18 @@ Clearance cylinder_clearance(const TriangleBvh& bvh, const geometry::Cylinder& c
   // A cylinder whose axis midpoint is inside the solid meets it: buried or crossing the
   // surface, the distance is 0 either way. One ray cast settles that before the search, which
   // would otherwise look for the nearest triangle of a buried cylinder in vain.
+  // An axis end outside the mesh's box puts part of the cylinder outside the solid: it cannot
+  // be buried, and crossing is the search's to find. Bores drilled from a block face mostly
+  // start there, and skip the ray.
   const Vec3 mid = (cylinder.p0 + cylinder.p1) / 2;
-  if (bvh.contains(mid)) {
+  const bool may_be_inside = bvh.bounds().contains(cylinder.p0) && bvh.bounds().contains(cylinder.p1);
+  if (may_be_inside && bvh.contains(mid)) {
     // The smallest cap: the search visits only what may touch, to tell buried from crossing.
     const auto touch = bvh.cylinder_distance(cylinder, std::numeric_limits<double>::denorm_min());
     if (touch.bounded) return {0, false, true, mid, mid};
     return {0, false, false, touch.on_cylinder, touch.on_triangle};
   }
-  // Outside: no contact with the surface means wholly outside.
+  // Not inside: no contact with the surface means wholly outside.
   const auto d = bvh.cylinder_distance(cylinder, upper_bound);
   return {d.distance, d.bounded, false, d.on_cylinder, d.on_triangle};
 }
