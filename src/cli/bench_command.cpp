@@ -13,6 +13,7 @@
 
 #include "mtcs/io/atomic_file.h"
 
+#include "bench_clearance.h"
 #include "bench_evaluate.h"
 #include "bench_hypervolume.h"
 #include "bench_sms.h"
@@ -255,6 +256,30 @@ Command add_bench_command(CLI::App& app) {
   sms->add_option("--seeds", so->seeds, "seeds 1..K")->capture_default_str();
   sms->add_option("--evaluations", so->evaluations, "budget per run")->capture_default_str();
 
+  struct ClearanceOptions {
+    std::vector<std::string> meshes, cases;
+    int repeat = 3, builds = 3;
+    double bound_fraction = 0.02;
+  };
+  auto co = std::make_shared<ClearanceOptions>();
+  CLI::App* clearance = bench->add_subcommand(
+      "clearance",
+      "Cylinder vs closed mesh against FCL 0.7 in the same run: BVH build time, median and p90\n"
+      "microseconds per query, max error over S and wrong verdicts against the certified\n"
+      "intervals, per category; ours exact, ours with the upper bound (bound-fraction x the\n"
+      "mesh's largest extent), ours on a median-split BVH, FCL. CSV on stdout:\n"
+      "  mesh,triangles,method,upper_bound,build_ms,category,n,median_us,p90_us,max_rel_err,wrong_verdicts");
+  clearance->footer(
+      "Example:\n"
+      "  mtcs bench clearance --mesh tests/data/meshes/homer.off --cases tests/data/mesh_clearance/homer.csv\n"
+      "  (repeat --mesh/--cases for several meshes, in the same order)");
+  clearance->add_option("--mesh", co->meshes, "closed mesh (repeatable)")->required()->check(CLI::ExistingFile);
+  clearance->add_option("--cases", co->cases, "certified cases of that mesh (repeatable)")->required()->check(CLI::ExistingFile);
+  clearance->add_option("--repeat", co->repeat, "queries per timed batch")->capture_default_str()->check(CLI::Range(1, 100000));
+  clearance->add_option("--builds", co->builds, "BVH builds timed (median)")->capture_default_str()->check(CLI::Range(1, 100));
+  clearance->add_option("--bound-fraction", co->bound_fraction, "upper bound of ours-bounded, x largest extent")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+
   for (CLI::App* s : {dist, sweep, stiff}) {
     s->add_option("--pairs", opt->pairs, "CSV of cylinder pairs with dist_lo, dist_hi")->required()->check(CLI::ExistingFile);
     s->add_option("--repeat", opt->repeat, "queries per timed batch")->capture_default_str()->check(CLI::Range(1, 1000000));
@@ -264,7 +289,8 @@ Command add_bench_command(CLI::App& app) {
   stiff->add_option("--tolerance", opt->tolerance, "kernel tolerance")->capture_default_str();
   sweep->add_option("--tolerances", opt->sweep, "tolerances to sweep")->delimiter(',');
 
-  return {bench, [opt, dist, sweep, stiff, evaluate, eo, optimize, oo, hv, ho, sms, so] {
+  return {bench, [opt, dist, sweep, stiff, evaluate, eo, optimize, oo, hv, ho, sms, so, clearance, co] {
+            if (clearance->parsed()) return bench_clearance(co->meshes, co->cases, co->repeat, co->builds, co->bound_fraction);
             if (hv->parsed()) return bench_hypervolume(ho->fronts, ho->repeat, ho->max_contribution_n);
             if (sms->parsed()) return bench_sms(so->problem, so->algorithms, so->seeds, so->evaluations);
             if (optimize->parsed()) {

@@ -1,7 +1,7 @@
 // Bores against the molded part: at least clearances.bore_cavity of steel between a bore and the
-// cavity. A box cavity is closed form (no mesh code); a mesh cavity goes through its BVH. Both
-// measure the capsule around the bore (conservative by at most the radius at the flat ends; the
-// exact solid-cylinder-vs-mesh kernel is the mesh issue's).
+// cavity. A box cavity is closed form (no mesh code; the capsule around the bore, conservative by
+// at most the radius at the flat ends); a mesh cavity gets the exact solid-cylinder distance
+// through its BVH, with the clearance as upper bound.
 
 #include "mtcs/geometry/triangle_distance.h"
 #include "mtcs/mesh/bvh.h"
@@ -18,13 +18,13 @@ class CavityStage final : public Stage {
   void run(const mold::Layout& layout, Evaluation& out) const override {
     for (const mold::Bore& b : layout.bores) {
       const double margin = margin_.at(b.diameter);
-      double d;
       if (box_) {
-        d = std::max(0.0, geometry::segment_box_distance(b.hole.p0, b.hole.p1, *box_) - b.hole.radius);
+        const double d = std::max(0.0, geometry::segment_box_distance(b.hole.p0, b.hole.p1, *box_) - b.hole.radius);
+        add_clearance(out, "bore_cavity", {b.name(), "cavity"}, d, margin, (b.hole.p0 + b.hole.p1) / 2);
       } else {
-        d = mesh::cylinder_clearance(*bvh_, b.hole.p0, b.hole.p1, b.hole.radius, margin);
+        const auto c = mesh::cylinder_clearance(*bvh_, b.hole, margin);
+        if (!c.bounded) add_clearance(out, "bore_cavity", {b.name(), "cavity"}, c.distance, margin, c.where());
       }
-      add_clearance(out, "bore_cavity", {b.name(), "cavity"}, d, margin, (b.hole.p0 + b.hole.p1) / 2);
     }
   }
 

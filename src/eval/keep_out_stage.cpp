@@ -50,8 +50,8 @@ class KeepOutMeshStage final : public Stage {
     for (const mold::Bore& b : layout.bores) {
       for (const std::size_t k : indices_) {
         const auto& spec = scene_.spec().keep_outs[k];
-        const double d = mesh::cylinder_clearance(*scene_.keep_out_bvh(k), b.hole.p0, b.hole.p1, b.hole.radius, spec.clearance);
-        add_clearance(out, "bore_keepout", {b.name(), spec.name}, d, spec.clearance, (b.hole.p0 + b.hole.p1) / 2);
+        const auto c = mesh::cylinder_clearance(*scene_.keep_out_bvh(k), b.hole, spec.clearance);
+        if (!c.bounded) add_clearance(out, "bore_keepout", {b.name(), spec.name}, c.distance, spec.clearance, c.where());
       }
     }
   }

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string_view>
 
+#include "csv_fields.h"
 #include "mtcs/io/input_error.h"
 
 namespace mtcs::io {
@@ -15,26 +16,7 @@ constexpr std::array<std::string_view, 15> kRequired{
     "id", "p0x", "p0y", "p0z", "p1x", "p1y", "p1z", "r0",
     "q0x", "q0y", "q0z", "q1x", "q1y", "q1z", "r1"};
 
-struct Field {
-  std::string_view text;
-  int column;  // 1-based character column
-};
-
-std::vector<Field> split(std::string_view line) {
-  std::vector<Field> out;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = line.find(',', start);
-    const std::size_t end = comma == std::string_view::npos ? line.size() : comma;
-    std::string_view f = line.substr(start, end - start);
-    while (!f.empty() && (f.front() == ' ' || f.front() == '\t')) f.remove_prefix(1);
-    while (!f.empty() && (f.back() == ' ' || f.back() == '\t')) f.remove_suffix(1);
-    out.push_back({f, int(start) + 1});
-    if (comma == std::string_view::npos) break;
-    start = comma + 1;
-  }
-  return out;
-}
+using detail::Field;
 
 }  // namespace
 
@@ -46,7 +28,7 @@ std::vector<CylinderPair> read_pairs_csv(const std::string& path) {
   if (!std::getline(in, line)) throw InputError(path, 1, 1, "", "empty file: expected a header line");
   ++lineno;
   if (!line.empty() && line.back() == '\r') line.pop_back();
-  const auto header = split(line);
+  const auto header = detail::split_csv_line(line);
   std::array<int, kRequired.size()> col{};
   int lo_col = -1, hi_col = -1, cat_col = -1;
   for (std::size_t k = 0; k < kRequired.size(); ++k) {
@@ -67,7 +49,7 @@ std::vector<CylinderPair> read_pairs_csv(const std::string& path) {
     ++lineno;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty() || line.front() == '#') continue;
-    const auto fields = split(line);
+    const auto fields = detail::split_csv_line(line);
     auto field_at = [&](int j, std::string_view name) -> const Field& {
       if (j >= int(fields.size()))
         throw InputError(path, lineno, int(line.size()) + 1, std::string(name),

@@ -12,6 +12,8 @@
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
+#include "mtcs/mesh/bvh.h"
+#include "mtcs/mesh/mesh_io.h"
 
 using namespace mtcs;
 using geometry::Vec3;
@@ -191,4 +193,39 @@ TEST_CASE("penalty variants order layouts as documented", "[eval]") {
   CHECK(eval::fitness(infeasible, spec, {}).value == Approx(1.0 / 5 + 1.0 / 20 + 1.0 / 1000 + 0.0625));
   spec.penalty.variant = PenaltyVariant::Death;
   CHECK(std::isinf(eval::fitness(infeasible, spec, {}).value));
+}
+
+TEST_CASE("pipeline: a mesh cavity gives the exact solid-cylinder clearance and its place", "[eval]") {
+  // The plate cavity as a closed mesh: the bores' distances are the closed forms of the box.
+  const fs::path stl = write("plate_cavity.stl", "");
+  mesh::write_stl(stl.string(), mesh::box_mesh({{50, 25, 105}, {250, 175, 108}}));
+  const std::string spec = "block: {box: {min: [0, 0, 0], max: [300, 200, 120]}}\n"
+                           "cavity: {mesh: " + stl.string() + ", sample_spacing: 5}\n"
+                           "drilling: {diameters: [8], allowed_faces: [+y, -y]}\n"
+                           "circuits: {inlet_faces: [-y], outlet_faces: [+y]}\n"
+                           "clearances: {bore_cavity: 20}\n";
+  const mold::Scene scene(mold::load_mold_spec(write("mesh_cavity.yaml", spec).string()));
+  const eval::Pipeline pipeline(scene);
+  const auto names = pipeline.stage_names();
+  REQUIRE(std::find(names.begin(), names.end(), "bore_cavity_mesh") != names.end());
+  // Under the plate: 17 - 4 = 13 of steel, the place between the bore's top and the underside.
+  auto e = pipeline.evaluate(mold::Genome{{straight(150, 88)}});
+  auto* v = find(e, "bore_cavity");
+  REQUIRE(v);
+  CHECK(v->distance == Approx(13).epsilon(1e-14));
+  CHECK(v->where.x() == Approx(150).margin(1e-9));
+  CHECK(v->where.y() >= 25 - 1e-9);
+  CHECK(v->where.y() <= 175 + 1e-9);
+  CHECK(v->where.z() == Approx(92 + 6.5).margin(1e-9));
+  // Beside the plate's long edge x = 250, z = 105: axis 12 out and 12 down, 12 sqrt 2 - 4.
+  e = pipeline.evaluate(mold::Genome{{straight(262, 93)}});
+  v = find(e, "bore_cavity");
+  REQUIRE(v);
+  CHECK(v->distance == Approx(12 * std::sqrt(2.0) - 4).epsilon(1e-14));
+  // Through the plate: 0; far below it: no violation (the clearance bound ends the search).
+  e = pipeline.evaluate(mold::Genome{{straight(150, 106.5)}});
+  v = find(e, "bore_cavity");
+  REQUIRE(v);
+  CHECK(v->distance == 0);
+  CHECK_FALSE(find(pipeline.evaluate(mold::Genome{{straight(150, 40)}}), "bore_cavity"));
 }

@@ -60,11 +60,38 @@ TEST_CASE("meshes: BVH segment distance equals brute force; containment", "[mesh
 
 TEST_CASE("meshes: cylinder clearance has closed forms on a box", "[mesh]") {
   const mesh::TriangleBvh bvh(mesh::box_mesh({{0, 0, 0}, {10, 10, 10}}));
+  auto clearance = [&](const Vec3& p0, const Vec3& p1, double r, double cap) {
+    return mesh::cylinder_clearance(bvh, {p0, p1, r}, cap);
+  };
   // Parallel to the top face at a gap of 3 (axis 5 above, radius 2).
-  CHECK(mesh::cylinder_clearance(bvh, {-5, 5, 15}, {15, 5, 15}, 2, 100) == Approx(3));
+  CHECK(clearance({-5, 5, 15}, {15, 5, 15}, 2, 100).distance == Approx(3).epsilon(1e-14));
+  // End disk facing the top face at a gap of 3: the capsule would say 3 - radius.
+  CHECK(clearance({5, 5, 13}, {5, 5, 30}, 2, 100).distance == Approx(3).epsilon(1e-14));
+  // Beyond a corner edge along the axis direction: the rim, not the capsule, is nearest.
+  // Axis along z above the edge x = 10, z = 10 shifted out by 1 in x: rim point (10 + 1 - 2, ...)
+  // lies over the box top, so the gap is the height 1.
+  CHECK(clearance({11, 5, 11}, {11, 5, 20}, 2, 100).distance == Approx(1).epsilon(1e-14));
   // Crossing the box: 0. Buried inside: 0 (containment, no surface contact).
-  CHECK(mesh::cylinder_clearance(bvh, {-5, 5, 5}, {15, 5, 5}, 1, 100) == 0);
-  CHECK(mesh::cylinder_clearance(bvh, {3, 5, 5}, {7, 5, 5}, 1, 100) == 0);
+  CHECK(clearance({-5, 5, 5}, {15, 5, 5}, 1, 100).distance == 0);
+  const auto buried = clearance({3, 5, 5}, {7, 5, 5}, 1, 100);
+  CHECK(buried.distance == 0);
+  CHECK(buried.buried);
+  // Buried and the upper bound below every surface distance: still 0, not bounded.
+  CHECK(clearance({3, 5, 5}, {7, 5, 5}, 1, 0.5).distance == 0);
   // Capped.
-  CHECK(mesh::cylinder_clearance(bvh, {-5, 5, 50}, {15, 5, 50}, 1, 10) == 10);
+  const auto far = clearance({-5, 5, 50}, {15, 5, 50}, 1, 10);
+  CHECK(far.bounded);
+  CHECK(far.distance >= 10);
+}
+
+TEST_CASE("meshes: containment when the ray passes through an edge or a vertex", "[mesh]") {
+  // Points placed so that the first ray direction exits through a face centre (on the face's
+  // diagonal edge, shared by its two triangles) or through a corner vertex.
+  const mesh::TriangleBvh bvh(mesh::box_mesh({{0, 0, 0}, {10, 10, 10}}));
+  const Vec3 d = Vec3(0.5390, 0.6187, 0.5716).normalized();
+  for (const Vec3& exit : {Vec3(10, 5, 5), Vec3(5, 10, 5), Vec3(5, 5, 10), Vec3(10, 10, 10), Vec3(10, 10, 4)}) {
+    INFO("exit " << exit.transpose());
+    CHECK(bvh.contains(exit - 3 * d));
+    CHECK_FALSE(bvh.contains(exit + 3 * d));
+  }
 }
