@@ -1,9 +1,8 @@
 // Bores against the molded part: at least clearances.bore_cavity of steel between a bore and the
-// cavity. A box cavity is closed form (no mesh code; the capsule around the bore, conservative by
-// at most the radius at the flat ends); a mesh cavity gets the exact solid-cylinder distance
-// through its BVH, with the clearance as upper bound.
+// cavity: the exact solid-cylinder distance with the clearance as upper bound, to the box of a
+// primitive cavity (no mesh code) or through the BVH of a mesh cavity.
 
-#include "mtcs/geometry/triangle_distance.h"
+#include "mtcs/geometry/cylinder_box_distance.h"
 #include "mtcs/mesh/bvh.h"
 #include "stages.h"
 
@@ -19,8 +18,9 @@ class CavityStage final : public Stage {
     for (const mold::Bore& b : layout.bores) {
       const double margin = margin_.at(b.diameter);
       if (box_) {
-        const double d = std::max(0.0, geometry::segment_box_distance(b.hole.p0, b.hole.p1, *box_) - b.hole.radius);
-        add_clearance(out, "bore_cavity", {b.name(), "cavity"}, d, margin, (b.hole.p0 + b.hole.p1) / 2);
+        const auto d = geometry::distance(b.hole, *box_, {.upper_bound = margin});
+        if (!d.bounded)
+          add_clearance(out, "bore_cavity", {b.name(), "cavity"}, d.distance, margin, (d.on_cylinder + d.on_triangle) / 2);
       } else {
         const auto c = mesh::cylinder_clearance(*bvh_, b.hole, margin);
         if (!c.bounded) add_clearance(out, "bore_cavity", {b.name(), "cavity"}, c.distance, margin, c.where());

@@ -1,0 +1,42 @@
+// Solid cylinder vs solid box against closed forms, where a capsule (axis distance minus radius)
+// is wrong, and against the same box as a closed mesh through the BVH query.
+
+#include <catch2/catch.hpp>
+#include <random>
+
+#include "mtcs/geometry/cylinder_box_distance.h"
+#include "mtcs/mesh/bvh.h"
+
+using namespace mtcs::geometry;
+
+TEST_CASE("cylinder vs box: closed forms", "[geometry][box]") {
+  const Box box{{0, 0, 0}, {10, 20, 30}};
+  // Parallel to the face x = 10 at a gap of 1.5 (axis at x = 13.5, radius 2).
+  CHECK(distance(Cylinder{{13.5, 5, 5}, {13.5, 5, 25}, 2}, box).distance == Approx(1.5).epsilon(1e-14));
+  // A flat end facing the face z = 30 from 0.25 above: 0.25 (a capsule says 0.25 - 2 < 0).
+  CHECK(distance(Cylinder{{5, 10, 30.25}, {5, 10, 50}, 2}, box).distance == Approx(0.25).epsilon(1e-14));
+  // The rim beside the edge x = 10, z = 30: end disk at z = 31, axis at x = 14 -> rim at x = 12:
+  // nearest points (12, y, 31) and (10, y, 30): sqrt(4 + 1).
+  CHECK(distance(Cylinder{{14, 10, 31}, {14, 10, 40}, 2}, box).distance == Approx(std::sqrt(5.0)).epsilon(1e-14));
+  // Crossing a face, and wholly inside: 0.
+  CHECK(distance(Cylinder{{5, 10, 25}, {5, 10, 35}, 1}, box).distance == 0);
+  CHECK(distance(Cylinder{{5, 10, 10}, {5, 10, 20}, 1}, box).distance == 0);
+  // The upper bound: a proven lower bound at or above it.
+  const auto far = distance(Cylinder{{13.5, 5, 5}, {13.5, 5, 25}, 2}, box, {.upper_bound = 1.0});
+  CHECK(far.bounded);
+  CHECK(far.distance >= 1.0);
+}
+
+TEST_CASE("cylinder vs box: the box as a closed mesh agrees", "[geometry][box]") {
+  const Box box{{-1, -2, -3}, {4, 5, 6}};
+  const mtcs::mesh::TriangleBvh bvh(mtcs::mesh::box_mesh(box));
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> coord(-12, 12), radius(0.05, 3);
+  for (int i = 0; i < 2000; ++i) {
+    const Cylinder c{{coord(rng), coord(rng), coord(rng)}, {coord(rng), coord(rng), coord(rng)}, radius(rng)};
+    const double ours = distance(c, box).distance;
+    const auto mesh = mtcs::mesh::cylinder_clearance(bvh, c, std::numeric_limits<double>::infinity());
+    INFO("case " << i);
+    CHECK(ours == Approx(mesh.distance).margin(1e-12 * 30));
+  }
+}
