@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
       mtcs::cli::add_evaluate_command(app),
       mtcs::cli::add_replay_command(app),
       mtcs::cli::add_distance_command(app),
+      mtcs::cli::add_interfere_command(app),
       mtcs::cli::add_hypervolume_command(app),
       mtcs::cli::add_bench_command(app),
   };

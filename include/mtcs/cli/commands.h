@@ -22,5 +22,6 @@ Command add_evaluate_command(CLI::App& app);
 Command add_optimize_command(CLI::App& app);
 Command add_hypervolume_command(CLI::App& app);
 Command add_replay_command(CLI::App& app);
+Command add_interfere_command(CLI::App& app);
 
 }  // namespace mtcs::cli
