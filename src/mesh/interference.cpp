@@ -13,7 +13,7 @@
 namespace mtcs::mesh {
 namespace {
 
-constexpr int kLeafSize = 4;
+constexpr int kLeafSize = 4;  // at most 32: leaves' triangles are tracked as bit masks
 
 Box empty_box() {
   return {Vec3::Constant(std::numeric_limits<double>::infinity()), Vec3::Constant(-std::numeric_limits<double>::infinity())};
@@ -57,6 +57,17 @@ bool ray_meets_box(const Vec3& o, const Vec3& inv_d, const Box& b) {
   return t0 <= t1;
 }
 
+// A cheap, conservative filter: false only when the triangle's box misses the box, or the box
+// lies strictly on one side of the triangle's plane by more than a rounding margin (the exact
+// test decides everything else).
+bool triangle_may_meet_box(const Triangle& t, const Box& tbox, const Vec3& n, const Box& box) {
+  if (!overlap(tbox, box)) return false;
+  const Vec3 c = (box.min + box.max) / 2, h = (box.max - box.min) / 2;
+  const double reach = n.cwiseAbs().dot(h), offset = n.dot(c - t[0]);
+  const double margin = 1e-12 * n.cwiseAbs().sum() * (c.cwiseAbs().maxCoeff() + h.maxCoeff() + t[0].cwiseAbs().maxCoeff());
+  return std::abs(offset) <= reach + margin;
+}
+
 bool share_corner(const std::array<int, 3>& a, const std::array<int, 3>& b) {
   for (int i : a)
     for (int j : b)
@@ -91,6 +102,7 @@ InterferenceBvh::InterferenceBvh(const TriangleMesh& mesh, MeshParts parts, Spli
     ids_[i] = mesh.triangles[std::size_t(order_[i])];
   }
   tris_ = std::move(by_position);
+  for (const Triangle& t : tris_) boxes_.push_back(box_of(t)), normals_.push_back((t[1] - t[0]).cross(t[2] - t[0]));
 }
 
 void InterferenceBvh::build(int node, int begin, int end, Split split, std::vector<Vec3>& centroids) {
@@ -195,31 +207,48 @@ std::vector<InterferencePair> intersecting_pairs(const InterferenceBvh& a, const
   if (a.size() == 0 || b.size() == 0) return pairs;
   const auto& na = a.nodes();
   const auto& nb = b.nodes();
-  std::vector<std::pair<int, int>> stack{{0, 0}};
+  // A leaf's triangles that may still meet the other side's subtree, as a bit mask: once a
+  // triangle is culled against a node's box it stays culled below that node. This keeps long,
+  // thin CAD triangles (whose own boxes are large) from being tested against every leaf of a
+  // small part.
+  struct Entry {
+    int i, j;
+    unsigned ma, mb;
+  };
+  auto cull = [](const InterferenceBvh& t, const InterferenceBvh::Node& leaf, unsigned mask, const Box& other) {
+    mask &= (1u << (leaf.end - leaf.begin)) - 1;  // leaves may hold fewer than kLeafSize
+    for (int p = leaf.begin; p < leaf.end; ++p)
+      if ((mask >> (p - leaf.begin) & 1u) && !triangle_may_meet_box(t.triangle(p), t.triangle_box(p), t.normal(p), other)) mask &= ~(1u << (p - leaf.begin));
+    return mask;
+  };
+  std::vector<Entry> stack{{0, 0, ~0u, ~0u}};
   while (!stack.empty()) {
-    const auto [i, j] = stack.back();
+    Entry e = stack.back();
     stack.pop_back();
     ++local.node_pairs;
-    const auto& x = na[std::size_t(i)];
-    const auto& y = nb[std::size_t(j)];
+    const auto& x = na[std::size_t(e.i)];
+    const auto& y = nb[std::size_t(e.j)];
     if (!overlap(x.box, y.box)) continue;
+    if (x.child < 0 && (e.ma = cull(a, x, e.ma, y.box)) == 0) continue;
+    if (y.child < 0 && (e.mb = cull(b, y, e.mb, x.box)) == 0) continue;
     if (x.child < 0 && y.child < 0) {
       for (int p = x.begin; p < x.end; ++p) {
+        if (!(e.ma >> (p - x.begin) & 1u)) continue;
         const Triangle& ta = a.triangle(p);
-        const Box ba = box_of(ta);
-        if (!overlap(ba, y.box)) continue;
+        const Box& ba = a.triangle_box(p);
         for (int q = y.begin; q < y.end; ++q) {
+          if (!(e.mb >> (q - y.begin) & 1u)) continue;
           const Triangle& tb = b.triangle(q);
-          if (!overlap(ba, box_of(tb))) continue;
+          if (!overlap(ba, b.triangle_box(q))) continue;
           ++local.triangle_tests;
           const TriangleIntersection hit = intersect_triangles(ta, tb);
           if (hit.intersects) pairs.push_back({a.triangle_at(p), b.triangle_at(q), hit});
         }
       }
     } else if (y.child < 0 || (x.child >= 0 && extent(x.box) >= extent(y.box))) {
-      stack.push_back({x.child, j}), stack.push_back({x.child + 1, j});
+      stack.push_back({x.child, e.j, e.ma, e.mb}), stack.push_back({x.child + 1, e.j, e.ma, e.mb});
     } else {
-      stack.push_back({i, y.child}), stack.push_back({i, y.child + 1});
+      stack.push_back({e.i, y.child, e.ma, e.mb}), stack.push_back({e.i, y.child + 1, e.ma, e.mb});
     }
   }
   std::sort(pairs.begin(), pairs.end(), [](const auto& p, const auto& q) { return std::pair(p.a, p.b) < std::pair(q.a, q.b); });
@@ -234,7 +263,7 @@ std::vector<std::array<int, 2>> self_intersections(const InterferenceBvh& bvh, I
   const auto& nodes = bvh.nodes();
   auto test = [&](int p, int q) {
     if (share_corner(bvh.corners(p), bvh.corners(q))) return;
-    if (!overlap(box_of(bvh.triangle(p)), box_of(bvh.triangle(q)))) return;
+    if (!overlap(bvh.triangle_box(p), bvh.triangle_box(q))) return;
     ++local.triangle_tests;
     if (triangles_intersect(bvh.triangle(p), bvh.triangle(q)))
       found.push_back({std::min(bvh.triangle_at(p), bvh.triangle_at(q)), std::max(bvh.triangle_at(p), bvh.triangle_at(q))});
@@ -287,7 +316,7 @@ double surface_distance(const InterferenceBvh& a, const InterferenceBvh& b, Inte
     if (x.child < 0 && y.child < 0) {
       for (int p = x.begin; p < x.end; ++p)
         for (int q = y.begin; q < y.end; ++q) {
-          if (box_distance_sq(box_of(a.triangle(p)), box_of(b.triangle(q))) >= best * best) continue;
+          if (box_distance_sq(a.triangle_box(p), b.triangle_box(q)) >= best * best) continue;
           ++local.triangle_tests;
           best = std::min(best, triangle_distance(a.triangle(p), b.triangle(q)));
         }

@@ -48,13 +48,6 @@ bool inside_2d(const Plane2& pl, const Triangle& t, const Vec3& p) {
   return (o0 >= 0 && o1 >= 0 && o2 >= 0) || (o0 <= 0 && o1 <= 0 && o2 <= 0);
 }
 
-bool segment_meets_triangle_2d(const Plane2& pl, const Vec3& p, const Vec3& q, const Triangle& t) {
-  if (inside_2d(pl, t, p) || inside_2d(pl, t, q)) return true;
-  for (int k = 0; k < 3; ++k)
-    if (segments_meet_2d(pl, p, q, t[k], t[(k + 1) % 3])) return true;
-  return false;
-}
-
 bool coplanar_triangles_meet(const Triangle& a, const Triangle& b) {
   const Plane2 pl = projection_of(a);
   for (int i = 0; i < 3; ++i)
@@ -63,37 +56,99 @@ bool coplanar_triangles_meet(const Triangle& a, const Triangle& b) {
   return inside_2d(pl, b, a[0]) || inside_2d(pl, a, b[0]);
 }
 
-// Edge pq of one triangle against triangle t; sp, sq: the sides of p and q of t's plane.
-bool edge_meets_triangle(const Vec3& p, const Vec3& q, int sp, int sq, const Triangle& t) {
-  if (sp * sq > 0) return false;
-  if (sp == 0 && sq == 0) return segment_meets_triangle_2d(projection_of(t), p, q, t);
-  // The line pq crosses t's plane inside the segment; it meets t iff it passes the three
-  // directed edges on one side (a zero: through an edge or a corner).
-  const int o0 = orient3d(p, q, t[0], t[1]);
-  const int o1 = orient3d(p, q, t[1], t[2]);
-  if (o0 * o1 < 0) return false;
-  const int o2 = orient3d(p, q, t[2], t[0]);
-  return (o0 >= 0 && o1 >= 0 && o2 >= 0) || (o0 <= 0 && o1 <= 0 && o2 <= 0);
-}
-
 bool same_strict_side(const int s[3]) { return (s[0] > 0 && s[1] > 0 && s[2] > 0) || (s[0] < 0 && s[1] < 0 && s[2] < 0); }
 
 enum class Verdict { kApart, kCrossing, kCoplanar };
 
+// The sides of three points of t's plane: orient3d(t[0], t[1], t[2], p[k]). One normal serves
+// the three; each sign is taken from it when it clears a bound of 32 eps times the permanent
+// (the rounding of this evaluation stays below 8 eps of it, as in Shewchuk's orient3d), else
+// from the exact predicate.
+void plane_sides(const Triangle& t, const Triangle& p, int s[3]) {
+  const Vec3 u = t[1] - t[0], v = t[2] - t[0];
+  const Vec3 n = u.cross(v);
+  const Vec3 m(std::abs(u.y() * v.z()) + std::abs(u.z() * v.y()), std::abs(u.z() * v.x()) + std::abs(u.x() * v.z()),
+               std::abs(u.x() * v.y()) + std::abs(u.y() * v.x()));
+  constexpr double kBound = 32 * 0x1p-53;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 w = p[k] - t[0];
+    const double det = n.dot(w), permanent = m.dot(w.cwiseAbs());
+    if (permanent > 1e-200 && std::abs(det) > kBound * permanent) s[k] = det > 0 ? 1 : -1;
+    else s[k] = orient3d(t[0], t[1], t[2], p[k]);
+  }
+}
+
+// Guigue and Devillers ("Fast and robust triangle-triangle overlap test using orientation
+// predicates", 2003), after their reference code: with p1 alone on its side of T2's plane and
+// p2 alone on its side of T1's plane (orders fixed so both lie on the positive side), the
+// segments T1 and T2 cut from the planes' common line overlap iff two orientations say so.
+bool overlap_on_line(const Vec3& p1, const Vec3& q1, const Vec3& r1, const Vec3& p2, const Vec3& q2, const Vec3& r2) {
+  return orient3d(q1, p2, p1, q2) <= 0 && orient3d(p1, p2, r1, r2) <= 0;
+}
+
+// T1 = (p1, q1, r1) permuted so that p1 is alone on its side of T2's plane; s: the sides of
+// p2, q2, r2 of T1's plane.
+bool gd_second(const Vec3& p1, const Vec3& q1, const Vec3& r1, const Vec3& p2, const Vec3& q2, const Vec3& r2,
+               int sp, int sq, int sr, bool* coplanar) {
+  if (sp > 0) {
+    if (sq > 0) return overlap_on_line(p1, r1, q1, r2, p2, q2);
+    if (sr > 0) return overlap_on_line(p1, r1, q1, q2, r2, p2);
+    return overlap_on_line(p1, q1, r1, p2, q2, r2);
+  }
+  if (sp < 0) {
+    if (sq < 0) return overlap_on_line(p1, q1, r1, r2, p2, q2);
+    if (sr < 0) return overlap_on_line(p1, q1, r1, q2, r2, p2);
+    return overlap_on_line(p1, r1, q1, p2, q2, r2);
+  }
+  if (sq < 0) {
+    if (sr >= 0) return overlap_on_line(p1, r1, q1, q2, r2, p2);
+    return overlap_on_line(p1, q1, r1, p2, q2, r2);
+  }
+  if (sq > 0) {
+    if (sr > 0) return overlap_on_line(p1, r1, q1, p2, q2, r2);
+    return overlap_on_line(p1, q1, r1, q2, r2, p2);
+  }
+  if (sr > 0) return overlap_on_line(p1, q1, r1, r2, p2, q2);
+  if (sr < 0) return overlap_on_line(p1, r1, q1, r2, p2, q2);
+  *coplanar = true;
+  return false;
+}
+
 Verdict classify(const Triangle& a, const Triangle& b) {
   int sb[3], sa[3];
-  for (int k = 0; k < 3; ++k) sb[k] = orient3d(a[0], a[1], a[2], b[k]);
+  plane_sides(a, b, sb);
   if (same_strict_side(sb)) return Verdict::kApart;
-  for (int k = 0; k < 3; ++k) sa[k] = orient3d(b[0], b[1], b[2], a[k]);
+  plane_sides(b, a, sa);
   if (same_strict_side(sa)) return Verdict::kApart;
-  if (sb[0] == 0 && sb[1] == 0 && sb[2] == 0)
-    return coplanar_triangles_meet(a, b) ? Verdict::kCoplanar : Verdict::kApart;
-  for (int k = 0; k < 3; ++k) {
-    const int j = (k + 1) % 3;
-    if (edge_meets_triangle(a[k], a[j], sa[k], sa[j], b)) return Verdict::kCrossing;
-    if (edge_meets_triangle(b[k], b[j], sb[k], sb[j], a)) return Verdict::kCrossing;
+  const Vec3 &p1 = a[0], &q1 = a[1], &r1 = a[2], &p2 = b[0], &q2 = b[1], &r2 = b[2];
+  const int dp1 = sa[0], dq1 = sa[1], dr1 = sa[2], dp2 = sb[0], dq2 = sb[1], dr2 = sb[2];
+  bool coplanar = false;
+  bool meet;
+  // Bring T1's lone vertex first (and T2 into the matching orientation).
+  if (dp1 > 0) {
+    if (dq1 > 0) meet = gd_second(r1, p1, q1, p2, r2, q2, dp2, dr2, dq2, &coplanar);
+    else if (dr1 > 0) meet = gd_second(q1, r1, p1, p2, r2, q2, dp2, dr2, dq2, &coplanar);
+    else meet = gd_second(p1, q1, r1, p2, q2, r2, dp2, dq2, dr2, &coplanar);
+  } else if (dp1 < 0) {
+    if (dq1 < 0) meet = gd_second(r1, p1, q1, p2, q2, r2, dp2, dq2, dr2, &coplanar);
+    else if (dr1 < 0) meet = gd_second(q1, r1, p1, p2, q2, r2, dp2, dq2, dr2, &coplanar);
+    else meet = gd_second(p1, q1, r1, p2, r2, q2, dp2, dr2, dq2, &coplanar);
+  } else if (dq1 < 0) {
+    if (dr1 >= 0) meet = gd_second(q1, r1, p1, p2, r2, q2, dp2, dr2, dq2, &coplanar);
+    else meet = gd_second(p1, q1, r1, p2, q2, r2, dp2, dq2, dr2, &coplanar);
+  } else if (dq1 > 0) {
+    if (dr1 > 0) meet = gd_second(p1, q1, r1, p2, r2, q2, dp2, dr2, dq2, &coplanar);
+    else meet = gd_second(q1, r1, p1, p2, q2, r2, dp2, dq2, dr2, &coplanar);
+  } else if (dr1 > 0) {
+    meet = gd_second(r1, p1, q1, p2, q2, r2, dp2, dq2, dr2, &coplanar);
+  } else if (dr1 < 0) {
+    meet = gd_second(r1, p1, q1, p2, r2, q2, dp2, dr2, dq2, &coplanar);
+  } else {
+    coplanar = true;
+    meet = false;
   }
-  return Verdict::kApart;
+  if (coplanar) return coplanar_triangles_meet(a, b) ? Verdict::kCoplanar : Verdict::kApart;
+  return meet ? Verdict::kCrossing : Verdict::kApart;
 }
 
 // Where triangle t meets the plane through o with normal n (t crosses or touches it): the two

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -108,4 +109,37 @@ TEST_CASE("mtcs interfere: bad input exits 2 naming the file and the reason", "[
   CHECK(run("interfere " + kMeshes + "homer.off " + kMeshes + "homer.off --translate 1,2", &out) == 2);
   CHECK(run("interfere --help", &out) == 0);
   CHECK(out.find("Examples") != std::string::npos);
+}
+
+TEST_CASE("mtcs bench interfere: ours, FCL and CGAL agree on the homer/gear placements", "[cli][interfere]") {
+  const fs::path cases = scratch("cases.csv");
+  std::ofstream(cases) << "mesh_a,mesh_b,tx,ty,tz,pairs,distance_lo,distance_hi\n"
+                          "homer,mcad_herringbone_gear,29.132630030337086,0.029399999999998983,-1.0000930000000001,16,-1,-1\n"
+                          "homer,mcad_herringbone_gear,29.152630030337086,0.029399999999998983,-1.0000930000000001,-1,"
+                          "0.0012250035083989301,0.0012250035083989307\n";
+  std::string out;
+  REQUIRE(run("bench interfere --repeat 1 --cases " + cases.string() + " --meshes " + MTCS_TEST_DATA "/meshes", &out) == 0);
+  std::istringstream lines(out);
+  std::string header, line;
+  std::getline(lines, header);
+  std::vector<std::string> names;
+  {
+    std::stringstream ss(header);
+    for (std::string f; std::getline(ss, f, ',');) names.push_back(f);
+  }
+  int rows = 0;
+  while (std::getline(lines, line)) {
+    std::stringstream ss(line);
+    std::map<std::string, std::string> row;
+    for (std::size_t i = 0; i < names.size(); ++i) std::getline(ss, row[names[i]], ',');
+    const bool overlap = row["kind"] == "overlap";
+    CHECK(row["ours_pairs"] == (overlap ? "16" : "0"));
+    CHECK(row["ours_face_pairs"] == row["ours_pairs"]);
+    CHECK(row["fcl_pairs"] == row["ours_pairs"]);
+    CHECK(row["fcl_same_pairs"] == "1");
+    CHECK(row["cgal_intersect"] == (overlap ? "1" : "0"));
+    CHECK(row["distance_ok"] == "1");
+    ++rows;
+  }
+  CHECK(rows == 2);
 }

@@ -30,6 +30,8 @@ class InterferenceBvh {
   const std::vector<Node>& nodes() const { return nodes_; }
   int triangle_at(int position) const { return order_[std::size_t(position)]; }  // mesh index
   const Triangle& triangle(int position) const { return tris_[std::size_t(position)]; }
+  const Box& triangle_box(int position) const { return boxes_[std::size_t(position)]; }
+  const Vec3& normal(int position) const { return normals_[std::size_t(position)]; }  // not unit
   const std::array<int, 3>& corners(int position) const { return ids_[std::size_t(position)]; }
   const MeshParts& parts() const { return parts_; }
   std::size_t size() const { return tris_.size(); }
@@ -45,6 +47,8 @@ class InterferenceBvh {
   std::vector<Node> nodes_;
   std::vector<int> order_;              // leaf order -> mesh triangle
   std::vector<Triangle> tris_;          // in leaf order
+  std::vector<Box> boxes_;              // the triangles' boxes, in leaf order
+  std::vector<Vec3> normals_;           // (b - a) x (c - a), in leaf order
   std::vector<std::array<int, 3>> ids_; // vertex indices, in leaf order
   MeshParts parts_;                     // indexed by mesh triangle
 };

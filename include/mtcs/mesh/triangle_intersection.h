@@ -2,11 +2,10 @@
 // Whether two closed triangles share a point, decided exactly for double coordinates, and the
 // shared part as a segment for reports and drawings.
 //
-// The verdict uses orientation signs only (exact_predicates.h): two triangles in different
-// planes meet iff an edge of one meets the other (their common part is a segment of the planes'
-// line whose end points lie on edges); an edge meets a triangle it crosses the plane of iff the
-// edge's line passes every directed edge of the triangle on the same side (Plücker signs).
-// Coplanar pairs, and edges lying in the other triangle's plane, are decided in 2-D on the
+// The verdict uses orientation signs only (exact_predicates.h), as Guigue and Devillers'
+// test does: the sides of each triangle's corners of the other's plane, then two orientations
+// that compare the segments both triangles cut from the planes' common line. Coplanar pairs are
+// decided in 2-D (edge crossings, a corner inside the other) on the
 // coordinate plane the normal is most aligned with. Triangles must not be degenerate.
 
 #include <array>
