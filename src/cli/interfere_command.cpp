@@ -14,6 +14,7 @@
 #include "mtcs/io/atomic_file.h"
 #include "mtcs/io/input_error.h"
 #include "mtcs/mesh/interference.h"
+#include "mtcs/mesh/mesh_check.h"
 #include "mtcs/mesh/mesh_io.h"
 
 namespace mtcs::cli {
@@ -28,8 +29,8 @@ TriangleMesh load_solid(const std::string& path) {
   } catch (const mesh::MeshError& e) {
     throw io::InputError(path, 0, 0, "", e.what());
   }
-  if (const std::string problem = mesh::closed_mesh_problem(m); !problem.empty())
-    throw io::InputError(path, 0, 0, "", "not a closed, oriented surface: " + problem);
+  if (const auto check = mesh::check_mesh(m); !check.ok())
+    throw io::InputError(path, 0, 0, "", "not the closed, oriented, self-intersection-free surface of a solid: " + check.message());
   return m;
 }
 
@@ -84,6 +85,7 @@ Command add_interfere_command(CLI::App& app) {
       "  mtcs interfere slide.stl lock.stl\n"
       "  mtcs interfere core.off pin.off --translate 0,0,12.5 --out report.ply\n"
       "  mtcs interfere a.stl b.stl --touch-tolerance 0.01 --json > report.json\n"
+      "Each mesh must bound a solid: closed, manifold, consistently oriented, no self-intersection.\n"
       "Exit codes: 0 done (whether or not they interfere), 2 bad input (file and reason printed).");
   sub->add_option("a", o->a, "mesh of component A")->required();
   sub->add_option("b", o->b, "mesh of component B")->required();

@@ -106,6 +106,16 @@ TEST_CASE("mtcs interfere: bad input exits 2 naming the file and the reason", "[
   CHECK(run("interfere " + kMeshes + "homer.off " + holed.string(), &out) == 2);
   CHECK(out.find("holed.stl") != std::string::npos);
   CHECK(out.find("not closed") != std::string::npos);
+  // Closed and oriented, but two boxes through each other: self-intersecting.
+  auto crossed = mesh::box_mesh({{0, 0, 0}, {2, 2, 2}});
+  const auto second = mesh::box_mesh({{1, 1, 1}, {3, 3, 3}});
+  for (const auto& v : second.vertices) crossed.vertices.push_back(v);
+  for (auto t : second.triangles) crossed.triangles.push_back({t[0] + 8, t[1] + 8, t[2] + 8});
+  const fs::path self = scratch("crossed.stl");
+  mesh::write_stl(self.string(), crossed);
+  CHECK(run("interfere " + self.string() + " " + kMeshes + "homer.off", &out) == 2);
+  CHECK(out.find("crossed.stl") != std::string::npos);
+  CHECK(out.find("intersect each other") != std::string::npos);
   CHECK(run("interfere " + kMeshes + "homer.off " + kMeshes + "homer.off --translate 1,2", &out) == 2);
   CHECK(run("interfere --help", &out) == 0);
   CHECK(out.find("Examples") != std::string::npos);
