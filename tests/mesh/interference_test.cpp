@@ -245,3 +245,30 @@ TEST_CASE("self-intersections: none in the shipped meshes, found in overlapping 
   CHECK(found == brute);
   CHECK(!found.empty());
 }
+
+TEST_CASE("interference: surface distance equals brute force over all triangle pairs", "[mesh][interference]") {
+  // A large, rotated box (big triangles, so the pruning by planes and edge planes matters)
+  // around and beside homer, and homer against a small box: distances against the minimum of
+  // triangle_distance over all pairs.
+  const TriangleMesh& homer = cached("homer");
+  const InterferenceBvh bh = bvh(homer);
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int apart = 0;
+  for (int i = 0; i < 12; ++i) {
+    const double size = i % 2 ? 3.0 : 0.05;
+    TriangleMesh box = mesh::box_mesh({{0, 0, 0}, {size, size * 0.7, size * 0.4}});
+    const Eigen::Matrix3d r = Eigen::Quaterniond(u(rng), u(rng), u(rng), u(rng)).normalized().toRotationMatrix();
+    const Vec3 at = homer.bounds().max + Vec3(u(rng), u(rng), u(rng)) * 0.6;
+    for (Vec3& v : box.vertices) v = r * v + at;
+    double brute = std::numeric_limits<double>::infinity();
+    for (std::size_t a = 0; a < homer.triangles.size(); ++a)
+      for (std::size_t b = 0; b < box.triangles.size(); ++b)
+        brute = std::min(brute, mesh::triangle_distance({homer.corner(a, 0), homer.corner(a, 1), homer.corner(a, 2)},
+                                                        {box.corner(b, 0), box.corner(b, 1), box.corner(b, 2)}));
+    CHECK(mesh::surface_distance(bh, bvh(box)) == Approx(brute).epsilon(1e-12).margin(1e-15));
+    CHECK(mesh::surface_distance(bvh(box), bh) == Approx(brute).epsilon(1e-12).margin(1e-15));
+    apart += brute > 0;
+  }
+  CHECK(apart >= 4);
+}
