@@ -76,7 +76,7 @@ int bench_interfere(const std::string& cases, const std::string& meshes, int rep
       "mesh_a,mesh_b,kind,want_pairs,ours_pairs,ours_face_pairs,fcl_pairs,fcl_same_pairs,cgal_intersect,"
       "ours_build_ms,ours_face_build_ms,fcl_build_ms,ours_ms,ours_face_ms,fcl_ms,cgal_ms,fcl_over_ours,"
       "triangle_tests,face_triangle_tests,all_pairs,tested_share,node_pairs,distance,distance_ok,distance_ms,"
-      "distance_node_pairs,distance_triangle_tests\n");
+      "distance_node_pairs,distance_triangle_tests,fcl_distance,fcl_distance_ok,fcl_distance_ms\n");
   for (const Row& row : read_cases(cases)) {
     const mesh::TriangleMesh& a = load(row.a);
     mesh::TriangleMesh b = load(row.b);
@@ -108,17 +108,22 @@ int bench_interfere(const std::string& cases, const std::string& meshes, int rep
     double distance = -1, t_distance = 0;
     bool distance_ok = true;
     mesh::InterferenceStats distance_stats;
+    double fcl_distance = -1, t_fcl_distance = 0;
+    bool fcl_distance_ok = true;
     if (row.pairs < 0) {
       t_distance = median_ms(repeat, [&] { distance = mesh::surface_distance(*ma, *mb, &distance_stats); });
       const auto ba = a.bounds(), bb = b.bounds();
       const double tol = 1e-9 * std::max(1.0, (ba.max.cwiseMax(bb.max) - ba.min.cwiseMin(bb.min)).norm());
       distance_ok = distance >= row.lo - tol && distance <= row.hi + tol;
+      t_fcl_distance = median_ms(repeat, [&] { fcl_distance = fcl_mesh_distance(*ca, *cb); });
+      fcl_distance_ok = fcl_distance >= row.lo - tol && fcl_distance <= row.hi + tol;
     }
-    std::printf("%s,%s,%s,%ld,%zu,%zu,%zu,%d,%d,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.3g,%zu,%zu,%.0f,%.3g,%zu,%.17g,%d,%.4g,%zu,%zu\n",
+    std::printf("%s,%s,%s,%ld,%zu,%zu,%zu,%d,%d,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.3g,%zu,%zu,%.0f,%.3g,%zu,%.17g,%d,%.4g,%zu,%zu,%.17g,%d,%.4g\n",
                 row.a.c_str(), row.b.c_str(), row.pairs >= 0 ? "overlap" : "gap", row.pairs, ours.size(), face.size(),
                 fcl.size(), int(fcl == ours_set), int(cgal), build, face_build, fcl_build, t_ours, t_face, t_fcl, t_cgal,
                 t_fcl / t_ours, stats.triangle_tests, face_stats.triangle_tests, all, double(stats.triangle_tests) / all,
-                stats.node_pairs, distance, int(distance_ok), t_distance, distance_stats.node_pairs, distance_stats.triangle_tests);
+                stats.node_pairs, distance, int(distance_ok), t_distance, distance_stats.node_pairs, distance_stats.triangle_tests, fcl_distance,
+                int(fcl_distance_ok), t_fcl_distance);
     std::fflush(stdout);
   }
   return 0;

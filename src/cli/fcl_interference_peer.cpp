@@ -2,6 +2,7 @@
 
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/distance.h>
 
 namespace mtcs::cli {
 
@@ -35,6 +36,13 @@ std::vector<std::array<int, 2>> fcl_colliding_pairs(const FclMesh& a, const FclM
     pairs.push_back({int(c.b1), int(c.b2)});
   }
   return pairs;
+}
+
+double fcl_mesh_distance(const FclMesh& a, const FclMesh& b) {
+  fcl::DistanceRequestd request;
+  fcl::DistanceResultd result;
+  const fcl::Transform3d identity = fcl::Transform3d::Identity();
+  return fcl::distance(&a.impl_->model, identity, &b.impl_->model, identity, request, result);
 }
 
 }  // namespace mtcs::cli

@@ -18,6 +18,7 @@ class FclMesh {
 
   // Every colliding triangle pair (FCL's triangle test, floating point), as FCL reports them.
   friend std::vector<std::array<int, 2>> fcl_colliding_pairs(const FclMesh& a, const FclMesh& b);
+  friend double fcl_mesh_distance(const FclMesh& a, const FclMesh& b);
 
  private:
   struct Impl;
@@ -25,5 +26,8 @@ class FclMesh {
 };
 
 std::vector<std::array<int, 2>> fcl_colliding_pairs(const FclMesh& a, const FclMesh& b);
+
+// FCL's distance between the two surfaces (its exact mode: no relative error allowed).
+double fcl_mesh_distance(const FclMesh& a, const FclMesh& b);
 
 }  // namespace mtcs::cli
