@@ -1,6 +1,7 @@
 #include "fcl_mesh_peer.h"
 
 #include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/distance.h>
 
 #include <algorithm>
@@ -35,6 +36,28 @@ double FclMesh::distance(const geometry::Cylinder& c) const {
   fcl::DistanceResultd result;
   const double d = fcl::distance(&cylinder, pose, &impl_->model, fcl::Transform3d::Identity(), request, result);
   return std::max(0.0, d);
+}
+
+std::vector<std::array<int, 2>> fcl_colliding_pairs(const FclMesh& a, const FclMesh& b) {
+  // All contacts, without contact points: FCL then runs its triangle test only.
+  fcl::CollisionRequestd request(std::size_t(1) << 30, false);
+  fcl::CollisionResultd result;
+  const fcl::Transform3d identity = fcl::Transform3d::Identity();
+  fcl::collide(&a.impl_->model, identity, &b.impl_->model, identity, request, result);
+  std::vector<std::array<int, 2>> pairs;
+  pairs.reserve(result.numContacts());
+  for (std::size_t i = 0; i < result.numContacts(); ++i) {
+    const auto& c = result.getContact(i);
+    pairs.push_back({int(c.b1), int(c.b2)});
+  }
+  return pairs;
+}
+
+double fcl_mesh_distance(const FclMesh& a, const FclMesh& b) {
+  fcl::DistanceRequestd request;
+  fcl::DistanceResultd result;
+  const fcl::Transform3d identity = fcl::Transform3d::Identity();
+  return fcl::distance(&a.impl_->model, identity, &b.impl_->model, identity, request, result);
 }
 
 }  // namespace mtcs::cli

@@ -3,9 +3,12 @@
 
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <fstream>
+#include <unistd.h>
 #include <random>
 
 #include "mtcs/mesh/bvh.h"
+#include "mtcs/mesh/mesh_check.h"
 #include "mtcs/mesh/mesh_io.h"
 
 using namespace mtcs;
@@ -94,4 +97,60 @@ TEST_CASE("meshes: containment when the ray passes through an edge or a vertex",
     CHECK(bvh.contains(exit - 3 * d));
     CHECK_FALSE(bvh.contains(exit + 3 * d));
   }
+}
+
+TEST_CASE("meshes: validation names self-intersecting triangles, holes and flipped faces", "[mesh]") {
+  CHECK(mesh::check_mesh(mesh::box_mesh({{0, 0, 0}, {1, 1, 1}})).ok());
+  // Two overlapping boxes in one mesh: closed and oriented, but self-intersecting.
+  auto two = mesh::box_mesh({{0, 0, 0}, {2, 2, 2}});
+  const auto second = mesh::box_mesh({{1, 1, 1}, {3, 3, 3}});
+  for (const Vec3& v : second.vertices) two.vertices.push_back(v);
+  for (auto t : second.triangles) two.triangles.push_back({t[0] + 8, t[1] + 8, t[2] + 8});
+  const auto c = mesh::check_mesh(two);
+  CHECK(c.closed_problem.empty());
+  REQUIRE_FALSE(c.self_intersections.empty());
+  for (const auto& p : c.self_intersections) {  // one from each box
+    CHECK(p[0] < 12);
+    CHECK(p[1] >= 12);
+  }
+  const std::string m = c.message();
+  CHECK(m.find("intersect each other") != std::string::npos);
+  CHECK(m.find(std::to_string(c.self_intersections[0][0]) + "-" + std::to_string(c.self_intersections[0][1])) != std::string::npos);
+  // A hole and a flipped face: named by the closedness check.
+  auto holed = mesh::box_mesh({{0, 0, 0}, {1, 1, 1}});
+  holed.triangles.pop_back();
+  CHECK(mesh::check_mesh(holed).message().find("not closed") != std::string::npos);
+  auto flipped = mesh::box_mesh({{0, 0, 0}, {1, 1, 1}});
+  std::swap(flipped.triangles[3][1], flipped.triangles[3][2]);
+  CHECK_FALSE(mesh::check_mesh(flipped).ok());
+  // The shipped meshes pass.
+  CHECK(mesh::check_mesh(mesh::read_mesh(MTCS_TEST_DATA "/meshes/homer.off")).ok());
+}
+
+TEST_CASE("meshes: OBJ and PLY (colours, quality) read back through CGAL's readers", "[mesh]") {
+  const auto gear = mesh::read_mesh(MTCS_TEST_DATA "/meshes/mcad_herringbone_gear.off");
+  const auto dir = std::filesystem::temp_directory_path() / ("mtcs_writers_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  mesh::FaceAttributes faces;
+  for (std::size_t t = 0; t < gear.triangles.size(); ++t) {
+    faces.colors.push_back({static_cast<unsigned char>(t % 256), 200, 30});
+    faces.quality.push_back(double(t) / 7);
+  }
+  {
+    std::ofstream obj(dir / "gear.obj"), ply(dir / "gear.ply");
+    mesh::write_obj(obj, gear);
+    mesh::write_ply(ply, gear, faces);
+  }
+  for (const char* name : {"gear.obj", "gear.ply"}) {
+    INFO(name);
+    const auto back = mesh::read_mesh((dir / name).string());
+    REQUIRE(back.triangles.size() == gear.triangles.size());
+    CHECK(back.vertices == gear.vertices);  // 17 digits: bit for bit
+    CHECK(back.triangles == gear.triangles);
+  }
+  std::ifstream ply(dir / "gear.ply");
+  std::string header((std::istreambuf_iterator<char>(ply)), {});
+  CHECK(header.find("property uchar red") != std::string::npos);
+  CHECK(header.find("property float quality") != std::string::npos);
+  std::filesystem::remove_all(dir);
 }

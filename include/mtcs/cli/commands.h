@@ -24,5 +24,6 @@ Command add_hypervolume_command(CLI::App& app);
 Command add_replay_command(CLI::App& app);
 Command add_compare_penalties_command(CLI::App& app);
 Command add_clearance_command(CLI::App& app);
+Command add_interfere_command(CLI::App& app);
 
 }  // namespace mtcs::cli

@@ -1,7 +1,9 @@
 #pragma once
 // Reading and writing triangle meshes: STL (ASCII and binary), OFF, OBJ and PLY through CGAL's
-// I/O. The only place in mtcs that includes CGAL's I/O headers.
+// I/O (the only place in mtcs that includes CGAL's I/O headers); writing STL, OBJ and PLY.
 
+#include <array>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 
@@ -20,5 +22,19 @@ TriangleMesh read_mesh(const std::string& path);
 
 // Binary STL.
 void write_stl(const std::string& path, const TriangleMesh& mesh);
+
+// Wavefront OBJ (vertices at 17 significant digits, faces 1-based).
+void write_obj(std::ostream& out, const TriangleMesh& mesh);
+
+// Per-face data for PLY: an RGB colour and a scalar, each empty or one per triangle. The
+// scalar is written as the face property `quality`, which MeshLab reads as face quality;
+// ParaView and MeshLab show the colours.
+struct FaceAttributes {
+  std::vector<std::array<unsigned char, 3>> colors;
+  std::vector<double> quality;
+};
+
+// ASCII PLY with double coordinates and the per-face attributes given.
+void write_ply(std::ostream& out, const TriangleMesh& mesh, const FaceAttributes& faces = {});
 
 }  // namespace mtcs::mesh
