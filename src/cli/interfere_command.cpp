@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <tuple>
 
+#include "layout_interference.h"
 #include "mtcs/cli/commands.h"
 #include "mtcs/io/atomic_file.h"
 #include "mtcs/io/input_error.h"
@@ -66,7 +67,7 @@ void write_report_ply(const std::string& path, const TriangleMesh& a, const Tria
 
 Command add_interfere_command(CLI::App& app) {
   struct Options {
-    std::string a, b, out;
+    std::string a, b, out, layout;
     std::vector<double> translate{0, 0, 0};
     double touch_tolerance = -1;
     bool json = false;
@@ -79,16 +80,21 @@ Command add_interfere_command(CLI::App& app) {
       "per solid (connected component) and face (near-planar patch), whether one solid lies\n"
       "inside the other, and the distance between the surfaces when they do not meet.\n"
       "Surfaces in contact (e.g. plates face to face) are not interference unless the solids\n"
-      "overlap by more than the touch tolerance.");
+      "overlap by more than the touch tolerance.\n"
+      "With --layout, A is a mold spec instead: every bore of the layout against the part, each\n"
+      "keep-out and the other bores (exact solid-cylinder distances), each bore that crosses one\n"
+      "or comes closer than its clearance listed with the distance and the place.");
   sub->footer(
       "Examples:\n"
       "  mtcs interfere slide.stl lock.stl\n"
       "  mtcs interfere core.off pin.off --translate 0,0,12.5 --out report.ply\n"
       "  mtcs interfere a.stl b.stl --touch-tolerance 0.01 --json > report.json\n"
+      "  mtcs interfere molds/cup.yaml --layout molds/cup.layout.yaml\n"
       "Each mesh must bound a solid: closed, manifold, consistently oriented, no self-intersection.\n"
       "Exit codes: 0 done (whether or not they interfere), 2 bad input (file and reason printed).");
-  sub->add_option("a", o->a, "mesh of component A")->required();
-  sub->add_option("b", o->b, "mesh of component B")->required();
+  sub->add_option("a", o->a, "mesh of component A (with --layout: the mold spec)")->required();
+  sub->add_option("b", o->b, "mesh of component B (not with --layout)");
+  sub->add_option("--layout", o->layout, "check this layout's bores against the mold A (YAML)");
   sub->add_option("--translate", o->translate, "move B by tx,ty,tz before the check")->delimiter(',')->expected(3);
   sub->add_option("--touch-tolerance", o->touch_tolerance,
                   "overlap up to this depth counts as contact, not interference\n"
@@ -98,6 +104,11 @@ Command add_interfere_command(CLI::App& app) {
   sub->add_flag("--json", o->json, "print a JSON object (pairs, distance, groups, nesting) instead of text");
 
   return {sub, [o] {
+            if (!o->layout.empty()) {
+              if (!o->b.empty()) throw io::InputError(o->b, 0, 0, "", "with --layout, give the mold spec alone");
+              return run_layout_interference(o->a, o->layout, o->json);
+            }
+            if (o->b.empty()) throw io::InputError(o->a, 0, 0, "", "a second mesh (B) to check against, or --layout");
             const TriangleMesh a = load_solid(o->a);
             TriangleMesh b = load_solid(o->b);
             b.translate({o->translate[0], o->translate[1], o->translate[2]});
