@@ -1,5 +1,7 @@
 #include "mtcs/mesh/bvh.h"
 
+#include "ray_parity.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -35,35 +37,6 @@ double ray_hit(const Vec3& o, const Vec3& d, const std::array<Vec3, 3>& t) {
   return e2.dot(q) * inv;
 }
 
-// Ray-triangle crossing for parity counting: 1 crossed, 0 missed, -1 too close to call (the ray
-// passes within rounding of an edge or a vertex, or the origin lies on the plane), where a
-// parity count may take a crossing twice or not at all.
-int ray_crossing(const Vec3& o, const Vec3& d, const std::array<Vec3, 3>& t) {
-  const Vec3 e1 = t[1] - t[0], e2 = t[2] - t[0];
-  const Vec3 p = d.cross(e2);
-  const double det = e1.dot(p);
-  const double eps = 1e-12;
-  if (std::abs(det) <= eps * e1.norm() * e2.norm()) return 0;  // ray parallel to the plane
-  const double inv = 1 / det;
-  const Vec3 s = o - t[0];
-  const double u = s.dot(p) * inv;
-  const Vec3 q = s.cross(e1);
-  const double v = d.dot(q) * inv;
-  const double along = e2.dot(q) * inv;
-  if (u < -eps || v < -eps || u + v > 1 + eps || along < -eps * (s.norm() + 1)) return 0;
-  if (u <= eps || v <= eps || u + v >= 1 - eps || along <= eps * (s.norm() + 1)) return -1;
-  return 1;
-}
-
-bool ray_hits_box(const Vec3& o, const Vec3& inv_d, const Box& b) {
-  double t0 = 0, t1 = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < 3; ++k) {
-    double a = (b.min[k] - o[k]) * inv_d[k], c = (b.max[k] - o[k]) * inv_d[k];
-    if (a > c) std::swap(a, c);
-    t0 = std::max(t0, a), t1 = std::min(t1, c);
-  }
-  return t0 <= t1;
-}
 
 // The edges one query has examined, keyed by their vertex indices: open addressing in a fixed
 // table, cleared by bumping a stamp. When it fills up, edges are simply examined again.
@@ -230,7 +203,7 @@ void TriangleBvh::visit_ray(const Vec3& p, const Vec3& d, Leaf&& leaf) const {
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = nodes_[stack[--top]];
-    if (!ray_hits_box(p, inv, node.box)) continue;
+    if (!detail::ray_meets_box(p, inv, node.box)) continue;
     if (node.count > 0) {
       for (int i = node.first; i < node.first + node.count; ++i) leaf(tris_[i]);
       continue;
@@ -242,24 +215,7 @@ void TriangleBvh::visit_ray(const Vec3& p, const Vec3& d, Leaf&& leaf) const {
 
 bool TriangleBvh::contains(const Vec3& p) const {
   if (tris_.empty() || !bounds().contains(p)) return false;
-  // Directions unlikely to graze edges of CAD meshes (along no axis or diagonal). A ray that
-  // passes within rounding of an edge or vertex may count a crossing twice or miss it: it is
-  // cast again along the next direction.
-  static const std::array<Vec3, 3> directions{Vec3(0.5390, 0.6187, 0.5716).normalized(),
-                                              Vec3(-0.7071, 0.3123, 0.6349).normalized(),
-                                              Vec3(0.2211, -0.8567, 0.4663).normalized()};
-  int crossings = 0;
-  for (const Vec3& d : directions) {
-    crossings = 0;
-    bool ambiguous = false;
-    visit_ray(p, d, [&](const std::array<Vec3, 3>& t) {
-      const int c = ray_crossing(p, d, t);
-      if (c < 0) ambiguous = true;
-      else crossings += c;
-    });
-    if (!ambiguous) break;
-  }
-  return crossings % 2 == 1;
+  return detail::inside_by_parity(p, [this](const Vec3& o, const Vec3& d, auto&& on_triangle) { visit_ray(o, d, on_triangle); });
 }
 
 std::optional<TriangleBvh::Hit> TriangleBvh::first_hit(const Vec3& p, const Vec3& d) const {

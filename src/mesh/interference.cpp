@@ -1,5 +1,7 @@
 #include "mtcs/mesh/interference.h"
 
+#include "ray_parity.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -32,30 +34,6 @@ double box_distance_sq(const Box& a, const Box& b) {
 
 double extent(const Box& b) { return (b.max - b.min).sum(); }
 
-// Moeller-Trumbore: whether the ray o + t d, t > 0, crosses the triangle.
-bool ray_crosses(const Vec3& o, const Vec3& d, const Triangle& t) {
-  const Vec3 e1 = t[1] - t[0], e2 = t[2] - t[0];
-  const Vec3 p = d.cross(e2);
-  const double det = e1.dot(p);
-  if (det == 0) return false;
-  const Vec3 s = o - t[0];
-  const double u = s.dot(p) / det;
-  if (u < 0 || u > 1) return false;
-  const Vec3 q = s.cross(e1);
-  const double v = d.dot(q) / det;
-  if (v < 0 || u + v > 1) return false;
-  return e2.dot(q) / det > 0;
-}
-
-bool ray_meets_box(const Vec3& o, const Vec3& inv_d, const Box& b) {
-  double t0 = 0, t1 = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < 3; ++k) {
-    double a = (b.min[k] - o[k]) * inv_d[k], c = (b.max[k] - o[k]) * inv_d[k];
-    if (a > c) std::swap(a, c);
-    t0 = std::max(t0, a), t1 = std::min(t1, c);
-  }
-  return t0 <= t1;
-}
 
 // A cheap, conservative filter: false only when the triangle's box misses the box, or the box
 // lies strictly on one side of the triangle's plane by more than a rounding margin (the exact
@@ -210,22 +188,20 @@ int InterferenceBvh::split_median(int begin, int end, std::vector<Vec3>& centroi
 
 bool InterferenceBvh::contains(const Vec3& p) const {
   if (tris_.empty() || !nodes_[0].box.contains(p)) return false;
-  // A direction unlikely to graze edges of CAD meshes (along no axis or diagonal).
-  const Vec3 d = Vec3(0.5390, 0.6187, 0.5716).normalized();
-  const Vec3 inv = d.cwiseInverse();
-  int crossings = 0;
-  std::vector<int> stack{0};
-  while (!stack.empty()) {
-    const Node& node = nodes_[std::size_t(stack.back())];
-    stack.pop_back();
-    if (!ray_meets_box(p, inv, node.box)) continue;
-    if (node.child < 0) {
-      for (int i = node.begin; i < node.end; ++i) crossings += ray_crosses(p, d, tris_[std::size_t(i)]);
-      continue;
+  return detail::inside_by_parity(p, [this](const Vec3& o, const Vec3& d, auto&& on_triangle) {
+    const Vec3 inv = d.cwiseInverse();
+    std::vector<int> stack{0};
+    while (!stack.empty()) {
+      const Node& node = nodes_[std::size_t(stack.back())];
+      stack.pop_back();
+      if (!detail::ray_meets_box(o, inv, node.box)) continue;
+      if (node.child < 0) {
+        for (int i = node.begin; i < node.end; ++i) on_triangle(tris_[std::size_t(i)]);
+        continue;
+      }
+      stack.push_back(node.child), stack.push_back(node.child + 1);
     }
-    stack.push_back(node.child), stack.push_back(node.child + 1);
-  }
-  return crossings % 2 == 1;
+  });
 }
 
 std::vector<InterferencePair> intersecting_pairs(const InterferenceBvh& a, const InterferenceBvh& b,
