@@ -10,6 +10,15 @@
 namespace mtcs::geometry {
 
 TriangleDistanceResult distance(const Cylinder& cylinder, const Box& box, const DistanceRequest& request) {
+  // The capsule's distance never exceeds the cylinder's: when it reaches the bound, so does the
+  // answer, at the price of one segment-box distance (most bores of a layout end here).
+  const double capsule = segment_box_distance(cylinder.p0, cylinder.p1, box) - cylinder.radius;
+  if (capsule >= request.upper_bound) {
+    TriangleDistanceResult far;
+    far.distance = capsule;
+    far.bounded = true;
+    return far;
+  }
   const Vec3 mid = (cylinder.p0 + cylinder.p1) / 2;
   if (box.contains(mid)) {
     TriangleDistanceResult inside;
