@@ -19,10 +19,50 @@
 #include <algorithm>
 #include <cmath>
 
+#include "detail/real.h"
 #include "mtcs/geometry/triangle_distance.h"
 
 namespace mtcs::geometry {
 namespace {
+
+using detail::quad;
+using detail::V3;
+
+// Heights of the axis ends over the triangle's plane (unit normal n), the rims' half height range
+// (reach), and each rim's gap to the plane, |h_k| - reach. Those decide contact, so when one of
+// them lies within 1e-10 S of zero they are recomputed from the same doubles in 113 bits, and
+// within 1e-24 S of zero they count as zero (the cylinder kernel's convention).
+struct PlaneHeights {
+  double h[2];
+  double reach;
+  double gap[2];
+};
+
+PlaneHeights plane_heights(const Cylinder& cyl, const Triangle& tri, const Vec3& n, const Vec3& w) {
+  PlaneHeights out;
+  const double slope = (n - n.dot(w) * w).norm();
+  out.reach = cyl.radius * slope;
+  out.h[0] = n.dot(cyl.p0 - tri.a), out.h[1] = n.dot(cyl.p1 - tri.a);
+  for (int k = 0; k < 2; ++k) out.gap[k] = std::abs(out.h[k]) - out.reach;
+  const double scale = std::max({1.0, (cyl.p1 - cyl.p0).norm(), cyl.radius, (cyl.p0 - tri.a).norm(),
+                                 (tri.b - tri.a).norm(), (tri.c - tri.a).norm()});
+  const double marginal = 1e-10 * scale;
+  if (std::min({std::abs(out.h[0]), std::abs(out.h[1]), std::abs(out.gap[0]), std::abs(out.gap[1])}) > marginal)
+    return out;
+  const auto q = [](const Vec3& v) { return detail::from_eigen<quad>(v); };
+  const V3<quad> a = q(tri.a), nq = detail::cross(q(tri.b) - a, q(tri.c) - a);
+  const V3<quad> unit = nq * (quad(1) / detail::norm(nq));
+  const V3<quad> axis = q(cyl.p1) - q(cyl.p0);
+  const quad len = detail::norm(axis);
+  const V3<quad> wq = len > 0 ? axis * (quad(1) / len) : V3<quad>{0, 0, 1};
+  const quad reach = quad(cyl.radius) * detail::norm(unit - detail::dot(unit, wq) * wq);
+  const quad tiny = quad(1e-24) * quad(scale);
+  const auto snap = [tiny](quad v) { return detail::abs_(v) <= tiny ? 0.0 : double(v); };
+  out.reach = double(reach);
+  const quad hq[2] = {detail::dot(unit, q(cyl.p0) - a), detail::dot(unit, q(cyl.p1) - a)};
+  for (int k = 0; k < 2; ++k) out.h[k] = snap(hq[k]), out.gap[k] = snap(detail::abs_(hq[k]) - reach);
+  return out;
+}
 
 // Whether the projection of x along the normal n = (b - a) x (c - a) lies in the closed triangle.
 bool projects_inside(const Vec3& x, const Triangle& t, const Vec3& n) {
@@ -49,8 +89,10 @@ TriangleDistanceResult distance(const Cylinder& cyl, const Triangle& tri, const 
   const Vec3 normal = (tri.b - tri.a).cross(tri.c - tri.a);
   const double area2 = normal.norm();
   double lower = slab;
+  PlaneHeights heights{};
+  if (area2 > 0) heights = plane_heights(cyl, tri, normal / area2, w);
   if (area2 > 0) {
-    const double h0 = normal.dot(cyl.p0 - tri.a) / area2, h1 = normal.dot(cyl.p1 - tri.a) / area2;
+    const double h0 = heights.h[0], h1 = heights.h[1];
     if ((h0 > 0 && h1 > 0) || (h0 < 0 && h1 < 0)) {
       lower = std::max(lower, std::min(std::abs(h0), std::abs(h1)) - cyl.radius);
     } else if (h0 != h1) {
@@ -69,10 +111,11 @@ TriangleDistanceResult distance(const Cylinder& cyl, const Triangle& tri, const 
     const Vec3 across = n - n.dot(w) * w;  // the plane's steepest direction within the end disks
     const double slope = across.norm();
     const Vec3 u = slope > 0 ? Vec3(across / slope) : Vec3::Zero();
-    const double reach = cyl.radius * slope;  // half the height range over a rim
-    for (const Vec3& center : {cyl.p0, cyl.p1}) {
-      const double h = n.dot(center - tri.a);
-      if (std::abs(h) <= reach) {
+    const double reach = heights.reach;  // half the height range over a rim
+    for (int k = 0; k < 2; ++k) {
+      const Vec3& center = k == 0 ? cyl.p0 : cyl.p1;
+      const double h = heights.h[k];
+      if (heights.gap[k] <= 0) {
         if (reach == 0) continue;  // the disk lies in the plane: the axis test decided it
         // The rim crosses the plane at angles +-alpha from u: inside the triangle means contact.
         const double cos_a = std::clamp(-h / reach, -1.0, 1.0), sin_a = std::sqrt(1 - cos_a * cos_a);
@@ -85,7 +128,7 @@ TriangleDistanceResult distance(const Cylinder& cyl, const Triangle& tri, const 
       }
       // The rim point nearest the plane (the disk centre when the disk is parallel to it).
       const Vec3 x = center - std::copysign(cyl.radius, h) * u;
-      const double gap = std::abs(h) - reach;
+      const double gap = heights.gap[k];
       if (gap < best.distance && projects_inside(x, tri, normal))
         best = {gap, x, x - std::copysign(gap, h) * n, false};
     }

@@ -186,3 +186,24 @@ TEST_CASE("cylinder-triangle inside certified bounds from a dense grid", "[geome
   }
   CHECK(separated > 50);
 }
+
+TEST_CASE("cylinder-triangle verdicts within rounding of touching", "[geometry][cylinder_triangle]") {
+  // A tilted end disk (axis along (3, 0, 4): the rim dips r 3/5 = 3 below its centre) whose
+  // lowest rim point is j ulps of 3 above or below the plane z = 0. Every input is an exact
+  // double, so the true distance is exactly max(0, h0 - 3); in double the rim's reach carries
+  // rounding of that size, which used to flip the verdict.
+  const Triangle t{{-100, -100, 0}, {100, -100, 0}, {0, 100, 0}};
+  for (int j = -3; j <= 3; ++j) {
+    for (const double x : {1.0, -7.0, 30.5}) {
+      const double h0 = 3 + j * std::ldexp(1.0, -50);
+      const Cylinder c{{x, 2, h0}, {x + 0.75, 2, h0 + 1}, 5};
+      INFO("j = " << j << ", x = " << x);
+      CHECK(distance(c, t).distance == (j > 0 ? h0 - 3 : 0.0));
+    }
+  }
+  // An end disk parallel to the plane, 2^-60 above or below it (on it: touching).
+  for (const int j : {-1, 0, 1}) {
+    const double h0 = j * std::ldexp(1.0, -60);
+    CHECK(distance(Cylinder{{1, 2, h0}, {1, 2, 10}, 1}, t).distance == (j > 0 ? h0 : 0.0));
+  }
+}
