@@ -10,6 +10,7 @@
 
 #include "mtcs/io/cylinders_csv.h"
 #include "mtcs/io/input_error.h"
+#include "fuzz_mutate.h"
 
 TEST_CASE("cylinders CSV reader survives mutated input", "[io][fuzz]") {
   const std::string seed =
@@ -21,17 +22,7 @@ TEST_CASE("cylinders CSV reader survives mutated input", "[io][fuzz]") {
   const auto path = std::filesystem::temp_directory_path() / ("mtcs_fuzz_cyl_" + std::to_string(::getpid()) + ".csv");
   int parsed = 0, rejected = 0;
   for (int i = 0; i < 3000; ++i) {
-    std::string s = seed;
-    const int edits = 1 + int(rng() % 6);
-    for (int e = 0; e < edits && !s.empty(); ++e) {
-      const std::size_t at = rng() % s.size();
-      switch (rng() % 4) {
-        case 0: s[at] = alphabet[rng() % alphabet.size()]; break;
-        case 1: s.erase(at, 1 + rng() % 8); break;
-        case 2: s.insert(at, 1, alphabet[rng() % alphabet.size()]); break;
-        case 3: s.resize(at); break;
-      }
-    }
+    const std::string s = mtcs_test::mutate(seed, alphabet, rng, 6, 8);
     std::ofstream(path, std::ios::binary) << s;
     try {
       for (const auto& c : mtcs::io::read_cylinders_csv(path.string())) {

@@ -11,6 +11,7 @@
 #include "mtcs/mesh/bvh.h"
 #include "mtcs/mesh/mesh_check.h"
 #include "mtcs/mesh/mesh_io.h"
+#include "fuzz_mutate.h"
 
 TEST_CASE("mesh reader survives mutated OFF, STL and OBJ input", "[mesh][fuzz]") {
   // A tetrahedron, outward, in each format.
@@ -28,17 +29,7 @@ TEST_CASE("mesh reader survives mutated OFF, STL and OBJ input", "[mesh][fuzz]")
   for (const auto& [ext, seed] : seeds) {
     const auto path = std::filesystem::temp_directory_path() / ("mtcs_fuzz_mesh_" + std::to_string(::getpid()) + ext);
     for (int i = 0; i < 600; ++i) {
-      std::string s = seed;
-      const int edits = 1 + int(rng() % 5);
-      for (int e = 0; e < edits && !s.empty(); ++e) {
-        const std::size_t at = rng() % s.size();
-        switch (rng() % 4) {
-          case 0: s[at] = alphabet[rng() % alphabet.size()]; break;
-          case 1: s.erase(at, 1 + rng() % 6); break;
-          case 2: s.insert(at, 1, alphabet[rng() % alphabet.size()]); break;
-          case 3: s.resize(at); break;
-        }
-      }
+      const std::string s = mtcs_test::mutate(seed, alphabet, rng, 5, 6);
       std::ofstream(path, std::ios::binary) << s;
       try {
         const mtcs::mesh::TriangleMesh m = mtcs::mesh::read_mesh(path.string());
