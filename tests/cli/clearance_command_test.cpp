@@ -2,39 +2,22 @@
 // malformed input (exit code 2, file:line:col and field, no output file).
 
 #include <catch2/catch.hpp>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
 
-#include <unistd.h>
+#include "run_mtcs.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Run {
-  int code;
-  std::string err;
-};
+using mtcs_test::Run;
 
-// CTest runs test cases in parallel processes: every file name carries the process id.
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_clearance_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
-}
-
-Run run_mtcs(const std::string& args) {
-  const fs::path err = scratch("run.err");
-  const int status = std::system((std::string(MTCS_BINARY) + " " + args + " 2>" + err.string()).c_str());
-  std::ifstream in(err);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return {WEXITSTATUS(status), ss.str()};
-}
+fs::path scratch(const std::string& name) { return mtcs_test::scratch("clearance_cli", name); }
+Run run_mtcs(const std::string& args) { return mtcs_test::run_mtcs_err("clearance_cli", args); }
 
 std::vector<std::vector<std::string>> read_rows(const fs::path& p) {
   std::ifstream in(p);

@@ -2,38 +2,20 @@
 // file, line, column and field, and no output file).
 
 #include <catch2/catch.hpp>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
-#include <unistd.h>
+#include "run_mtcs.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Run {
-  int code;
-  std::string err;
-};
+using mtcs_test::Run;
 
-// CTest runs test cases in parallel processes: every file name carries the process id.
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_distance_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
-}
-
-Run run_mtcs(const std::string& args) {
-  const fs::path err = scratch("run.err");
-  const int status = std::system((std::string(MTCS_BINARY) + " " + args + " 2>" + err.string()).c_str());
-  std::ifstream in(err);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return {WEXITSTATUS(status), ss.str()};
-}
+fs::path scratch(const std::string& name) { return mtcs_test::scratch("distance_cli", name); }
+Run run_mtcs(const std::string& args) { return mtcs_test::run_mtcs_err("distance_cli", args); }
 
 fs::path write_file(const std::string& name, const std::string& text) {
   const fs::path p = scratch(name);

@@ -35,6 +35,18 @@ inline std::string read_text(const fs::path& p) {
   return ss.str();
 }
 
+struct Run {
+  int code;
+  std::string err;
+};
+
+// mtcs ARGS: the exit code and what it wrote to stderr (kept in the topic's scratch folder).
+inline Run run_mtcs_err(const std::string& topic, const std::string& args) {
+  const fs::path err = scratch(topic, "run.err");
+  const int code = run_mtcs(args, err);
+  return {code, read_text(err)};
+}
+
 // Whether the PNG plots can be rendered here (the commands skip them otherwise).
 inline bool has_matplotlib() { return std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") == 0; }
 
