@@ -11,15 +11,7 @@
 namespace mtcs::mesh {
 namespace {
 
-Box empty_box() {
-  return {Vec3::Constant(std::numeric_limits<double>::infinity()),
-          Vec3::Constant(-std::numeric_limits<double>::infinity())};
-}
-
-double box_box_distance(const Box& a, const Box& b) {
-  const Vec3 gap = (a.min - b.max).cwiseMax(b.min - a.max).cwiseMax(0.0);
-  return gap.norm();
-}
+double box_box_distance(const Box& a, const Box& b) { return std::sqrt(geometry::box_distance_sq(a, b)); }
 
 // Ray-triangle crossing (Moeller-Trumbore): the ray parameter, or a negative value for none.
 double ray_hit(const Vec3& o, const Vec3& d, const std::array<Vec3, 3>& t) {
@@ -105,7 +97,7 @@ int TriangleBvh::sah_split(int first, int count, int axis, const Box& cbox, cons
   if (!(width > 0)) return count / 2;
   std::array<Box, kBins> boxes;
   std::array<int, kBins> counts{};
-  boxes.fill(empty_box());
+  boxes.fill(Box::empty());
   for (int i = first; i < first + count; ++i) {
     const int b = std::min(kBins - 1, int(kBins * (centroids[i][axis] - lo) / width));
     ++counts[b];
@@ -116,13 +108,13 @@ int TriangleBvh::sah_split(int first, int count, int axis, const Box& cbox, cons
     return e.x() * e.y() + e.y() * e.z() + e.z() * e.x();
   };
   std::array<double, kBins> right_cost{};  // right_cost[b]: bins b.. on the right
-  Box acc = empty_box();
+  Box acc = Box::empty();
   int n = 0;
   for (int b = kBins - 1; b > 0; --b) {
     acc.min = acc.min.cwiseMin(boxes[b].min), acc.max = acc.max.cwiseMax(boxes[b].max), n += counts[b];
     right_cost[b] = n > 0 ? n * area(acc) : 0;
   }
-  acc = empty_box();
+  acc = Box::empty();
   n = 0;
   int best_left = count / 2;
   double best = std::numeric_limits<double>::infinity();
@@ -136,7 +128,7 @@ int TriangleBvh::sah_split(int first, int count, int axis, const Box& cbox, cons
 }
 
 void TriangleBvh::build(int node, int first, int count, int depth, std::vector<Vec3>& centroids) {
-  Box box = empty_box(), cbox = empty_box();
+  Box box = Box::empty(), cbox = Box::empty();
   for (int i = first; i < first + count; ++i) {
     for (const Vec3& v : tris_[i]) box.min = box.min.cwiseMin(v), box.max = box.max.cwiseMax(v);
     cbox.min = cbox.min.cwiseMin(centroids[i]), cbox.max = cbox.max.cwiseMax(centroids[i]);

@@ -17,19 +17,11 @@ namespace {
 
 constexpr int kLeafSize = 4;  // at most 32: leaves' triangles are tracked as bit masks
 
-Box empty_box() {
-  return {Vec3::Constant(std::numeric_limits<double>::infinity()), Vec3::Constant(-std::numeric_limits<double>::infinity())};
-}
-
 Box box_of(const Triangle& t) { return {t[0].cwiseMin(t[1]).cwiseMin(t[2]), t[0].cwiseMax(t[1]).cwiseMax(t[2])}; }
 
 // Closed boxes: touching boxes overlap, so touching triangles are never pruned.
 bool overlap(const Box& a, const Box& b) {
   return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
-}
-
-double box_distance_sq(const Box& a, const Box& b) {
-  return (a.min - b.max).cwiseMax(b.min - a.max).cwiseMax(0.0).squaredNorm();
 }
 
 double extent(const Box& b) { return (b.max - b.min).sum(); }
@@ -112,7 +104,7 @@ InterferenceBvh::InterferenceBvh(const TriangleMesh& mesh, MeshParts parts, Spli
 }
 
 void InterferenceBvh::build(int node, int begin, int end, Split split, std::vector<Vec3>& centroids) {
-  Box box = empty_box();
+  Box box = Box::empty();
   for (int i = begin; i < end; ++i) {
     const Box b = box_of(tris_[std::size_t(order_[i])]);
     box.min = box.min.cwiseMin(b.min), box.max = box.max.cwiseMax(b.max);
@@ -147,7 +139,7 @@ int InterferenceBvh::split_groups(int begin, int end, const std::vector<int>& ke
     runs.back().centroid += centroids[i];
   }
   if (runs.size() < 2) return -1;
-  Box cbox = empty_box();
+  Box cbox = Box::empty();
   for (Run& r : runs) {
     r.centroid /= r.count;
     cbox.min = cbox.min.cwiseMin(r.centroid), cbox.max = cbox.max.cwiseMax(r.centroid);
@@ -169,7 +161,7 @@ int InterferenceBvh::split_groups(int begin, int end, const std::vector<int>& ke
 }
 
 int InterferenceBvh::split_median(int begin, int end, std::vector<Vec3>& centroids) {
-  Box cbox = empty_box();
+  Box cbox = Box::empty();
   for (int i = begin; i < end; ++i) cbox.min = cbox.min.cwiseMin(centroids[i]), cbox.max = cbox.max.cwiseMax(centroids[i]);
   int axis = 0;
   (cbox.max - cbox.min).maxCoeff(&axis);
@@ -323,7 +315,7 @@ double surface_distance(const InterferenceBvh& a, const InterferenceBvh& b, Inte
     mask &= (1u << (leaf.end - leaf.begin)) - 1;
     for (int p = leaf.begin; p < leaf.end; ++p)
       if ((mask >> (p - leaf.begin) & 1u) &&
-          (box_distance_sq(t.triangle_box(p), other) >= best * best || triangle_box_gap(t.triangle(p), t.normal(p), other) >= kKeep * best))
+          (geometry::box_distance_sq(t.triangle_box(p), other) >= best * best || triangle_box_gap(t.triangle(p), t.normal(p), other) >= kKeep * best))
         mask &= ~(1u << (p - leaf.begin));
     return mask;
   };
@@ -334,7 +326,7 @@ double surface_distance(const InterferenceBvh& a, const InterferenceBvh& b, Inte
     ++local.node_pairs;
     const auto& x = na[std::size_t(e.i)];
     const auto& y = nb[std::size_t(e.j)];
-    if (box_distance_sq(x.box, y.box) >= best * best) continue;
+    if (geometry::box_distance_sq(x.box, y.box) >= best * best) continue;
     if (x.child < 0 && (e.ma = cull(a, x, e.ma, y.box)) == 0) continue;
     if (y.child < 0 && (e.mb = cull(b, y, e.mb, x.box)) == 0) continue;
     if (x.child < 0 && y.child < 0) {
@@ -342,7 +334,7 @@ double surface_distance(const InterferenceBvh& a, const InterferenceBvh& b, Inte
         if (!(e.ma >> (p - x.begin) & 1u)) continue;
         for (int q = y.begin; q < y.end; ++q) {
           if (!(e.mb >> (q - y.begin) & 1u)) continue;
-          if (box_distance_sq(a.triangle_box(p), b.triangle_box(q)) >= best * best) continue;
+          if (geometry::box_distance_sq(a.triangle_box(p), b.triangle_box(q)) >= best * best) continue;
           if (triangle_gap(a.triangle(p), a.normal(p), b.triangle(q)) >= kKeep * best ||
               triangle_gap(b.triangle(q), b.normal(q), a.triangle(p)) >= kKeep * best)
             continue;
@@ -360,7 +352,7 @@ double surface_distance(const InterferenceBvh& a, const InterferenceBvh& b, Inte
     auto lower = [&](const Entry& c) {
       const Box& bx = na[std::size_t(c.i)].box;
       const Box& by = nb[std::size_t(c.j)].box;
-      double d = std::sqrt(box_distance_sq(bx, by));
+      double d = std::sqrt(geometry::box_distance_sq(bx, by));
       if (y.child < 0) {
         double g = std::numeric_limits<double>::infinity();
         for (int q = y.begin; q < y.end; ++q)
