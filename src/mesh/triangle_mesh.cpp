@@ -6,8 +6,7 @@
 namespace mtcs::mesh {
 
 Box TriangleMesh::bounds() const {
-  Box b{Vec3::Constant(std::numeric_limits<double>::infinity()),
-        Vec3::Constant(-std::numeric_limits<double>::infinity())};
+  Box b = Box::empty();
   for (const Vec3& v : vertices) b.min = b.min.cwiseMin(v), b.max = b.max.cwiseMax(v);
   return b;
 }
