@@ -1,0 +1,79 @@
+#pragma once
+// Steady, cycle-averaged heat conduction in the mold steel: the problem every thermal tier
+// solves (T1/T2/T2d line sinks, T3 finite volumes). Plain data, built by eval from a scene and
+// a layout, or by hand in tests.
+//
+// Units everywhere in this module: mm, W, degrees C. Conductivity W/(mm K), film coefficients
+// W/(mm^2 K), heat fluxes W/mm^2 (the SI values divided by 1e3, 1e6 and 1e6).
+
+#include <array>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "mtcs/geometry/primitives.h"
+#include "mtcs/geometry/triangle_distance.h"
+#include "mtcs/mesh/triangle_mesh.h"
+
+namespace mtcs::thermal {
+
+using geometry::Box;
+using geometry::Vec3;
+
+// The block's faces, in this order: -x, +x, -y, +y, -z, +z.
+enum class BlockFace { NegX, PosX, NegY, PosY, NegZ, PosZ };
+
+// Convection from an outer face to the air; film 0 is adiabatic (parting plane, symmetry).
+struct FaceCondition {
+  double film = 0;      // W/(mm^2 K)
+  double ambient = 25;  // degrees C
+};
+
+// Heat entering the steel through a planar triangle of the cavity surface (cycle-averaged).
+struct HeatedTriangle {
+  Vec3 a, b, c;     // counter-clockwise seen from the heat's side (the melt)
+  double flux = 0;  // W/mm^2 into the steel
+};
+
+// The flowed part of a bore: a wall at the coolant temperature (film infinite: the Dirichlet
+// limit) or with a film coefficient to the coolant (Robin).
+struct Channel {
+  geometry::Segment axis;
+  double radius = 0;
+  double coolant = 40;  // degrees C
+  double film = std::numeric_limits<double>::infinity();  // W/(mm^2 K)
+};
+
+// What does not change with the layout: the block, its faces, the heat input and the cavity.
+struct Setting {
+  Box block;
+  double conductivity = 0.03;             // W/(mm K): tool steel ~ 30 W/(m K)
+  std::array<FaceCondition, 6> faces{};   // by BlockFace
+  std::vector<HeatedTriangle> heat_in;    // on the cavity surface or on a block face
+  // The cavity as a void in the steel (T3 removes it from the grid; line sinks ignore it).
+  // A patch on a block face (the reference block) has neither.
+  std::optional<Box> cavity_box;
+  std::shared_ptr<const mesh::TriangleMesh> cavity_mesh;
+};
+
+struct Model {
+  Setting setting;
+  std::vector<Channel> channels;
+};
+
+// Points of the cavity surface where temperatures are wanted, with area weights (mm^2).
+struct Samples {
+  std::vector<Vec3> points;
+  std::vector<double> weights;
+  std::size_t size() const { return points.size(); }
+};
+
+// Area-weighted statistics of a temperature field at the samples.
+struct Summary {
+  double mean = 0, std = 0, max = 0;  // degrees C, K, degrees C
+  std::size_t hottest = 0;            // index of the hottest sample
+};
+Summary summarize(const std::vector<double>& temperature, const Samples& samples);
+
+}  // namespace mtcs::thermal
