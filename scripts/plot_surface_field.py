@@ -1,0 +1,66 @@
+#!/usr/bin/python3
+"""Picture of a surface field written by mtcs (a cavity's temperature, say): the PLY that
+`mtcs thermal --out field.ply` writes (vertex x y z, colour, value as quality), drawn in 3-D with
+the same colour map and a colour bar in the field's unit.
+
+Usage: plot_surface_field.py FIELD.ply OUT.png [TITLE]
+"""
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
+
+
+def read_ply(path):
+    with open(path) as f:
+        label, nv, nf = "value", 0, 0
+        for line in f:
+            words = line.split()
+            if words[:2] == ["comment", "quality"]:
+                label = line.split("=", 1)[1].split(",")[0].strip()
+            elif words[:2] == ["element", "vertex"]:
+                nv = int(words[2])
+            elif words[:2] == ["element", "face"]:
+                nf = int(words[2])
+            elif words == ["end_header"]:
+                break
+        verts, values = [], []
+        for _ in range(nv):
+            w = f.readline().split()
+            verts.append(tuple(float(x) for x in w[:3]))
+            values.append(float(w[6]))
+        faces = [tuple(int(x) for x in f.readline().split()[1:4]) for _ in range(nf)]
+    return verts, values, faces, label
+
+
+def main(path, out, title=""):
+    verts, values, faces, label = read_ply(path)
+    lo, hi = min(values), max(values)
+    cmap = plt.get_cmap("viridis")
+    norm = matplotlib.colors.Normalize(lo, hi if hi > lo else lo + 1)
+    polys = [[verts[i] for i in f] for f in faces]
+    colours = [cmap(norm(sum(values[i] for i in f) / 3)) for f in faces]
+    fig = plt.figure(figsize=(8, 6))
+    ax = fig.add_subplot(projection="3d")
+    ax.add_collection3d(Poly3DCollection(polys, facecolors=colours, edgecolors="none"))
+    xs, ys, zs = zip(*verts)
+    span = max(max(xs) - min(xs), max(ys) - min(ys), max(zs) - min(zs)) / 2 or 1
+    for axis, c in (("x", xs), ("y", ys), ("z", zs)):
+        mid = (max(c) + min(c)) / 2
+        getattr(ax, f"set_{axis}lim")(mid - span, mid + span)
+        getattr(ax, f"set_{axis}label")(f"{axis} (mm)")
+    ax.view_init(elev=35, azim=-60)
+    bar = fig.colorbar(matplotlib.cm.ScalarMappable(norm=norm, cmap=cmap), ax=ax, shrink=0.7)
+    bar.set_label(label)
+    ax.set_title(title or f"{label}: {lo:.2f} to {hi:.2f}")
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) < 3:
+        sys.exit(__doc__)
+    main(*sys.argv[1:4])
