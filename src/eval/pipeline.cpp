@@ -15,8 +15,7 @@ Pipeline::Pipeline(const mold::Scene& scene) : scene_(scene) {
   // Objectives.
   if ((uses(mold::Objective::Uniformity) || uses(mold::Objective::WorstCovered))) {
     if (!spec.cavity) throw std::invalid_argument("the thermal objectives need a cavity");
-    SurfaceSamples samples = spec.cavity->box ? sample_box(*spec.cavity->box, spec.cavity->sample_spacing)
-                                              : sample_mesh(spec.cavity->mesh->mesh, spec.cavity->sample_spacing);
+    SurfaceSamples samples = sample_cavity(*spec.cavity);
     samples_ = samples.size();
     stages_.push_back(make_thermal_stage(scene, std::move(samples)));
   }
