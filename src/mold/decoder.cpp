@@ -126,8 +126,9 @@ Layout decode(const Scene& scene, const Genome& genome) {
         return k;
       };
       // From A's side (ending past B), or from B's side (ending past A).
-      const Candidate from_a = make(A, -u, j == n ? B : B + overshoot * u, j == 1, j == n);
-      const Candidate from_b = make(B, u, j == 1 ? A : A - overshoot * u, j == n, j == 1);
+      // A hole ending at a port that lies on its face is drilled through: open at that end.
+      const Candidate from_a = make(A, -u, j == n ? B : B + overshoot * u, j == 1, j == n && outlet_off <= port_tol);
+      const Candidate from_b = make(B, u, j == 1 ? A : A - overshoot * u, j == n, j == 1 && inlet_off <= port_tol);
       const bool take_a = from_a.ok != from_b.ok ? from_a.ok : from_a.length <= from_b.length;
       const Candidate& k = take_a ? from_a : from_b;
       Bore b;
