@@ -6,9 +6,12 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <random>
+#include <sstream>
 
 #include <unistd.h>
 
+#include "fuzz_mutate.h"
 #include "mtcs/io/input_error.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
@@ -228,4 +231,25 @@ TEST_CASE("thermal spec: the reference layout decodes to the case's bores, strai
     CHECK(bore.through);
     CHECK_FALSE(bore.plugged);
   }
+}
+
+TEST_CASE("thermal spec: the reader survives mutated thermal sections and patches", "[mold][thermal][fuzz]") {
+  std::ifstream in(MTCS_SOURCE_DIR "/molds/thermal_block.yaml");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  std::mt19937_64 rng(11);
+  int loaded = 0, rejected = 0;
+  for (int i = 0; i < 400; ++i) {
+    const auto p = write("fuzz.yaml", mtcs_test::mutate(text, "0123456789,.-+:[]{}#\n xyzt_", rng, 4, 6));
+    try {
+      mold::load_mold_spec(p.string());
+      ++loaded;
+    } catch (const io::InputError& e) {
+      REQUIRE(e.file() == p.string());
+      ++rejected;
+    }
+  }
+  CHECK(loaded > 0);
+  CHECK(rejected > 0);
 }
