@@ -234,3 +234,40 @@ TEST_CASE("through-bores: a bore ending just under a face elsewhere is still fla
   // Sideways, a through-bore 2 mm from the -x face is flagged along its length.
   CHECK(surface(mold::Genome{{{{{6, 0, 60}, {6, 200, 60}}, 8}}}) == 1);
 }
+
+TEST_CASE("temperature objectives: the pipeline asks the tier's solver and summarises", "[eval][thermal]") {
+  const std::string text = block_spec("thermal: {heat_flux: 50000}\n");
+  const auto at = text.find("  use: [uniformity, worst_covered, cost]");
+  REQUIRE(at != std::string::npos);
+  const std::string spec_text = text.substr(0, at) + "  use: [temperature_std, cost, temperature_mean, temperature_max, cycle_time]" +
+                                text.substr(at + std::string("  use: [uniformity, worst_covered, cost]").size());
+  const mold::Scene scene(mold::load_mold_spec(write("physics.yaml", spec_text).string()));
+  // Without a solver the temperature objectives cannot be computed.
+  CHECK_THROWS_AS(eval::Pipeline(scene), std::invalid_argument);
+  // A stand-in tier: T = 40 + 0.1 x + (number of channels), so that the summary has a closed form.
+  int built = 0;
+  const eval::TemperatureSolverFactory factory = [&built](const thermal::Setting& setting, const thermal::Samples& samples,
+                                                          const mold::ThermalSpec&) {
+    ++built;
+    CHECK(setting.heat_in.size() == 2);
+    return eval::TemperatureSolver([&samples](const std::vector<thermal::Channel>& channels) {
+      std::vector<double> t;
+      for (const Vec3& p : samples.points) t.push_back(40 + 0.1 * p.x() + double(channels.size()));
+      return t;
+    });
+  };
+  const eval::Pipeline pipeline(scene, factory);
+  CHECK(built == 1);
+  const auto e = pipeline.evaluate(mold::load_layout(kBlockLayout, scene.spec()), true);
+  // x = 31, 33, ..., 89 equally weighted: mean 60, population std 2 sqrt((30^2 - 1)/12).
+  const double std_x = 2 * std::sqrt((30.0 * 30 - 1) / 12);
+  REQUIRE(e.objectives.size() == 5);
+  CHECK(e.objectives[0] == Approx(0.1 * std_x).epsilon(1e-12));
+  CHECK(e.objectives[2] == Approx(40 + 6 + 3).epsilon(1e-12));
+  CHECK(e.objectives[3] == Approx(40 + 8.9 + 3).epsilon(1e-12));
+  CHECK(e.objectives[4] == Approx(eval::cooling_time(2.5, scene.spec().thermal.polymer, 51.9)).epsilon(1e-12));
+  CHECK(e.objectives[1] > 0);  // cost
+  bool timed = false;
+  for (const auto& s : e.stages) timed = timed || s.name == "temperature_t2d";
+  CHECK(timed);
+}
