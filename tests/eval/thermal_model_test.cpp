@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include <unistd.h>
@@ -270,4 +271,26 @@ TEST_CASE("temperature objectives: the pipeline asks the tier's solver and summa
   bool timed = false;
   for (const auto& s : e.stages) timed = timed || s.name == "temperature_t2d";
   CHECK(timed);
+}
+
+TEST_CASE("patch cavity: bore_cavity is the clearance to the rectangle, not to its face", "[eval][thermal]") {
+  const mold::Scene scene(mold::load_mold_spec(kBlockSpec));  // bore_cavity 3, bore_surface 3
+  const eval::Pipeline pipeline(scene);
+  auto cavity = [&](double y, double z) -> std::optional<eval::Violation> {
+    for (const auto& v : pipeline.evaluate(mold::Genome{{{{{0, y, z}, {120, y, z}}, 6}}}).violations)
+      if (v.kind == "bore_cavity") return v;
+    return std::nullopt;
+  };
+  // Under the patch, 2 mm of steel: violated by the exact shortfall.
+  const auto under = cavity(40, 55);
+  REQUIRE(under);
+  CHECK(under->distance == Approx(2).margin(1e-12));
+  CHECK(under->margin == 3);
+  // Beside it (y = 8, the patch starts at 16): sqrt(8^2 + 5^2) - 3 = 6.43 mm from its edge.
+  CHECK_FALSE(cavity(8, 55));
+  // Just beside it (y = 14.5): the nearest point is the edge y = 16, z = 60, not the face:
+  // sqrt(1.5^2 + 5^2) - 3 = 2.22 mm.
+  const auto edge = cavity(14.5, 55);
+  REQUIRE(edge);
+  CHECK(edge->distance == Approx(std::sqrt(1.5 * 1.5 + 5.0 * 5.0) - 3).epsilon(1e-9));
 }
