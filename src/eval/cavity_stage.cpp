@@ -1,10 +1,13 @@
 // Bores against the molded part: at least clearances.bore_cavity of steel between a bore and the
 // cavity: the exact solid-cylinder distance with the clearance as upper bound, to the box of a
-// primitive cavity (no mesh code) or through the BVH of a mesh cavity.
+// primitive cavity (no mesh code), to the two triangles of a patch on a block face, or through
+// the BVH of a mesh cavity.
 
 #include "mtcs/geometry/cylinder_box_distance.h"
+#include "mtcs/geometry/cylinder_triangle_distance.h"
 #include "mtcs/mesh/bvh.h"
 #include "stages.h"
+#include "surface_samples.h"
 
 namespace mtcs::eval {
 namespace {
@@ -12,12 +15,37 @@ namespace {
 class CavityStage final : public Stage {
  public:
   explicit CavityStage(const mold::Scene& scene)
-      : box_(scene.spec().cavity->box), bvh_(scene.cavity_bvh()), margin_(scene.spec().clearances.bore_cavity) {}
-  std::string name() const override { return box_ ? "bore_cavity_box" : "bore_cavity_mesh"; }
+      : box_(scene.spec().cavity->box), bvh_(scene.cavity_bvh()), margin_(scene.spec().clearances.bore_cavity) {
+    if (scene.spec().cavity->is_patch()) {
+      const auto [i, j, k] = patch_axes(*box_);
+      auto corner = [&, i = i, j = j](int a, int b) {
+        geometry::Vec3 p = box_->min;
+        p[i] = a ? box_->max[i] : box_->min[i], p[j] = b ? box_->max[j] : box_->min[j];
+        return p;
+      };
+      patch_ = {geometry::Triangle{corner(0, 0), corner(1, 0), corner(1, 1)},
+                geometry::Triangle{corner(0, 0), corner(1, 1), corner(0, 1)}};
+      box_.reset();
+    }
+  }
+  std::string name() const override {
+    return !patch_.empty() ? "bore_cavity_patch" : box_ ? "bore_cavity_box" : "bore_cavity_mesh";
+  }
   void run(const mold::Layout& layout, Evaluation& out) const override {
     for (const mold::Bore& b : layout.bores) {
       const double margin = margin_.at(b.diameter);
-      if (box_) {
+      if (!patch_.empty()) {
+        geometry::TriangleDistanceResult best;
+        best.bounded = true;
+        best.distance = margin;
+        for (const auto& t : patch_) {
+          const auto d = geometry::distance(b.hole, t, {.upper_bound = margin});
+          if (!d.bounded && (best.bounded || d.distance < best.distance)) best = d;
+        }
+        if (!best.bounded)
+          add_clearance(out, "bore_cavity", {b.name(), "cavity"}, best.distance, margin,
+                        (best.on_cylinder + best.on_triangle) / 2);
+      } else if (box_) {
         const auto d = geometry::distance(b.hole, *box_, {.upper_bound = margin});
         if (!d.bounded)
           add_clearance(out, "bore_cavity", {b.name(), "cavity"}, d.distance, margin, (d.on_cylinder + d.on_triangle) / 2);
@@ -30,6 +58,7 @@ class CavityStage final : public Stage {
 
  private:
   std::optional<geometry::Box> box_;
+  std::vector<geometry::Triangle> patch_;  // a patch on a block face: its two triangles
   const mesh::TriangleBvh* bvh_;
   mold::Length margin_;
 };

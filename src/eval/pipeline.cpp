@@ -8,17 +8,25 @@
 
 namespace mtcs::eval {
 
-Pipeline::Pipeline(const mold::Scene& scene) : scene_(scene) {
+Pipeline::Pipeline(const mold::Scene& scene, const TemperatureSolverFactory& temperatures) : scene_(scene) {
   const mold::MoldSpec& spec = scene.spec();
   const auto& use = spec.objectives.use;
   auto uses = [&](mold::Objective o) { return std::find(use.begin(), use.end(), o) != use.end(); };
   // Objectives.
   if ((uses(mold::Objective::Uniformity) || uses(mold::Objective::WorstCovered))) {
     if (!spec.cavity) throw std::invalid_argument("the thermal objectives need a cavity");
-    SurfaceSamples samples = spec.cavity->box ? sample_box(*spec.cavity->box, spec.cavity->sample_spacing)
-                                              : sample_mesh(spec.cavity->mesh->mesh, spec.cavity->sample_spacing);
+    SurfaceSamples samples = sample_cavity(*spec.cavity);
     samples_ = samples.size();
     stages_.push_back(make_thermal_stage(scene, std::move(samples)));
+  }
+  for (const mold::Objective o : use) {
+    if (!mold::is_temperature_objective(o)) continue;
+    if (!spec.cavity) throw std::invalid_argument("the temperature objectives need a cavity");
+    if (!temperatures)
+      throw std::invalid_argument("objective " + mold::to_string(o) + " needs a thermal solver (tier " +
+                                  mold::to_string(spec.thermal.tier) + "), and none was given");
+    stages_.push_back(make_temperature_stage(scene, temperatures));
+    break;
   }
   if (uses(mold::Objective::Cost)) stages_.push_back(make_cost_stage(scene));
   // Constraints: only those the scene has elements for.

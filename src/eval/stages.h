@@ -4,11 +4,14 @@
 #include <memory>
 
 #include "mtcs/eval/pipeline.h"
+#include "mtcs/eval/temperature_objectives.h"
 #include "surface_samples.h"
 
 namespace mtcs::eval {
 
 std::unique_ptr<Stage> make_thermal_stage(const mold::Scene& scene, SurfaceSamples samples);
+// Needs a cavity and a factory that builds a solver.
+std::unique_ptr<Stage> make_temperature_stage(const mold::Scene& scene, const TemperatureSolverFactory& factory);
 std::unique_ptr<Stage> make_cost_stage(const mold::Scene& scene);
 std::unique_ptr<Stage> make_bore_bore_stage(const mold::Scene& scene);
 std::unique_ptr<Stage> make_keep_out_cylinder_stage(const mold::Scene& scene);

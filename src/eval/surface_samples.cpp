@@ -78,4 +78,32 @@ SurfaceSamples sample_mesh(const mesh::TriangleMesh& mesh, double spacing) {
   return s;
 }
 
+PatchAxes patch_axes(const geometry::Box& patch) {
+  int k = 0;
+  (patch.max - patch.min).minCoeff(&k);
+  return k == 0 ? PatchAxes{1, 2, 0} : k == 1 ? PatchAxes{0, 2, 1} : PatchAxes{0, 1, 2};
+}
+
+SurfaceSamples sample_patch(const geometry::Box& patch, double spacing) {
+  const auto [i, j, k] = patch_axes(patch);
+  const Vec3 size = patch.size();
+  const int ni = std::max(1, int(std::ceil(size[i] / spacing))), nj = std::max(1, int(std::ceil(size[j] / spacing)));
+  const double di = size[i] / ni, dj = size[j] / nj;
+  SurfaceSamples s;
+  for (int b = 0; b < nj; ++b) {
+    for (int a = 0; a < ni; ++a) {
+      Vec3 p;
+      p[k] = patch.min[k], p[i] = patch.min[i] + (a + 0.5) * di, p[j] = patch.min[j] + (b + 0.5) * dj;
+      push(s, p, di * dj);
+    }
+  }
+  return s;
+}
+
+SurfaceSamples sample_cavity(const mold::Cavity& cavity) {
+  if (cavity.is_patch()) return sample_patch(*cavity.box, cavity.sample_spacing);
+  if (cavity.box) return sample_box(*cavity.box, cavity.sample_spacing);
+  return sample_mesh(cavity.mesh->mesh, cavity.sample_spacing);
+}
+
 }  // namespace mtcs::eval

@@ -6,6 +6,7 @@
 
 #include "mtcs/geometry/triangle_distance.h"
 #include "mtcs/mesh/triangle_mesh.h"
+#include "mtcs/mold/mold_spec.h"
 
 namespace mtcs::eval {
 
@@ -20,5 +21,16 @@ SurfaceSamples sample_box(const geometry::Box& box, double spacing);
 // A mesh: triangles subdivided finer than `spacing`, the pieces gathered into cubes of side
 // `spacing`, one sample per cube at the piece nearest the cube's area-weighted centre.
 SurfaceSamples sample_mesh(const mesh::TriangleMesh& mesh, double spacing);
+// A patch (a flat box on a block face): a grid of cells at most `spacing` wide on the
+// rectangle, one sample at each cell's centre, the first in-plane axis (x, y, z order) fastest.
+SurfaceSamples sample_patch(const geometry::Box& patch, double spacing);
+// Whichever the cavity is, at its sample_spacing.
+SurfaceSamples sample_cavity(const mold::Cavity& cavity);
+
+// The two in-plane axes of a flat box (x, y, z order) and its normal axis.
+struct PatchAxes {
+  int i, j, normal;
+};
+PatchAxes patch_axes(const geometry::Box& patch);
 
 }  // namespace mtcs::eval

@@ -1,6 +1,7 @@
 // Bores against the block's surface: a deep hole drilled too close to a face wanders towards
 // it and may break through (shared/notes/mtcs_literature.md 1.2). The stretch next to the
-// bore's own entry is exempt.
+// bore's own entry is exempt, and so is the far end of a through-bore, whose exit is the
+// circuit's inlet or outlet: it meets the face by design.
 
 #include <algorithm>
 #include <cmath>
@@ -20,7 +21,7 @@ class SurfaceStage final : public Stage {
       // Far enough along the axis that the entry face itself is margin + r away.
       const double cosine = std::max(0.1, std::cos(b.entry_angle_deg * 3.14159265358979323846 / 180));
       const double skip = (margin_ + b.hole.radius) / cosine;
-      const double d = scene_.surface_clearance(b.hole, skip, margin_);
+      const double d = scene_.surface_clearance(b.hole, skip, margin_, b.through ? skip : 0.0);
       add_clearance(out, "bore_surface", {b.name(), "block"}, d, margin_, b.hole.p1);
     }
   }

@@ -32,7 +32,7 @@ struct Candidate {
   Vec3 entry, far_end, near_flow;
   Face face;
   double angle_deg;
-  bool allowed, ok, plugged;
+  bool allowed, ok, plugged, through;
   double length;
 };
 
@@ -110,7 +110,7 @@ Layout decode(const Scene& scene, const Genome& genome) {
     for (int j = 1; j <= n; ++j) {
       const Vec3 A = pts[std::size_t(j - 1)], B = pts[std::size_t(j)];
       const Vec3 u = (B - A).normalized();
-      auto make = [&](const Vec3& from, const Vec3& dir, const Vec3& far_end, bool at_port) {
+      auto make = [&](const Vec3& from, const Vec3& dir, const Vec3& far_end, bool at_port, bool ends_at_port) {
         const BlockExit e = scene.exit_block(from, dir);
         Candidate k;
         k.entry = e.hit ? e.point : from;
@@ -121,12 +121,14 @@ Layout decode(const Scene& scene, const Genome& genome) {
         k.allowed = contains(drill.allowed_faces, k.face);
         k.ok = k.allowed && k.angle_deg <= drill.max_angle_deg + 1e-9;
         k.plugged = !at_port;
+        k.through = ends_at_port;
         k.length = (k.far_end - k.entry).norm();
         return k;
       };
       // From A's side (ending past B), or from B's side (ending past A).
-      const Candidate from_a = make(A, -u, j == n ? B : B + overshoot * u, j == 1);
-      const Candidate from_b = make(B, u, j == 1 ? A : A - overshoot * u, j == n);
+      // A hole ending at a port that lies on its face is drilled through: open at that end.
+      const Candidate from_a = make(A, -u, j == n ? B : B + overshoot * u, j == 1, j == n && outlet_off <= port_tol);
+      const Candidate from_b = make(B, u, j == 1 ? A : A - overshoot * u, j == n, j == 1 && inlet_off <= port_tol);
       const bool take_a = from_a.ok != from_b.ok ? from_a.ok : from_a.length <= from_b.length;
       const Candidate& k = take_a ? from_a : from_b;
       Bore b;
@@ -137,6 +139,7 @@ Layout decode(const Scene& scene, const Genome& genome) {
       b.entry_angle_deg = k.angle_deg;
       b.entry_allowed = k.allowed;
       b.plugged = k.plugged;
+      b.through = k.through;
       b.dead_end = k.plugged ? (k.near_flow - k.entry).norm() : 0.0;
       b.drilled_length = k.length;
       b.diameter = D;

@@ -2,6 +2,7 @@
 
 #include "mtcs/mold/mold_spec.h"
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -79,13 +80,60 @@ MeshSource parse_mesh(const YamlReader& r, const YAML::Node& file, const YAML::N
   return m;
 }
 
-Cavity parse_cavity(const YamlReader& r, const YAML::Node& n) {
-  r.expect_map(n, "cavity", {"mesh", "translate", "box", "sample_spacing", "wall_thickness"});
+// The two axes along a face's plane, in x, y, z order.
+std::array<int, 2> plane_axes(Face f) {
+  int k = 0;
+  normal_of(f).cwiseAbs().maxCoeff(&k);
+  return k == 0 ? std::array{1, 2} : k == 1 ? std::array{0, 2} : std::array{0, 1};
+}
+
+std::array<double, 2> parse_vec2(const YamlReader& r, const YAML::Node& n, const std::string& path) {
+  if (!n.IsSequence() || n.size() != 2) r.fail(n, path, "expected two numbers [a, b]");
+  return {r.number(n[0], at(path, 0), -kHuge, kHuge), r.number(n[1], at(path, 1), -kHuge, kHuge)};
+}
+
+// A rectangle on a block face: {face: +z, min: [x, y], max: [x, y]} (the two coordinates along
+// the face, in x, y, z order), stored as a flat box on the face's plane.
+Box parse_patch(const YamlReader& r, const YAML::Node& n, const Box& block, Face& face) {
+  const std::string path = "cavity.patch";
+  r.expect_map(n, path, {"face", "min", "max"});
+  if (!n["face"] || !n["min"] || !n["max"]) r.fail(n, path, "a patch needs face, min: [a, b] and max: [a, b]");
+  face = parse_face(r, n["face"], path + ".face");
+  const auto lo = parse_vec2(r, n["min"], path + ".min"), hi = parse_vec2(r, n["max"], path + ".max");
+  const auto axes = plane_axes(face);
+  int k = 0;
+  normal_of(face).cwiseAbs().maxCoeff(&k);
+  Box b;
+  b.min[k] = b.max[k] = normal_of(face)[k] > 0 ? block.max[k] : block.min[k];
+  const char* names = "xyz";
+  for (int m = 0; m < 2; ++m) {
+    const int a = axes[std::size_t(m)];
+    b.min[a] = lo[std::size_t(m)], b.max[a] = hi[std::size_t(m)];
+    if (!(b.max[a] > b.min[a])) r.fail(n["max"][m], at(path + ".max", std::size_t(m)), "max must exceed min");
+    if (b.min[a] < block.min[a] || b.max[a] > block.max[a])
+      r.fail(b.min[a] < block.min[a] ? n["min"][m] : n["max"][m],
+             at(path + (b.min[a] < block.min[a] ? ".min" : ".max"), std::size_t(m)),
+             std::string("the patch leaves the block's face along ") + names[a]);
+  }
+  return b;
+}
+
+Cavity parse_cavity(const YamlReader& r, const YAML::Node& n, const Box& block) {
+  r.expect_map(n, "cavity", {"mesh", "translate", "box", "patch", "sample_spacing", "wall_thickness"});
   Cavity c;
-  if (n["mesh"] && n["box"]) r.fail(n, "cavity", "give either mesh or box, not both");
-  if (n["mesh"]) c.mesh = parse_mesh(r, n["mesh"], n["translate"], "cavity.mesh", "cavity.translate");
-  else if (n["box"]) c.box = parse_box(r, n["box"], "cavity.box");
-  else r.fail(n, "cavity", "the cavity needs a mesh (file) or a box");
+  if (int(bool(n["mesh"])) + int(bool(n["box"])) + int(bool(n["patch"])) > 1)
+    r.fail(n, "cavity", "give one of mesh, box or patch");
+  if (n["mesh"]) {
+    c.mesh = parse_mesh(r, n["mesh"], n["translate"], "cavity.mesh", "cavity.translate");
+  } else if (n["box"]) {
+    c.box = parse_box(r, n["box"], "cavity.box");
+  } else if (n["patch"]) {
+    Face f = Face::PosZ;
+    c.box = parse_patch(r, n["patch"], block, f);
+    c.patch_face = f;
+  } else {
+    r.fail(n, "cavity", "the cavity needs a mesh (file), a box or a patch");
+  }
   if (n["translate"] && !n["mesh"]) r.fail(n["translate"], "cavity.translate", "translate applies to a mesh only");
   if (n["sample_spacing"]) c.sample_spacing = r.number(n["sample_spacing"], "cavity.sample_spacing", 1e-3, kHuge);
   if (n["wall_thickness"]) c.wall_thickness = r.number(n["wall_thickness"], "cavity.wall_thickness", 1e-6, kHuge);
@@ -167,19 +215,26 @@ Objectives parse_objectives(const YamlReader& r, const YAML::Node& n) {
     o.use.clear();
     for (std::size_t i = 0; i < n["use"].size(); ++i) {
       const std::string s = r.text(n["use"][i], at("objectives.use", i));
-      if (s == "uniformity") o.use.push_back(Objective::Uniformity);
-      else if (s == "worst_covered") o.use.push_back(Objective::WorstCovered);
-      else if (s == "cost") o.use.push_back(Objective::Cost);
-      else r.fail(n["use"][i], at("objectives.use", i), "expected uniformity, worst_covered or cost; got '" + s + "'");
+      const auto objective = objective_named(s);
+      if (!objective) r.fail(n["use"][i], at("objectives.use", i), "expected " + kObjectiveNames + "; got '" + s + "'");
+      o.use.push_back(*objective);
     }
     if (o.use.empty()) r.fail(n["use"], "objectives.use", "at least one objective is needed");
   }
   if (n["scales"]) {
     const YAML::Node& s = n["scales"];
-    r.expect_map(s, "objectives.scales", {"uniformity", "worst_covered", "cost"});
-    if (s["uniformity"]) o.scale_uniformity = r.number(s["uniformity"], "objectives.scales.uniformity", 1e-12, kHuge);
-    if (s["worst_covered"]) o.scale_worst_covered = r.number(s["worst_covered"], "objectives.scales.worst_covered", 1e-12, kHuge);
-    if (s["cost"]) o.scale_cost = r.number(s["cost"], "objectives.scales.cost", 1e-12, kHuge);
+    r.expect_map(s, "objectives.scales", {"uniformity", "worst_covered", "cost", "temperature_mean", "temperature_std",
+                                          "temperature_max", "cycle_time"});
+    auto scale = [&](const char* key, double& into) {
+      if (s[key]) into = r.number(s[key], std::string("objectives.scales.") + key, 1e-12, kHuge);
+    };
+    scale("uniformity", o.scale_uniformity);
+    scale("worst_covered", o.scale_worst_covered);
+    scale("cost", o.scale_cost);
+    scale("temperature_mean", o.scale_temperature_mean);
+    scale("temperature_std", o.scale_temperature_std);
+    scale("temperature_max", o.scale_temperature_max);
+    scale("cycle_time", o.scale_cycle_time);
   }
   if (n["target_wall_distance"])
     o.target_wall_distance = parse_length(r, n["target_wall_distance"], "objectives.target_wall_distance");
@@ -192,6 +247,85 @@ Objectives parse_objectives(const YamlReader& r, const YAML::Node& n) {
     if (c["plug"]) o.cost_plug = r.number(c["plug"], "objectives.cost.plug", 0, kHuge);
   }
   return o;
+}
+
+// thermal: SI in the file, the thermal module's units (mm, W, degrees C) in the spec.
+ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
+  r.expect_map(n, "thermal", {"steel_conductivity", "coolant", "ambient", "adiabatic_faces", "heat_flux", "regions",
+                              "polymer", "tier", "elements_per_bore", "cell_size"});
+  constexpr double kPerM = 1e-3, kPerM2 = 1e-6;  // W/(m K) -> W/(mm K); W/m^2 -> W/mm^2
+  constexpr double kCold = -273.15, kHot = 5000;  // degrees C
+  ThermalSpec t;
+  if (n["steel_conductivity"])
+    t.conductivity = kPerM * r.number(n["steel_conductivity"], "thermal.steel_conductivity", 1e-6, 1e6);
+  if (n["coolant"]) {
+    const YAML::Node& c = n["coolant"];
+    r.expect_map(c, "thermal.coolant", {"temperature", "film", "flow_rate"});
+    if (c["film"] && c["flow_rate"]) r.fail(c, "thermal.coolant", "give film or flow_rate, not both");
+    if (c["temperature"]) t.coolant_temperature = r.number(c["temperature"], "thermal.coolant.temperature", kCold, kHot);
+    if (c["film"]) t.coolant_film = kPerM2 * r.number(c["film"], "thermal.coolant.film", 1e-9, 1e12);
+    if (c["flow_rate"]) {
+      t.flow_rate = r.number(c["flow_rate"], "thermal.coolant.flow_rate", 1e-6, 1e6);
+      // The water properties behind Gnielinski are tabulated from 0 to 106 degrees C.
+      if (t.coolant_temperature < 0.01 || t.coolant_temperature > 106)
+        r.fail(c["temperature"] ? c["temperature"] : c, "thermal.coolant.temperature",
+               "with a flow rate the coolant is water: 0 to 106 degrees C");
+    }
+  }
+  if (n["ambient"]) {
+    const YAML::Node& a = n["ambient"];
+    r.expect_map(a, "thermal.ambient", {"temperature", "film"});
+    if (a["temperature"]) t.ambient_temperature = r.number(a["temperature"], "thermal.ambient.temperature", kCold, kHot);
+    if (a["film"]) t.ambient_film = kPerM2 * r.number(a["film"], "thermal.ambient.film", 0, 1e12);
+  }
+  if (n["adiabatic_faces"]) {
+    r.expect_sequence(n["adiabatic_faces"], "thermal.adiabatic_faces");
+    for (std::size_t i = 0; i < n["adiabatic_faces"].size(); ++i)
+      t.adiabatic_faces.push_back(parse_face(r, n["adiabatic_faces"][i], at("thermal.adiabatic_faces", i)));
+  }
+  if (n["heat_flux"]) t.heat_flux = kPerM2 * r.number(n["heat_flux"], "thermal.heat_flux", 0, 1e12);
+  if (n["regions"]) {
+    r.expect_sequence(n["regions"], "thermal.regions");
+    for (std::size_t i = 0; i < n["regions"].size(); ++i) {
+      const YAML::Node& g = n["regions"][i];
+      const std::string path = at("thermal.regions", i);
+      r.expect_map(g, path, {"box", "heat_flux"});
+      if (!g["box"] || !g["heat_flux"]) r.fail(g, path, "a region needs box and heat_flux");
+      t.regions.push_back({parse_box(r, g["box"], path + ".box"), kPerM2 * r.number(g["heat_flux"], path + ".heat_flux", 0, 1e12)});
+    }
+  }
+  if (n["polymer"]) {
+    const YAML::Node& p = n["polymer"];
+    r.expect_map(p, "thermal.polymer", {"melt_temperature", "eject_temperature", "diffusivity", "density", "specific_heat"});
+    Polymer& m = t.polymer;
+    if (p["melt_temperature"]) m.melt_temperature = r.number(p["melt_temperature"], "thermal.polymer.melt_temperature", kCold, kHot);
+    if (p["eject_temperature"]) m.eject_temperature = r.number(p["eject_temperature"], "thermal.polymer.eject_temperature", kCold, kHot);
+    if (p["diffusivity"]) m.diffusivity = r.number(p["diffusivity"], "thermal.polymer.diffusivity", 1e-9, 1e6);
+    if (p["density"]) m.density = r.number(p["density"], "thermal.polymer.density", 1e-6, 1e6);
+    if (p["specific_heat"]) m.specific_heat = r.number(p["specific_heat"], "thermal.polymer.specific_heat", 1e-6, 1e7);
+    if (!(m.eject_temperature < m.melt_temperature))
+      r.fail(p["eject_temperature"] ? p["eject_temperature"] : p, "thermal.polymer.eject_temperature",
+             "the eject temperature must be below the melt temperature");
+  }
+  // The cycle-time proxy cools the part towards the coolant: it must be colder than ejection.
+  if (!(t.coolant_temperature < t.polymer.eject_temperature)) {
+    const YAML::Node& c = n["coolant"] && n["coolant"]["temperature"] ? n["coolant"]["temperature"] : n;
+    r.fail(c, "thermal.coolant.temperature", "the coolant must be colder than the polymer's eject temperature");
+  }
+  if (n["tier"]) {
+    const std::string s = r.text(n["tier"], "thermal.tier");
+    if (s == "t1") t.tier = ThermalTier::T1;
+    else if (s == "t2") t.tier = ThermalTier::T2;
+    else if (s == "t2d") t.tier = ThermalTier::T2d;
+    else if (s == "fd") t.tier = ThermalTier::Fd;
+    else if (s == "t0")
+      r.fail(n["tier"], "thermal.tier",
+             "tier 0 is not a temperature model: choose the objectives uniformity and worst_covered instead");
+    else r.fail(n["tier"], "thermal.tier", "expected t1, t2, t2d or fd; got '" + s + "'");
+  }
+  if (n["elements_per_bore"]) t.elements_per_bore = r.integer(n["elements_per_bore"], "thermal.elements_per_bore", 1, 1000);
+  if (n["cell_size"]) t.cell_size = r.number(n["cell_size"], "thermal.cell_size", 1e-3, kHuge);
+  return t;
 }
 
 Penalty parse_penalty(const YamlReader& r, const YAML::Node& n) {
@@ -214,7 +348,7 @@ MoldSpec load_mold_spec(const std::string& path) {
   const YamlReader r(path);
   const YAML::Node root = r.load();
   r.expect_map(root, "", {"units", "block", "cavity", "keep_outs", "drilling", "clearances", "circuits",
-                          "objectives", "penalty"});
+                          "objectives", "thermal", "penalty"});
   MoldSpec s;
   s.path = path;
   if (root["units"]) {
@@ -230,7 +364,8 @@ MoldSpec load_mold_spec(const std::string& path) {
     else if (b["mesh"]) s.block.mesh = parse_mesh(r, b["mesh"], b["translate"], "block.mesh", "block.translate");
     else r.fail(b, "block", "the block needs a box or a mesh");
   }
-  if (root["cavity"]) s.cavity = parse_cavity(r, root["cavity"]);
+  if (root["cavity"])
+    s.cavity = parse_cavity(r, root["cavity"], s.block.box ? *s.block.box : s.block.mesh->mesh.bounds());
   if (root["keep_outs"]) {
     r.expect_sequence(root["keep_outs"], "keep_outs");
     for (std::size_t i = 0; i < root["keep_outs"].size(); ++i)
@@ -240,6 +375,7 @@ MoldSpec load_mold_spec(const std::string& path) {
   if (root["clearances"]) s.clearances = parse_clearances(r, root["clearances"]);
   if (root["circuits"]) s.circuits = parse_circuits(r, root["circuits"]);
   if (root["objectives"]) s.objectives = parse_objectives(r, root["objectives"]);
+  if (root["thermal"]) s.thermal = parse_thermal(r, root["thermal"]);
   if (root["penalty"]) s.penalty = parse_penalty(r, root["penalty"]);
   return s;
 }
@@ -273,6 +409,32 @@ std::string to_string(Objective o) {
     case Objective::Uniformity: return "uniformity";
     case Objective::WorstCovered: return "worst_covered";
     case Objective::Cost: return "cost";
+    case Objective::TemperatureMean: return "temperature_mean";
+    case Objective::TemperatureStd: return "temperature_std";
+    case Objective::TemperatureMax: return "temperature_max";
+    case Objective::CycleTime: return "cycle_time";
+  }
+  return "?";
+}
+
+std::optional<Objective> objective_named(const std::string& name) {
+  for (const auto o : {Objective::Uniformity, Objective::WorstCovered, Objective::Cost, Objective::TemperatureMean,
+                       Objective::TemperatureStd, Objective::TemperatureMax, Objective::CycleTime})
+    if (to_string(o) == name) return o;
+  return std::nullopt;
+}
+
+bool is_temperature_objective(Objective o) {
+  return o == Objective::TemperatureMean || o == Objective::TemperatureStd || o == Objective::TemperatureMax ||
+         o == Objective::CycleTime;
+}
+
+std::string to_string(ThermalTier t) {
+  switch (t) {
+    case ThermalTier::T1: return "t1";
+    case ThermalTier::T2: return "t2";
+    case ThermalTier::T2d: return "t2d";
+    case ThermalTier::Fd: return "fd";
   }
   return "?";
 }

@@ -38,22 +38,23 @@ BlockExit Scene::exit_block(const Vec3& from, const Vec3& d) const {
   return {from + t * d, n, true};
 }
 
-double Scene::surface_clearance(const geometry::Cylinder& c, double skip, double cap) const {
+double Scene::surface_clearance(const geometry::Cylinder& c, double skip, double cap, double skip_end) const {
   const Vec3 axis = c.p1 - c.p0;
   const double len = axis.norm();
   if (len == 0) return cap;
+  if (skip_end > 0 && skip + skip_end >= len) return cap;  // both ends exempt: nothing left to check
   const Vec3 u = axis / len;
-  const Vec3 s0 = c.p0 + std::min(skip, len) * u;
+  const Vec3 s0 = c.p0 + std::min(skip, len) * u, s1 = c.p1 - skip_end * u;
   if (block_bvh_) {
-    if (!block_bvh_->contains(s0) || !block_bvh_->contains(c.p1)) return -c.radius;
-    return std::min(cap, block_bvh_->segment_distance(s0, c.p1, cap + c.radius) - c.radius);
+    if (!block_bvh_->contains(s0) || !block_bvh_->contains(s1)) return -c.radius;
+    return std::min(cap, block_bvh_->segment_distance(s0, s1, cap + c.radius) - c.radius);
   }
   // Box: each face plane, with the cylinder's reach towards it, r sqrt(1 - (u.n)^2).
   double d = cap;
   for (int k = 0; k < 3; ++k) {
     const double reach = c.radius * std::sqrt(std::max(0.0, 1 - u[k] * u[k]));
-    d = std::min(d, std::min(s0[k], c.p1[k]) - block_bounds_.min[k] - reach);
-    d = std::min(d, block_bounds_.max[k] - std::max(s0[k], c.p1[k]) - reach);
+    d = std::min(d, std::min(s0[k], s1[k]) - block_bounds_.min[k] - reach);
+    d = std::min(d, block_bounds_.max[k] - std::max(s0[k], s1[k]) - reach);
   }
   return d;
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mtcs/eval/evaluation.h"
+#include "mtcs/eval/temperature_objectives.h"
 #include "mtcs/mold/genome.h"
 #include "mtcs/mold/layout.h"
 #include "mtcs/mold/scene.h"
@@ -23,7 +24,9 @@ class Stage {
 
 class Pipeline {
  public:
-  explicit Pipeline(const mold::Scene& scene);
+  // The temperature objectives need `temperatures`, which builds the thermal tier's solver
+  // (std::invalid_argument without one when the spec uses them).
+  explicit Pipeline(const mold::Scene& scene, const TemperatureSolverFactory& temperatures = {});
   ~Pipeline();
 
   // Thread-safe: stages hold only data built at construction.

@@ -19,6 +19,7 @@ struct Bore {
   double entry_angle_deg = 0;  // drill axis against the entry face's normal
   bool entry_allowed = true;   // entry face in drilling.allowed_faces
   bool plugged = false;        // entered away from the inlet/outlet: a plug closes the entry
+  bool through = false;        // its far end is the circuit's inlet or outlet on its face: drilled through, open there
   double dead_end = 0;         // length of the stagnant stub between the plug and the flow, mm
   double drilled_length = 0;
   double diameter = 0;

@@ -39,11 +39,20 @@ struct Block {
   std::optional<MeshSource> mesh;
 };
 
+// The cavity is one of: a box (a primitive part, a void in the block: no mesh code runs for it),
+// a closed mesh (a void), or a patch: a rectangle on a block face where the melt touches the
+// steel from outside (the reference block of shared/cases/thermal), no void. A patch is stored
+// as a flat box (zero extent along the face's normal) in `box`, with `patch_face` set, so code
+// that only needs the cavity's bounds reads `box` alike.
 struct Cavity {
-  std::optional<Box> box;           // a primitive part: no mesh code runs for it
+  std::optional<Box> box;
   std::optional<MeshSource> mesh;
+  std::optional<Face> patch_face;   // set: `box` is a flat rectangle on this block face
   double sample_spacing = 3.0;      // mm between cavity-surface samples
   double wall_thickness = 2.5;      // mm
+
+  bool is_patch() const { return patch_face.has_value(); }
+  Box bounds() const { return box ? *box : mesh->mesh.bounds(); }
 };
 
 struct KeepOut {
@@ -75,19 +84,78 @@ struct CircuitLimits {
   std::vector<Face> inlet_faces{Face::NegY}, outlet_faces{Face::NegY};
 };
 
-enum class Objective { Uniformity, WorstCovered, Cost };
+// Tier 0 (wall distances): Uniformity, WorstCovered. Physics (the thermal section's tier):
+// the area-weighted mean, standard deviation and maximum of the cavity-surface temperature,
+// and the cycle-time proxy at the hottest sample.
+enum class Objective { Uniformity, WorstCovered, Cost, TemperatureMean, TemperatureStd, TemperatureMax, CycleTime };
 std::string to_string(Objective o);
+// The objective of that name (as to_string spells it), or none.
+std::optional<Objective> objective_named(const std::string& name);
+inline const std::string kObjectiveNames =
+    "uniformity, worst_covered, cost, temperature_mean, temperature_std, temperature_max or cycle_time";
+// Needs a thermal solve (not the tier-0 wall distances).
+bool is_temperature_objective(Objective o);
 
 struct Objectives {
   std::vector<Objective> use{Objective::Uniformity, Objective::WorstCovered, Objective::Cost};
   double scale_uniformity = 1, scale_worst_covered = 1, scale_cost = 1;
+  double scale_temperature_mean = 1, scale_temperature_std = 1, scale_temperature_max = 1;  // K
+  double scale_cycle_time = 1;                                                                // s
   Length target_wall_distance{2.0, true};
   double cost_setup = 20, cost_per_mm = 0.05, cost_deep_factor = 0.02, cost_plug = 5;
 
   // The divisor that makes objective o comparable to the others.
   double scale(Objective o) const {
-    return o == Objective::Uniformity ? scale_uniformity : o == Objective::WorstCovered ? scale_worst_covered : scale_cost;
+    switch (o) {
+      case Objective::Uniformity: return scale_uniformity;
+      case Objective::WorstCovered: return scale_worst_covered;
+      case Objective::Cost: return scale_cost;
+      case Objective::TemperatureMean: return scale_temperature_mean;
+      case Objective::TemperatureStd: return scale_temperature_std;
+      case Objective::TemperatureMax: return scale_temperature_max;
+      case Objective::CycleTime: return scale_cycle_time;
+    }
+    return 1;
   }
+};
+
+// The physics of the thermal objectives (docs/mold-spec.md, "thermal"). The spec is written in
+// SI units (W/(m K), W/(m^2 K), W/m^2); stored here in the thermal module's units: mm, W,
+// degrees C (conductivity W/(mm K), films W/(mm^2 K), fluxes W/mm^2).
+enum class ThermalTier { T1, T2, T2d, Fd };
+std::string to_string(ThermalTier t);
+
+// Cavity surface inside `box` takes `flux` instead of the default (later regions win).
+struct HeatRegion {
+  Box box;
+  double flux = 0;  // W/mm^2
+};
+
+// The molded polymer, for the cycle-time proxy and the default heat flux (ABS-like defaults).
+struct Polymer {
+  double melt_temperature = 230;    // degrees C
+  double eject_temperature = 90;    // degrees C, at the part's centre line
+  double diffusivity = 0.095;       // mm^2/s (0.2 W/(m K) / (1050 kg/m^3 * 2000 J/(kg K)))
+  double density = 1050;            // kg/m^3
+  double specific_heat = 2000;      // J/(kg K)
+};
+
+struct ThermalSpec {
+  double conductivity = 0.03;              // W/(mm K) (30 W/(m K): tool steel)
+  double coolant_temperature = 40;         // degrees C
+  // The bore wall: neither -> Dirichlet at the coolant temperature; a film; or a flow rate per
+  // circuit from which eval::coolant_film finds the film (Gnielinski).
+  std::optional<double> coolant_film;      // W/(mm^2 K)
+  std::optional<double> flow_rate;         // l/min per circuit
+  double ambient_temperature = 25;         // degrees C
+  double ambient_film = 1e-5;              // W/(mm^2 K) (10 W/(m^2 K): free convection)
+  std::vector<Face> adiabatic_faces;       // e.g. the parting plane
+  std::optional<double> heat_flux;         // W/mm^2 into the steel; none: eval::default_heat_flux
+  std::vector<HeatRegion> regions;
+  Polymer polymer;
+  ThermalTier tier = ThermalTier::T2d;
+  int elements_per_bore = 4;               // M of T2/T2d
+  double cell_size = 2;                    // mm, T3 (fd)
 };
 
 enum class PenaltyVariant { ConstrainedDomination, StaticLinear, StaticQuadratic, Death };
@@ -112,6 +180,7 @@ struct MoldSpec {
   Clearances clearances;
   CircuitLimits circuits;
   Objectives objectives;
+  ThermalSpec thermal;
   Penalty penalty;
 };
 

@@ -26,8 +26,9 @@ class Scene {
   const Box& block_bounds() const { return block_bounds_; }
   BlockExit exit_block(const geometry::Vec3& from, const geometry::Vec3& direction) const;
   // Distance from the solid cylinder to the block's surface, ignoring the first `skip` mm of
-  // its axis from p0 (its entry). Negative when the axis leaves the block.
-  double surface_clearance(const geometry::Cylinder& c, double skip, double cap) const;
+  // its axis from p0 (its entry) and the last `skip_end` mm before p1 (an open far end of a
+  // through-bore). Negative when the axis leaves the block.
+  double surface_clearance(const geometry::Cylinder& c, double skip, double cap, double skip_end = 0) const;
 
   const mesh::TriangleBvh* cavity_bvh() const { return cavity_bvh_.get(); }
   const mesh::TriangleBvh* keep_out_bvh(std::size_t k) const { return keep_out_bvh_[k].get(); }

@@ -1,0 +1,31 @@
+#pragma once
+// The temperature objectives (temperature_mean, temperature_std, temperature_max, cycle_time)
+// from the cavity-surface temperatures a thermal tier computes, and the hook through which the
+// pipeline asks a tier for them.
+
+#include <functional>
+#include <vector>
+
+#include "mtcs/mold/mold_spec.h"
+#include "mtcs/thermal/model.h"
+
+namespace mtcs::eval {
+
+// Temperatures (degrees C) at the samples for one layout's channels. Called from several
+// threads at once: it must not change shared state.
+using TemperatureSolver = std::function<std::vector<double>(const std::vector<thermal::Channel>& channels)>;
+// Builds a scene's solver once, from what does not depend on the layout (precompute there).
+// The setting and samples outlive the solver, which may keep references to them.
+using TemperatureSolverFactory =
+    std::function<TemperatureSolver(const thermal::Setting& setting, const thermal::Samples& samples,
+                                    const mold::ThermalSpec& spec)>;
+
+struct TemperatureObjectives {
+  double mean = 0, std = 0, max = 0;  // degrees C, K, degrees C; area-weighted over the samples
+  double cycle_time = 0;              // s: cooling_time at the hottest sample
+};
+
+TemperatureObjectives temperature_objectives(const std::vector<double>& temperature, const thermal::Samples& samples,
+                                             const mold::MoldSpec& spec);
+
+}  // namespace mtcs::eval

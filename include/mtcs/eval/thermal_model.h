@@ -1,0 +1,35 @@
+#pragma once
+// From a scene and a layout to the problem every thermal tier solves (mtcs/thermal/model.h):
+// the setting (block, face conditions, heat entering through the cavity surface, the cavity
+// void) once per scene, the channels (the flowed part of each bore) per layout, and the cavity
+// samples where temperatures are wanted. Units: mm, W, degrees C.
+
+#include <vector>
+
+#include "mtcs/mold/layout.h"
+#include "mtcs/mold/scene.h"
+#include "mtcs/thermal/model.h"
+
+namespace mtcs::eval {
+
+// The cycle-averaged heat flux (W/mm^2) through the cavity surface outside every region:
+// thermal.heat_flux, or default_heat_flux when the spec gives none.
+double cavity_heat_flux(const mold::MoldSpec& spec);
+
+// The block (a mesh block by its bounding box), the faces' films (adiabatic ones 0), the heat
+// input and the cavity void. The heat input: a box cavity's six faces (a void: heat enters from
+// inside it), a patch's rectangle (from outside the block), each split where thermal.regions
+// begin and end so every piece has one flux; a mesh cavity's triangles, each with the flux of
+// the region holding its centroid. Triangles face the melt. Needs a cavity (else
+// std::invalid_argument).
+thermal::Setting thermal_setting(const mold::Scene& scene);
+
+// One channel per bore: its flowed part (flow_start -> flow_end; no plugged dead end, no drill
+// point), at the coolant temperature, with the Dirichlet limit, the spec's film, or the film
+// of the spec's flow rate through that bore's diameter (Gnielinski).
+std::vector<thermal::Channel> thermal_channels(const mold::Layout& layout, const mold::MoldSpec& spec);
+
+// The cavity-surface samples with their areas (the same points the tier-0 objectives use).
+thermal::Samples thermal_samples(const mold::Scene& scene);
+
+}  // namespace mtcs::eval

@@ -1,0 +1,30 @@
+#include "mtcs/eval/cycle_time.h"
+
+#include <cmath>
+
+namespace mtcs::eval {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kTangentBelowEject = 1.0;  // K
+}  // namespace
+
+double cooling_time(double wall_thickness, const mold::Polymer& polymer, double wall_temperature) {
+  const double scale = wall_thickness * wall_thickness / (kPi * kPi * polymer.diffusivity);
+  const double melt = polymer.melt_temperature, eject = polymer.eject_temperature;
+  auto exact = [&](double t) { return scale * std::log(4 / kPi * (melt - t) / (eject - t)); };
+  const double knee = eject - kTangentBelowEject;
+  if (wall_temperature <= knee) return exact(wall_temperature);
+  const double slope = scale * (1 / (eject - knee) - 1 / (melt - knee));
+  return exact(knee) + slope * (wall_temperature - knee);
+}
+
+double default_heat_flux(const mold::MoldSpec& spec) {
+  const mold::Polymer& p = spec.thermal.polymer;
+  const double s = spec.cavity ? spec.cavity->wall_thickness : mold::Cavity{}.wall_thickness;  // mm
+  // J/m^2 per cycle on each side, then W/mm^2.
+  const double heat = p.density * p.specific_heat * (s / 2 * 1e-3) * (p.melt_temperature - p.eject_temperature);
+  return heat / cooling_time(s, p, spec.thermal.coolant_temperature) * 1e-6;
+}
+
+}  // namespace mtcs::eval

@@ -1,0 +1,65 @@
+// The temperature objectives (docs/mold-spec.md): a thermal tier computes the cycle-averaged
+// temperature at the cavity samples for the layout's channels; the objectives are its
+// area-weighted mean, standard deviation and maximum, and the plate cooling time at the
+// hottest sample.
+
+#include <stdexcept>
+
+#include "mtcs/eval/cycle_time.h"
+#include "mtcs/eval/temperature_objectives.h"
+#include "mtcs/eval/thermal_model.h"
+#include "stages.h"
+
+namespace mtcs::eval {
+
+TemperatureObjectives temperature_objectives(const std::vector<double>& temperature, const thermal::Samples& samples,
+                                             const mold::MoldSpec& spec) {
+  const thermal::Summary s = thermal::summarize(temperature, samples);
+  const double thickness = spec.cavity ? spec.cavity->wall_thickness : mold::Cavity{}.wall_thickness;
+  return {s.mean, s.std, s.max, cooling_time(thickness, spec.thermal.polymer, s.max)};
+}
+
+namespace {
+
+class TemperatureStage final : public Stage {
+ public:
+  TemperatureStage(const mold::Scene& scene, const TemperatureSolverFactory& factory)
+      : spec_(scene.spec()), setting_(thermal_setting(scene)), samples_(thermal_samples(scene)) {
+    solve_ = factory(setting_, samples_, spec_.thermal);
+    const auto& use = spec_.objectives.use;
+    for (std::size_t k = 0; k < use.size(); ++k)
+      if (mold::is_temperature_objective(use[k])) slots_.push_back({use[k], k});
+  }
+
+  std::string name() const override { return "temperature_" + mold::to_string(spec_.thermal.tier); }
+
+  void run(const mold::Layout& layout, Evaluation& out) const override {
+    const std::vector<double> t = solve_(thermal_channels(layout, spec_));
+    const TemperatureObjectives o = temperature_objectives(t, samples_, spec_);
+    for (const auto& [objective, slot] : slots_) {
+      double& v = out.objectives[slot];
+      switch (objective) {
+        case mold::Objective::TemperatureMean: v = o.mean; break;
+        case mold::Objective::TemperatureStd: v = o.std; break;
+        case mold::Objective::TemperatureMax: v = o.max; break;
+        case mold::Objective::CycleTime: v = o.cycle_time; break;
+        default: break;
+      }
+    }
+  }
+
+ private:
+  const mold::MoldSpec& spec_;
+  thermal::Setting setting_;
+  thermal::Samples samples_;
+  TemperatureSolver solve_;
+  std::vector<std::pair<mold::Objective, std::size_t>> slots_;
+};
+
+}  // namespace
+
+std::unique_ptr<Stage> make_temperature_stage(const mold::Scene& scene, const TemperatureSolverFactory& factory) {
+  return std::make_unique<TemperatureStage>(scene, factory);
+}
+
+}  // namespace mtcs::eval

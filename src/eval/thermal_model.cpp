@@ -1,0 +1,141 @@
+#include "mtcs/eval/thermal_model.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "mtcs/eval/coolant.h"
+#include "mtcs/eval/cycle_time.h"
+#include "surface_samples.h"
+
+namespace mtcs::eval {
+
+using geometry::Box;
+using geometry::Vec3;
+
+namespace {
+
+thermal::BlockFace block_face(mold::Face f) {
+  switch (f) {
+    case mold::Face::NegX: return thermal::BlockFace::NegX;
+    case mold::Face::PosX: return thermal::BlockFace::PosX;
+    case mold::Face::NegY: return thermal::BlockFace::NegY;
+    case mold::Face::PosY: return thermal::BlockFace::PosY;
+    case mold::Face::NegZ: return thermal::BlockFace::NegZ;
+    case mold::Face::PosZ: return thermal::BlockFace::PosZ;
+  }
+  return thermal::BlockFace::PosZ;
+}
+
+double flux_at(const Vec3& p, double flux, const std::vector<mold::HeatRegion>& regions) {
+  for (const mold::HeatRegion& r : regions)
+    if (r.box.contains(p)) flux = r.flux;
+  return flux;
+}
+
+// A flat rectangle (zero extent along one axis) as triangles facing `melt`, cut wherever a
+// region's bound crosses it, each piece with its own flux.
+void add_rectangle(const Box& rect, const Vec3& melt, double flux, const std::vector<mold::HeatRegion>& regions,
+                   std::vector<thermal::HeatedTriangle>& out) {
+  const auto [i, j, k] = patch_axes(rect);
+  auto cuts = [&, &rect = rect](int a) {
+    std::vector<double> c{rect.min[a], rect.max[a]};
+    for (const mold::HeatRegion& r : regions)
+      for (const double x : {r.box.min[a], r.box.max[a]})
+        if (x > rect.min[a] && x < rect.max[a]) c.push_back(x);
+    std::sort(c.begin(), c.end());
+    c.erase(std::unique(c.begin(), c.end()), c.end());
+    return c;
+  };
+  const std::vector<double> ci = cuts(i), cj = cuts(j);
+  for (std::size_t b = 0; b + 1 < cj.size(); ++b) {
+    for (std::size_t a = 0; a + 1 < ci.size(); ++a) {
+      auto corner = [&, i = i, j = j](std::size_t u, std::size_t v) {
+        Vec3 p = rect.min;
+        p[i] = ci[a + u], p[j] = cj[b + v];
+        return p;
+      };
+      const Vec3 p00 = corner(0, 0), p10 = corner(1, 0), p11 = corner(1, 1), p01 = corner(0, 1);
+      const double q = flux_at((p00 + p11) / 2, flux, regions);
+      if ((p10 - p00).cross(p01 - p00).dot(melt) > 0) {
+        out.push_back({p00, p10, p11, q});
+        out.push_back({p00, p11, p01, q});
+      } else {
+        out.push_back({p00, p11, p10, q});
+        out.push_back({p00, p01, p11, q});
+      }
+    }
+  }
+}
+
+}  // namespace
+
+double cavity_heat_flux(const mold::MoldSpec& spec) {
+  return spec.thermal.heat_flux ? *spec.thermal.heat_flux : default_heat_flux(spec);
+}
+
+thermal::Setting thermal_setting(const mold::Scene& scene) {
+  const mold::MoldSpec& spec = scene.spec();
+  if (!spec.cavity) throw std::invalid_argument("the thermal model needs a cavity");
+  const mold::ThermalSpec& t = spec.thermal;
+  thermal::Setting s;
+  s.block = scene.block_bounds();
+  s.conductivity = t.conductivity;
+  for (auto& f : s.faces) f = {t.ambient_film, t.ambient_temperature};
+  for (const mold::Face f : t.adiabatic_faces) s.faces[std::size_t(block_face(f))].film = 0;
+
+  const mold::Cavity& cavity = *spec.cavity;
+  const double flux = cavity_heat_flux(spec);
+  if (cavity.is_patch()) {
+    // The melt lies outside the block, beyond the patch's face.
+    add_rectangle(*cavity.box, mold::normal_of(*cavity.patch_face), flux, t.regions, s.heat_in);
+  } else if (cavity.box) {
+    s.cavity_box = *cavity.box;
+    const Box& b = *cavity.box;
+    for (int k = 0; k < 3; ++k) {
+      for (const bool upper : {false, true}) {
+        Box face = b;
+        (upper ? face.min : face.max)[k] = upper ? b.max[k] : b.min[k];
+        Vec3 inward = Vec3::Zero();
+        inward[k] = upper ? -1 : 1;  // the melt is inside the box
+        add_rectangle(face, inward, flux, t.regions, s.heat_in);
+      }
+    }
+  } else {
+    const mesh::TriangleMesh& m = cavity.mesh->mesh;
+    s.cavity_mesh = std::make_shared<const mesh::TriangleMesh>(m);
+    for (std::size_t i = 0; i < m.triangles.size(); ++i) {
+      const Vec3 a = m.corner(i, 0), b = m.corner(i, 1), c = m.corner(i, 2);
+      // Outward-oriented mesh: reversed, the triangle faces the melt inside the part.
+      s.heat_in.push_back({a, c, b, flux_at((a + b + c) / 3, flux, t.regions)});
+    }
+  }
+  return s;
+}
+
+std::vector<thermal::Channel> thermal_channels(const mold::Layout& layout, const mold::MoldSpec& spec) {
+  const mold::ThermalSpec& t = spec.thermal;
+  std::vector<thermal::Channel> channels;
+  for (const mold::Bore& b : layout.bores) {
+    thermal::Channel c;
+    c.axis = {b.flow_start, b.flow_end};
+    c.radius = b.diameter / 2;
+    c.coolant = t.coolant_temperature;
+    if (t.coolant_film) c.film = *t.coolant_film;
+    else if (t.flow_rate) c.film = coolant_film(*t.flow_rate, b.diameter, t.coolant_temperature);
+    channels.push_back(c);
+  }
+  return channels;
+}
+
+thermal::Samples thermal_samples(const mold::Scene& scene) {
+  if (!scene.spec().cavity) throw std::invalid_argument("the thermal samples need a cavity");
+  const SurfaceSamples s = sample_cavity(*scene.spec().cavity);
+  thermal::Samples out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    out.points.emplace_back(s.x[i], s.y[i], s.z[i]);
+    out.weights.push_back(s.weight[i]);
+  }
+  return out;
+}
+
+}  // namespace mtcs::eval
