@@ -1,0 +1,82 @@
+#pragma once
+// T3, the finite-volume reference: cell-centred finite volumes on a uniform grid over the block,
+// the truth every thermal proxy is judged by.
+//
+// Discretisation (experiments/thermal/fv.md has the measured accuracy and cost):
+// - n = round(L / cell) cells per axis, so the grid covers the block exactly (the spacing may
+//   differ slightly per axis). A cell is steel unless its centre lies in a channel or the cavity.
+// - A link from a steel cell's centre that enters a bore (towards a neighbour, or towards the
+//   block face) is cut at the exact distance to the bore wall along the grid line: Dirichlet
+//   there, or the film as a series resistance (symmetric cut-cell scheme, second order in T).
+// - Outer faces: film to ambient with the half-cell resistance in series; a face cell carries
+//   the heat of the heat_in triangles that overlap it (exact area overlap), and only its
+//   uncovered part convects (the covered part touches the melt, not the air).
+// - heat_in triangles that do not lie on a block face (the walls of a cavity void) deposit their
+//   heat in the nearest steel cells: a staircase, first order there.
+// - Symmetric positive definite system; Eigen's conjugate gradient with an incomplete Cholesky
+//   preconditioner. Deterministic.
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "mtcs/thermal/model.h"
+
+namespace mtcs::thermal {
+
+struct FvOptions {
+  double cell = 2.0;            // mm, the target cell size
+  double tolerance = 1e-10;     // relative residual |r| / |b| of the conjugate gradient
+  int max_iterations = 20000;
+};
+
+// The solved temperature field, kept so that a writer can colour a surface.
+class FvField {
+ public:
+  std::array<int, 3> cells{};  // per axis
+  Vec3 origin = Vec3::Zero();  // the block's min corner
+  Vec3 spacing = Vec3::Ones();
+  std::vector<double> temperature;  // per cell (x fastest), NaN where the cell is not steel
+
+  std::size_t index(int i, int j, int k) const {
+    return std::size_t(i) + std::size_t(cells[0]) * (std::size_t(j) + std::size_t(cells[1]) * std::size_t(k));
+  }
+  Vec3 centre(int i, int j, int k) const;
+  bool is_steel(int i, int j, int k) const;
+
+  // Temperature at p. On a block face: the adjacent cells extrapolated to the face with the
+  // face's flux and film, interpolated bilinearly along the face. Elsewhere: trilinear over the
+  // surrounding steel cells (first order next to a channel or the cavity). NaN when no steel
+  // cell is near.
+  double temperature_at(const Vec3& p) const;
+
+  // What the extrapolation to a face needs. Per block face (BlockFace order), per face cell
+  // (first in-plane axis fastest; the in-plane axes of the face normal to a are a+1, a+2 mod 3):
+  // heat entering (W) and the area covered by heat_in (mm^2).
+  double conductivity = 0;
+  std::array<FaceCondition, 6> faces{};
+  std::array<std::vector<double>, 6> face_heat, face_covered;
+
+ private:
+  double face_temperature(int face, int b, int c) const;  // of the boundary cell under face cell (b, c)
+  double interior_temperature(const Vec3& p) const;
+};
+
+struct FvResult {
+  std::vector<double> temperature;  // at the samples
+  double heat_in = 0;               // W, from heat_in
+  double heat_to_channels = 0;      // W, through the bore walls
+  double heat_to_faces = 0;         // W, convected from the outer faces
+  std::vector<double> heat_to_channel;  // W, per channel
+  int iterations = 0;
+  double residual = 0;  // relative, as the solver reports it
+  double seconds = 0;   // wall time of the whole solve
+  std::size_t steel_cells = 0;
+  FvField field;
+};
+
+// Throws std::invalid_argument when the model or the options cannot be solved (empty block,
+// non-positive cell or conductivity, no steel cell).
+FvResult solve_finite_volume(const Model& model, const Samples& samples, const FvOptions& options = {});
+
+}  // namespace mtcs::thermal
