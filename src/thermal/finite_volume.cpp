@@ -17,7 +17,7 @@ namespace mtcs::thermal {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr int kSteel = -1, kVoid = -2;  // cell kinds; a channel's cells hold its index
+constexpr int kSteel = FvField::kSteel, kVoid = FvField::kCavity;  // a channel's cells hold its index
 
 // Face f of the block (BlockFace order) is normal to axis f / 2, at the max end when f is odd.
 int face_axis(int face) { return face / 2; }
@@ -47,8 +47,18 @@ Vec3 FvField::centre(int i, int j, int k) const {
 
 bool FvField::is_steel(int i, int j, int k) const {
   if (i < 0 || j < 0 || k < 0 || i >= cells[0] || j >= cells[1] || k >= cells[2]) return false;
-  return !std::isnan(temperature[index(i, j, k)]);
+  return kind[index(i, j, k)] == kSteel;
 }
+
+namespace {
+
+// Whether cell (i, j, k) has a value to interpolate: steel or a channel's.
+bool has_value(const FvField& f, int i, int j, int k) {
+  if (i < 0 || j < 0 || k < 0 || i >= f.cells[0] || j >= f.cells[1] || k >= f.cells[2]) return false;
+  return f.kind[f.index(i, j, k)] != kVoid;
+}
+
+}  // namespace
 
 double FvField::face_temperature(int face, int b, int c) const {
   const int a = face_axis(face);
@@ -84,7 +94,7 @@ double FvField::interior_temperature(const Vec3& p) const {
       ijk[a] = base[a] + up;
       w *= up ? frac[a] : 1 - frac[a];
     }
-    if (w > 0 && is_steel(ijk[0], ijk[1], ijk[2])) {
+    if (w > 0 && has_value(*this, ijk[0], ijk[1], ijk[2])) {
       sum += w * temperature[index(ijk[0], ijk[1], ijk[2])];
       weight += w;
     }
@@ -131,8 +141,9 @@ double FvField::temperature_at(const Vec3& p) const {
       ijk[a] = layer;
       ijk[ab] = b;
       ijk[ac] = c;
-      if (w > 0 && is_steel(ijk[0], ijk[1], ijk[2])) {
-        sum += w * face_temperature(face, b, c);
+      if (w > 0 && has_value(*this, ijk[0], ijk[1], ijk[2])) {
+        sum += w * (is_steel(ijk[0], ijk[1], ijk[2]) ? face_temperature(face, b, c)
+                                                      : temperature[index(ijk[0], ijk[1], ijk[2])]);
         weight += w;
       }
     }
@@ -390,6 +401,20 @@ struct Sink {
   int channel;  // -1 for an outer face
 };
 
+template <class Preconditioner>
+Eigen::VectorXd conjugate_gradient(const Eigen::SparseMatrix<double>& matrix, const Eigen::VectorXd& rhs,
+                                   const Eigen::VectorXd& guess, const FvOptions& options, FvResult& result) {
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper, Preconditioner> solver;
+  solver.setTolerance(options.tolerance);
+  solver.setMaxIterations(options.max_iterations);
+  solver.compute(matrix);
+  if (solver.info() != Eigen::Success) throw std::runtime_error("finite volume: the preconditioner failed");
+  Eigen::VectorXd x = solver.solveWithGuess(rhs, guess);
+  result.iterations = int(solver.iterations());
+  result.residual = solver.error();
+  return x;
+}
+
 }  // namespace
 
 FvResult solve_finite_volume(const Model& model, const Samples& samples, const FvOptions& options) {
@@ -484,25 +509,31 @@ FvResult solve_finite_volume(const Model& model, const Samples& samples, const F
   matrix.setFromTriplets(entries.begin(), entries.end());
   entries = {};
 
-  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper,
-                           Eigen::IncompleteCholesky<double, Eigen::Lower, Eigen::NaturalOrdering<int>>>
-      solver;
-  solver.setTolerance(options.tolerance);
-  solver.setMaxIterations(options.max_iterations);
-  solver.compute(matrix);
-  if (solver.info() != Eigen::Success) throw std::runtime_error("finite volume: the preconditioner failed");
-  // Start from the mean of the fixed temperatures: the field is near them.
+  // Start from the conductance-weighted mean of the fixed temperatures: the field is near them.
   double guess = 0, weight = 0;
   for (const Sink& s : sinks) guess += s.conductance * s.temperature, weight += s.conductance;
   const Eigen::VectorXd x0 = Eigen::VectorXd::Constant(n, weight > 0 ? guess / weight : 0.0);
-  const Eigen::VectorXd x = solver.solveWithGuess(rhs, x0);
-  result.iterations = int(solver.iterations());
-  result.residual = solver.error();
+  Eigen::VectorXd x;
+  if (options.preconditioner == FvPreconditioner::IncompleteCholesky)
+    x = conjugate_gradient<Eigen::IncompleteCholesky<double, Eigen::Lower, Eigen::NaturalOrdering<int>>>(
+        matrix, rhs, x0, options, result);
+  else
+    x = conjugate_gradient<Eigen::DiagonalPreconditioner<double>>(matrix, rhs, x0, options, result);
   result.steel_cells = std::size_t(n);
 
+  field.kind.resize(n_cells);
   field.temperature.assign(n_cells, kNaN);
-  for (std::size_t cell = 0; cell < n_cells; ++cell)
-    if (row[cell] >= 0) field.temperature[cell] = x[row[cell]];
+  for (int kk = 0; kk < field.cells[2]; ++kk)
+    for (int j = 0; j < field.cells[1]; ++j)
+      for (int i = 0; i < field.cells[0]; ++i) {
+        const std::size_t cell = field.index(i, j, kk);
+        const int kind = grid.kind(i, j, kk);
+        field.kind[cell] = kind;
+        if (kind == kSteel)
+          field.temperature[cell] = x[row[cell]];
+        else if (kind >= 0)
+          field.temperature[cell] = model.channels[std::size_t(kind)].coolant;
+      }
 
   result.heat_in = heat.total();
   result.heat_to_channel.assign(model.channels.size(), 0.0);

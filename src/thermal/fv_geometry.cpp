@@ -63,6 +63,8 @@ std::optional<Entry> enter_cylinder(const Vec3& p, const Vec3& e, double length,
   }
   const Interval both{std::max(lateral.lo, axial.lo), std::min(lateral.hi, axial.hi)};
   if (both.empty() || both.hi < 0 || both.lo > length) return std::nullopt;
+  // A line that only touches the wall (a tangent) does not enter.
+  if (both.hi - both.lo <= 1e-9 * length) return std::nullopt;
   const double t = std::max(both.lo, 0.0);
   double cosine;
   if (lateral.lo >= axial.lo) {  // through the side wall: the normal is radial

@@ -24,10 +24,14 @@
 
 namespace mtcs::thermal {
 
+// Incomplete Cholesky (natural order; AMD order measured 5-9x slower) or Jacobi, kept to compare.
+enum class FvPreconditioner { IncompleteCholesky, Jacobi };
+
 struct FvOptions {
   double cell = 2.0;            // mm, the target cell size
   double tolerance = 1e-10;     // relative residual |r| / |b| of the conjugate gradient
   int max_iterations = 20000;
+  FvPreconditioner preconditioner = FvPreconditioner::IncompleteCholesky;
 };
 
 // The solved temperature field, kept so that a writer can colour a surface.
@@ -36,7 +40,11 @@ class FvField {
   std::array<int, 3> cells{};  // per axis
   Vec3 origin = Vec3::Zero();  // the block's min corner
   Vec3 spacing = Vec3::Ones();
-  std::vector<double> temperature;  // per cell (x fastest), NaN where the cell is not steel
+  // Per cell (x fastest): what the cell is (kSteel, kCavity, or the index of the channel its
+  // centre lies in) and its temperature (the coolant's in a channel, NaN in the cavity).
+  static constexpr int kSteel = -1, kCavity = -2;
+  std::vector<int> kind;
+  std::vector<double> temperature;
 
   std::size_t index(int i, int j, int k) const {
     return std::size_t(i) + std::size_t(cells[0]) * (std::size_t(j) + std::size_t(cells[1]) * std::size_t(k));
@@ -46,8 +54,8 @@ class FvField {
 
   // Temperature at p. On a block face: the adjacent cells extrapolated to the face with the
   // face's flux and film, interpolated bilinearly along the face. Elsewhere: trilinear over the
-  // surrounding steel cells (first order next to a channel or the cavity). NaN when no steel
-  // cell is near.
+  // surrounding cells. Cells in a channel count at the coolant's temperature (the wall is
+  // within the cell), cavity cells not at all: first order there. NaN when no steel cell is near.
   double temperature_at(const Vec3& p) const;
 
   // What the extrapolation to a face needs. Per block face (BlockFace order), per face cell
