@@ -95,7 +95,13 @@ double FvField::interior_temperature(const Vec3& p) const {
       w *= up ? frac[a] : 1 - frac[a];
     }
     if (w > 0 && has_value(*this, ijk[0], ijk[1], ijk[2])) {
-      sum += w * temperature[index(ijk[0], ijk[1], ijk[2])];
+      const std::size_t cell = index(ijk[0], ijk[1], ijk[2]);
+      double t = temperature[cell];
+      if (const auto it = wall_flux.find(cell); it != wall_flux.end()) {
+        const double reach = std::min((p - centre(ijk[0], ijk[1], ijk[2])).norm(), 0.5 * spacing.minCoeff());
+        t += it->second * reach / conductivity;
+      }
+      sum += w * t;
       weight += w;
     }
   }
@@ -297,7 +303,6 @@ class HeatInput {
         throw std::invalid_argument("finite volume: a heat_in triangle is not finite");
       const double area = 0.5 * (t.b - t.a).cross(t.c - t.a).norm();
       if (area == 0 || t.flux == 0) continue;
-      total_ += area * t.flux;
       const int face = block_face_of(t, block);
       if (face >= 0)
         spread_on_face(t, face);
@@ -305,7 +310,7 @@ class HeatInput {
         spread_in_volume(t.a, t.b, t.c, t.flux);
     }
   }
-  double total() const { return total_; }
+  double total() const { return total_; }  // W, the part of heat_in inside the block
 
  private:
   int block_face_of(const HeatedTriangle& t, const Box& block) const {
@@ -332,6 +337,7 @@ class HeatInput {
       for (int b = r.lo[ab]; b <= r.hi[ab]; ++b) {
         const double overlap = fv::triangle_rectangle_overlap(pa, pb, pc, b * sb, (b + 1) * sb, c * sc, (c + 1) * sc);
         if (overlap <= 0) continue;
+        total_ += overlap * t.flux;  // what lies outside the block does not enter
         std::array<int, 3> ijk{};
         ijk[a] = layer;
         ijk[ab] = b;
@@ -346,20 +352,25 @@ class HeatInput {
       }
   }
 
-  // Uniform subdivision into m^2 equal sub-triangles; each one's heat goes to the steel cell
-  // nearest its centroid, looked for a quarter cell into the steel (behind the normal).
+  // Each cell takes the heat of the part of the triangle inside it (the triangle moved a hair
+  // into the steel, so that one on a cell face goes to the steel side). A part in a cavity or
+  // channel cell goes to the nearest steel cell, looked for a quarter cell behind the normal.
   void spread_in_volume(const Vec3& a, const Vec3& b, const Vec3& c, double flux) {
     const double h = field_.spacing.minCoeff();
-    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-    const int m = std::max(1, int(std::ceil(longest / (0.5 * h))));
     const Vec3 normal = (b - a).cross(c - a).normalized();
-    const double heat = 0.5 * (b - a).cross(c - a).norm() * flux / (double(m) * m);
-    const Vec3 u = (b - a) / m, v = (c - a) / m;
-    for (int i = 0; i < m; ++i)
-      for (int j = 0; i + j < m; ++j) {
-        deposit(a + (i + 1.0 / 3) * u + (j + 1.0 / 3) * v - 0.25 * h * normal, heat);
-        if (i + j < m - 1) deposit(a + (i + 2.0 / 3) * u + (j + 2.0 / 3) * v - 0.25 * h * normal, heat);
-      }
+    const Vec3 shift = -1e-6 * h * normal - field_.origin;  // relative to the grid: no cancellation
+    const Vec3 ra = a + shift, rb = b + shift, rc = c + shift;
+    const Vec3 lo = a.cwiseMin(b).cwiseMin(c), hi = a.cwiseMax(b).cwiseMax(c);
+    grid_.for_cells(grid_.range(lo, hi, 1), [&](int i, int j, int k) {
+      const Vec3 cell_lo(i * field_.spacing.x(), j * field_.spacing.y(), k * field_.spacing.z());
+      const fv::Piece piece = fv::clip_triangle_to_box(ra, rb, rc, cell_lo, cell_lo + field_.spacing);
+      if (piece.area <= 0) return;
+      total_ += piece.area * flux;
+      if (grid_.kind(i, j, k) == kSteel)
+        source_[field_.index(i, j, k)] += piece.area * flux;
+      else
+        deposit(piece.centroid + field_.origin - 0.25 * h * normal, piece.area * flux);
+    });
   }
 
   void deposit(const Vec3& p, double heat) {
@@ -438,6 +449,20 @@ FvResult solve_finite_volume(const Model& model, const Samples& samples, const F
   const std::size_t n_cells = std::size_t(field.cells[0]) * field.cells[1] * field.cells[2];
   std::vector<double> source(n_cells, 0.0);
   const HeatInput heat(model, grid, field, source);
+  for (int kk = 0; kk < field.cells[2]; ++kk)
+    for (int j = 0; j < field.cells[1]; ++j)
+      for (int i = 0; i < field.cells[0]; ++i) {
+        const std::size_t cell = field.index(i, j, kk);
+        if (source[cell] == 0) continue;
+        double open = 0;  // area of the faces to the cavity
+        for (int dir = 0; dir < 6; ++dir) {
+          std::array<int, 3> nb{i, j, kk};
+          nb[dir / 2] += dir % 2 ? 1 : -1;
+          if (grid.inside(nb[0], nb[1], nb[2]) && grid.kind(nb[0], nb[1], nb[2]) == kVoid)
+            open += field.spacing[(dir / 2 + 1) % 3] * field.spacing[(dir / 2 + 2) % 3];
+        }
+        if (open > 0) field.wall_flux[cell] = source[cell] / open;
+      }
 
   // Number the steel cells.
   std::vector<int> row(n_cells, -1);

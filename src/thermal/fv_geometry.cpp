@@ -124,4 +124,46 @@ double triangle_rectangle_overlap(const double a[2], const double b[2], const do
   return 0.5 * std::abs(twice);
 }
 
+Piece clip_triangle_to_box(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& lo, const Vec3& hi) {
+  // Sutherland-Hodgman against the six faces: a triangle keeps at most 9 corners.
+  Vec3 buffers[2][12];
+  int n = 3;
+  buffers[0][0] = a;
+  buffers[0][1] = b;
+  buffers[0][2] = c;
+  int cur = 0;
+  for (int side = 0; side < 6 && n > 0; ++side) {
+    const int axis = side / 2;
+    const double bound = side % 2 ? hi[axis] : lo[axis];
+    const double sign = side % 2 ? -1.0 : 1.0;  // keep sign * (v - bound) >= 0
+    const Vec3* in = buffers[cur];
+    Vec3* out = buffers[1 - cur];
+    int m = 0;
+    for (int i = 0; i < n; ++i) {
+      const Vec3& p = in[i];
+      const Vec3& q = in[(i + 1) % n];
+      const double dp = sign * (p[axis] - bound), dq = sign * (q[axis] - bound);
+      if (dp >= 0) out[m++] = p;
+      if ((dp >= 0) != (dq >= 0)) {
+        out[m] = p + dp / (dp - dq) * (q - p);
+        out[m][axis] = bound;
+        ++m;
+      }
+    }
+    n = m;
+    cur = 1 - cur;
+  }
+  Piece piece;
+  if (n < 3) return piece;
+  const Vec3* poly = buffers[cur];
+  Vec3 weighted = Vec3::Zero();
+  for (int i = 1; i + 1 < n; ++i) {
+    const double area = 0.5 * (poly[i] - poly[0]).cross(poly[i + 1] - poly[0]).norm();
+    piece.area += area;
+    weighted += area * (poly[0] + poly[i] + poly[i + 1]) / 3;
+  }
+  piece.centroid = piece.area > 0 ? Vec3(weighted / piece.area) : poly[0];
+  return piece;
+}
+
 }  // namespace mtcs::thermal::fv

@@ -26,4 +26,11 @@ std::optional<Entry> enter_cylinder(const Vec3& p, const Vec3& e, double length,
 double triangle_rectangle_overlap(const double a[2], const double b[2], const double c[2], double x0,
                                   double x1, double y0, double y1);
 
+// The part of the triangle (a, b, c) inside the box [lo, hi]: its area and centroid.
+struct Piece {
+  double area = 0;
+  Vec3 centroid = Vec3::Zero();
+};
+Piece clip_triangle_to_box(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& lo, const Vec3& hi);
+
 }  // namespace mtcs::thermal::fv

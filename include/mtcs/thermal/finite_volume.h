@@ -11,13 +11,15 @@
 // - Outer faces: film to ambient with the half-cell resistance in series; a face cell carries
 //   the heat of the heat_in triangles that overlap it (exact area overlap), and only its
 //   uncovered part convects (the covered part touches the melt, not the air).
-// - heat_in triangles that do not lie on a block face (the walls of a cavity void) deposit their
-//   heat in the nearest steel cells: a staircase, first order there.
+// - heat_in triangles that do not lie on a block face (the walls of a cavity void) heat the
+//   steel cells they cross by the exact area inside each; a part inside a cavity cell goes to
+//   the nearest steel cell. The void itself is a staircase of cells: first order there.
 // - Symmetric positive definite system; Eigen's conjugate gradient with an incomplete Cholesky
 //   preconditioner. Deterministic.
 
 #include <array>
 #include <cstddef>
+#include <unordered_map>
 #include <vector>
 
 #include "mtcs/thermal/model.h"
@@ -55,7 +57,9 @@ class FvField {
   // Temperature at p. On a block face: the adjacent cells extrapolated to the face with the
   // face's flux and film, interpolated bilinearly along the face. Elsewhere: trilinear over the
   // surrounding cells. Cells in a channel count at the coolant's temperature (the wall is
-  // within the cell), cavity cells not at all: first order there. NaN when no steel cell is near.
+  // within the cell), cavity cells not at all, and a cell heated from the cavity adds its
+  // wall flux over the distance to p (at most half a cell): first order there, the staircase.
+  // NaN when no steel cell is near.
   double temperature_at(const Vec3& p) const;
 
   // What the extrapolation to a face needs. Per block face (BlockFace order), per face cell
@@ -64,6 +68,9 @@ class FvField {
   double conductivity = 0;
   std::array<FaceCondition, 6> faces{};
   std::array<std::vector<double>, 6> face_heat, face_covered;
+  // Per steel cell next to the cavity that takes heat_in: that heat over the area of its faces
+  // to the cavity (W/mm^2), to extrapolate from the centre to the cavity wall.
+  std::unordered_map<std::size_t, double> wall_flux;
 
  private:
   double face_temperature(int face, int b, int c) const;  // of the boundary cell under face cell (b, c)
@@ -72,7 +79,7 @@ class FvField {
 
 struct FvResult {
   std::vector<double> temperature;  // at the samples
-  double heat_in = 0;               // W, from heat_in
+  double heat_in = 0;               // W, from heat_in (the part inside the block)
   double heat_to_channels = 0;      // W, through the bore walls
   double heat_to_faces = 0;         // W, convected from the outer faces
   std::vector<double> heat_to_channel;  // W, per channel
