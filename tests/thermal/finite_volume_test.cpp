@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -192,6 +193,35 @@ TEST_CASE("finite volume: the single-hole shape factor converges on refinement",
   const double coarse = single_hole_shape_factor(10, 7.5, 1.0), fine = single_hole_shape_factor(10, 7.5, 0.5);
   INFO("S(1 mm) " << coarse << " S(0.5 mm) " << fine << " plate value " << expected);
   CHECK(std::abs(fine - expected) < 0.7 * std::abs(coarse - expected));
+}
+
+TEST_CASE("finite volume: a flat bore wall with a film is exact in one dimension", "[fv]") {
+  // A bore of radius 1e6 mm: its wall crosses the block as the plane z = 3.3 (sagitta 5e-5 mm),
+  // between grid planes. Adiabatic sides, the flux q on the top face: the temperature is linear,
+  // T(top) = coolant + q / film + q (20 - 3.3) / k, which the scheme reproduces.
+  const double q = 0.05, k = 0.03, wall = 3.3, radius = 1e6;
+  for (double film : {1e-3, std::numeric_limits<double>::infinity()}) {
+    Model m;
+    m.setting.block = {Vec3(0, 0, 0), Vec3(10, 10, 20)};
+    m.setting.conductivity = k;
+    for (auto& f : m.setting.faces) f = {0, 25};
+    const Vec3 a(0, 0, 20), b(10, 0, 20), c(10, 10, 20), d(0, 10, 20);
+    m.setting.heat_in = {{a, b, c, q}, {a, c, d, q}};
+    Channel bore;
+    bore.axis = {Vec3(-1, 5, wall - radius), Vec3(11, 5, wall - radius)};
+    bore.radius = radius;
+    bore.film = film;
+    m.channels = {bore};
+    Samples top;
+    top.points = {Vec3(5, 5, 20), Vec3(0.2, 9.7, 20)};
+    top.weights = {1, 1};
+    const FvResult r = solve_finite_volume(m, top, {1.0, 1e-12});
+    const double expected = 40 + (std::isinf(film) ? 0.0 : q / film) + q * (20 - wall) / k;
+    INFO("film " << film);
+    CHECK(r.temperature[0] == Approx(expected).margin(1e-3));
+    CHECK(r.temperature[1] == Approx(expected).margin(1e-3));
+    CHECK(r.heat_to_channels == Approx(q * 100).epsilon(1e-8));
+  }
 }
 
 TEST_CASE("finite volume: stiff and extreme inputs stay finite and meet their limits", "[fv][stiff]") {
