@@ -415,6 +415,7 @@ struct Sink {
 template <class Preconditioner>
 Eigen::VectorXd conjugate_gradient(const Eigen::SparseMatrix<double>& matrix, const Eigen::VectorXd& rhs,
                                    const Eigen::VectorXd& guess, const FvOptions& options, FvResult& result) {
+  const auto start = std::chrono::steady_clock::now();
   Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper, Preconditioner> solver;
   solver.setTolerance(options.tolerance);
   solver.setMaxIterations(options.max_iterations);
@@ -423,6 +424,7 @@ Eigen::VectorXd conjugate_gradient(const Eigen::SparseMatrix<double>& matrix, co
   Eigen::VectorXd x = solver.solveWithGuess(rhs, guess);
   result.iterations = int(solver.iterations());
   result.residual = solver.error();
+  result.solver_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return x;
 }
 
@@ -539,7 +541,9 @@ FvResult solve_finite_volume(const Model& model, const Samples& samples, const F
   for (const Sink& s : sinks) guess += s.conductance * s.temperature, weight += s.conductance;
   const Eigen::VectorXd x0 = Eigen::VectorXd::Constant(n, weight > 0 ? guess / weight : 0.0);
   Eigen::VectorXd x;
-  if (options.preconditioner == FvPreconditioner::IncompleteCholesky)
+  const bool cholesky = options.preconditioner == FvPreconditioner::IncompleteCholesky ||
+                        (options.preconditioner == FvPreconditioner::Automatic && n >= 300000);
+  if (cholesky)
     x = conjugate_gradient<Eigen::IncompleteCholesky<double, Eigen::Lower, Eigen::NaturalOrdering<int>>>(
         matrix, rhs, x0, options, result);
   else

@@ -69,7 +69,33 @@ Reference patch_samples(const Vec3& shift = Vec3::Zero()) {
 
 struct Errors {
   double rms = 0, max = 0, mean = 0, std = 0;  // mean and std: differences of the statistics
+  double spearman = 0;                          // rank correlation with the reference
 };
+
+// Ranks 1..n, ties at their mean rank.
+std::vector<double> ranks(const std::vector<double>& v) {
+  std::vector<std::size_t> order(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return v[a] < v[b]; });
+  std::vector<double> r(v.size());
+  for (std::size_t i = 0; i < order.size();) {
+    std::size_t j = i;
+    while (j + 1 < order.size() && v[order[j + 1]] == v[order[i]]) ++j;
+    for (std::size_t m = i; m <= j; ++m) r[order[m]] = 0.5 * double(i + j) + 1;
+    i = j + 1;
+  }
+  return r;
+}
+
+double pearson(const std::vector<double>& a, const std::vector<double>& b) {
+  const double n = double(a.size());
+  double ma = 0, mb = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) ma += a[i] / n, mb += b[i] / n;
+  double sab = 0, saa = 0, sbb = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    sab += (a[i] - ma) * (b[i] - mb), saa += (a[i] - ma) * (a[i] - ma), sbb += (b[i] - mb) * (b[i] - mb);
+  return sab / std::sqrt(saa * sbb);
+}
 
 Errors compare(const std::vector<double>& t, const Reference& ref) {
   Errors e;
@@ -82,6 +108,7 @@ Errors compare(const std::vector<double>& t, const Reference& ref) {
   const Summary a = summarize(t, ref.samples), b = summarize(ref.temperature, ref.samples);
   e.mean = a.mean - b.mean;
   e.std = a.std - b.std;
+  e.spearman = pearson(ranks(t), ranks(ref.temperature));
   return e;
 }
 
@@ -121,11 +148,13 @@ TEST_CASE("finite volume: the reference block at 1 mm meets the reference-tier b
   const Reference ref = patch_samples();
   const FvResult& r = block_solution(1.0);
   const Errors e = compare(r.temperature, ref);
-  INFO("rms " << e.rms << " max " << e.max << " dmean " << e.mean << " dstd " << e.std << " s " << r.seconds);
+  INFO("rms " << e.rms << " max " << e.max << " dmean " << e.mean << " dstd " << e.std << " rho " << e.spearman
+              << " s " << r.seconds);
   // The bars of shared/cases/thermal/README.md for a reference tier.
   CHECK(e.rms <= 0.1);
   CHECK(std::abs(e.mean) <= 0.1);
   CHECK(std::abs(e.std) <= 0.05);
+  CHECK(e.spearman >= 0.9995);
   CHECK(balance_error(r) < 1e-6);
   // FreeFem's heat balance: 137.82 W to the bores, 6.18 W convected (to 0.01 W).
   CHECK(r.heat_to_channels == Approx(137.82).margin(0.02));
@@ -336,17 +365,21 @@ TEST_CASE("finite volume: heat through a cavity void's wall matches the same hea
 // The error-versus-cost table of experiments/thermal/fv.md: run by hand, it prints CSV.
 TEST_CASE("finite volume: error against run time on the reference block", "[.fv-table]") {
   const Reference ref = patch_samples();
-  std::cout << "cell_mm,steel_cells,seconds,iterations,rms_K,max_K,dmean_K,dstd_K,heat_in_W,to_channels_W,"
-               "to_faces_W,balance_rel\n";
-  const bool jacobi = std::getenv("MTCS_FV_JACOBI") != nullptr;  // to compare the preconditioners
+  std::cout << "cell_mm,steel_cells,seconds,solver_seconds,iterations,rms_K,max_K,dmean_K,dstd_K,spearman,heat_in_W,"
+               "to_channels_W,to_faces_W,balance_rel\n";
+  // MTCS_FV_PRECONDITIONER=ic|jacobi compares the preconditioners; unset, the automatic choice.
+  const char* choice = std::getenv("MTCS_FV_PRECONDITIONER");
+  const std::string preconditioner = choice ? choice : "";
   for (double cell : {4.0, 3.0, 2.0, 1.5, 1.0, 0.75}) {
     FvOptions options;
     options.cell = cell;
-    if (jacobi) options.preconditioner = FvPreconditioner::Jacobi;
+    if (preconditioner == "ic") options.preconditioner = FvPreconditioner::IncompleteCholesky;
+    if (preconditioner == "jacobi") options.preconditioner = FvPreconditioner::Jacobi;
     const FvResult r = solve_finite_volume(block_case(), ref.samples, options);
     const Errors e = compare(r.temperature, ref);
-    std::cout << cell << ',' << r.steel_cells << ',' << r.seconds << ',' << r.iterations << ',' << e.rms << ','
-              << e.max << ',' << e.mean << ',' << e.std << ',' << r.heat_in << ',' << r.heat_to_channels << ','
-              << r.heat_to_faces << ',' << balance_error(r) << std::endl;
+    std::cout << cell << ',' << r.steel_cells << ',' << r.seconds << ',' << r.solver_seconds << ',' << r.iterations
+              << ',' << e.rms << ',' << e.max << ',' << e.mean << ',' << e.std << ',' << e.spearman << ','
+              << r.heat_in << ',' << r.heat_to_channels << ',' << r.heat_to_faces << ',' << balance_error(r)
+              << std::endl;
   }
 }

@@ -26,14 +26,15 @@
 
 namespace mtcs::thermal {
 
-// Incomplete Cholesky (natural order; AMD order measured 5-9x slower) or Jacobi, kept to compare.
-enum class FvPreconditioner { IncompleteCholesky, Jacobi };
+// Automatic: Jacobi below 300k steel cells, incomplete Cholesky above (natural order; AMD order
+// measured 5-9x slower): the faster of the two on the reference block (experiments/thermal/fv.md).
+enum class FvPreconditioner { Automatic, IncompleteCholesky, Jacobi };
 
 struct FvOptions {
   double cell = 2.0;            // mm, the target cell size
   double tolerance = 1e-10;     // relative residual |r| / |b| of the conjugate gradient
   int max_iterations = 20000;
-  FvPreconditioner preconditioner = FvPreconditioner::IncompleteCholesky;
+  FvPreconditioner preconditioner = FvPreconditioner::Automatic;
 };
 
 // The solved temperature field, kept so that a writer can colour a surface.
@@ -85,7 +86,8 @@ struct FvResult {
   std::vector<double> heat_to_channel;  // W, per channel
   int iterations = 0;
   double residual = 0;  // relative, as the solver reports it
-  double seconds = 0;   // wall time of the whole solve
+  double seconds = 0;         // wall time of the whole solve
+  double solver_seconds = 0;  // of which the preconditioner and the iterations
   std::size_t steel_cells = 0;
   FvField field;
 };
