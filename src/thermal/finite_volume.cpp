@@ -541,9 +541,7 @@ FvResult solve_finite_volume(const Model& model, const Samples& samples, const F
   for (const Sink& s : sinks) guess += s.conductance * s.temperature, weight += s.conductance;
   const Eigen::VectorXd x0 = Eigen::VectorXd::Constant(n, weight > 0 ? guess / weight : 0.0);
   Eigen::VectorXd x;
-  const bool cholesky = options.preconditioner == FvPreconditioner::IncompleteCholesky ||
-                        (options.preconditioner == FvPreconditioner::Automatic && n >= 300000);
-  if (cholesky)
+  if (options.preconditioner == FvPreconditioner::IncompleteCholesky)
     x = conjugate_gradient<Eigen::IncompleteCholesky<double, Eigen::Lower, Eigen::NaturalOrdering<int>>>(
         matrix, rhs, x0, options, result);
   else
