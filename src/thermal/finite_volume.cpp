@@ -39,6 +39,13 @@ struct CellRange {
   std::array<int, 3> lo, hi;  // inclusive
 };
 
+// floor(u) as an int, clamped to [-2, n + 1]: a far point stays representable.
+int clamped_floor(double u, int n) {
+  if (!(u > -2)) return -2;
+  if (u > n + 1) return n + 1;
+  return int(std::floor(u));
+}
+
 }  // namespace
 
 Vec3 FvField::centre(int i, int j, int k) const {
@@ -82,7 +89,7 @@ double FvField::interior_temperature(const Vec3& p) const {
   std::array<double, 3> frac{};
   for (int a = 0; a < 3; ++a) {
     const double u = (p[a] - origin[a]) / spacing[a] - 0.5;
-    base[a] = int(std::floor(u));
+    base[a] = clamped_floor(u, cells[a]);
     frac[a] = u - base[a];
   }
   double sum = 0, weight = 0;
@@ -108,7 +115,7 @@ double FvField::interior_temperature(const Vec3& p) const {
   if (weight > 0) return sum / weight;
   // No steel among the eight: the nearest steel centre within two cells.
   std::array<int, 3> home{};
-  for (int a = 0; a < 3; ++a) home[a] = int(std::floor((p[a] - origin[a]) / spacing[a]));
+  for (int a = 0; a < 3; ++a) home[a] = clamped_floor((p[a] - origin[a]) / spacing[a], cells[a]);
   double best = std::numeric_limits<double>::infinity(), value = kNaN;
   for (int dk = -2; dk <= 2; ++dk)
     for (int dj = -2; dj <= 2; ++dj)
@@ -122,6 +129,9 @@ double FvField::interior_temperature(const Vec3& p) const {
 }
 
 double FvField::temperature_at(const Vec3& p) const {
+  if (!p.allFinite() || temperature.empty()) return kNaN;
+  for (int a = 0; a < 3; ++a)  // more than a cell outside the block: nothing near
+    if (p[a] < origin[a] - spacing[a] || p[a] > origin[a] + (cells[a] + 1) * spacing[a]) return kNaN;
   for (int face = 0; face < 6; ++face) {
     const int a = face_axis(face);
     const double plane = origin[a] + (face_is_max(face) ? cells[a] * spacing[a] : 0.0);
@@ -376,7 +386,8 @@ class HeatInput {
   void deposit(const Vec3& p, double heat) {
     std::array<int, 3> home{};
     for (int a = 0; a < 3; ++a)
-      home[a] = std::clamp(int(std::floor((p[a] - field_.origin[a]) / field_.spacing[a])), 0, field_.cells[a] - 1);
+      home[a] = std::clamp(clamped_floor((p[a] - field_.origin[a]) / field_.spacing[a], field_.cells[a]), 0,
+                           field_.cells[a] - 1);
     for (int reach = 0; reach <= 3; ++reach) {
       double best = std::numeric_limits<double>::infinity();
       std::size_t cell = 0;

@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "mtcs/mesh/triangle_mesh.h"
@@ -277,6 +278,11 @@ TEST_CASE("finite volume: stiff and extreme inputs stay finite and meet their li
       CHECK(s.max < base.temperature[0] + 20);
     }
   }
+  SECTION("points far away or not finite have no temperature") {
+    for (const Vec3& p : {Vec3(1e300, 0, 0), Vec3(-1e9, 40, 30), Vec3(60, 40, 75), Vec3(NAN, 1, 1)})
+      CHECK(std::isnan(base.field.temperature_at(p)));
+    CHECK(std::isfinite(base.field.temperature_at(Vec3(60, 40, 61))));  // within a cell: extrapolated
+  }
   SECTION("film -> infinity is the Dirichlet limit") {
     Model m = block_case();
     for (auto& ch : m.channels) ch.film = 1e9;
@@ -382,4 +388,25 @@ TEST_CASE("finite volume: error against run time on the reference block", "[.fv-
               << r.heat_in << ',' << r.heat_to_channels << ',' << r.heat_to_faces << ',' << balance_error(r)
               << std::endl;
   }
+}
+
+TEST_CASE("finite volume: models and options it cannot solve are rejected", "[fv]") {
+  const Samples none;
+  CHECK_THROWS_AS(solve_finite_volume(block_case(), none, {0.0}), std::invalid_argument);
+  CHECK_THROWS_AS(solve_finite_volume(block_case(), none, {NAN}), std::invalid_argument);
+  Model m = block_case();
+  m.setting.conductivity = 0;
+  CHECK_THROWS_AS(solve_finite_volume(m, none, {4.0}), std::invalid_argument);
+  m = block_case();
+  m.setting.block.max.x() = m.setting.block.min.x();
+  CHECK_THROWS_AS(solve_finite_volume(m, none, {4.0}), std::invalid_argument);
+  m = block_case();
+  m.channels[0].film = 0;
+  CHECK_THROWS_AS(solve_finite_volume(m, none, {4.0}), std::invalid_argument);
+  m = block_case();
+  m.setting.faces[2].film = -1;
+  CHECK_THROWS_AS(solve_finite_volume(m, none, {4.0}), std::invalid_argument);
+  m = block_case();
+  m.setting.heat_in[0].flux = NAN;
+  CHECK_THROWS_AS(solve_finite_volume(m, none, {4.0}), std::invalid_argument);
 }
