@@ -1,8 +1,9 @@
 // T3, the finite-volume reference, against independent references: the FreeFem++ P2 solution of
 // the reference block (shared/cases/thermal), closed-form shape factors, and physical limits.
-#include <catch2/catch.hpp>
+#include "mtcs/thermal/finite_volume.h"
 
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -15,7 +16,6 @@
 #include <string>
 
 #include "mtcs/mesh/triangle_mesh.h"
-#include "mtcs/thermal/finite_volume.h"
 
 using namespace mtcs::thermal;
 
@@ -70,7 +70,7 @@ Reference patch_samples(const Vec3& shift = Vec3::Zero()) {
 
 struct Errors {
   double rms = 0, max = 0, mean = 0, std = 0;  // mean and std: differences of the statistics
-  double spearman = 0;                          // rank correlation with the reference
+  double spearman = 0;                         // rank correlation with the reference
 };
 
 // Ranks 1..n, ties at their mean rank.
@@ -126,7 +126,8 @@ double balance_error_to_faces(const FvResult& r) {
 const FvResult& block_solution(double cell) {
   static std::map<double, FvResult> solved;
   auto it = solved.find(cell);
-  if (it == solved.end()) it = solved.emplace(cell, solve_finite_volume(block_case(), patch_samples().samples, {cell})).first;
+  if (it == solved.end())
+    it = solved.emplace(cell, solve_finite_volume(block_case(), patch_samples().samples, {cell})).first;
   return it->second;
 }
 
@@ -138,6 +139,7 @@ TEST_CASE("finite volume: the reference block at 2 mm is near FreeFem's P2 solut
   const Errors e = compare(r.temperature, ref);
   INFO("rms " << e.rms << " max " << e.max << " dmean " << e.mean << " dstd " << e.std << " s " << r.seconds
               << " it " << r.iterations);
+  CHECK(r.converged);
   CHECK(r.heat_in == Approx(144.0).epsilon(1e-12));
   CHECK(balance_error(r) < 1e-6);
   CHECK(r.heat_to_channels == Approx(137.82).margin(0.3));
@@ -149,8 +151,8 @@ TEST_CASE("finite volume: the reference block at 1 mm meets the reference-tier b
   const Reference ref = patch_samples();
   const FvResult& r = block_solution(1.0);
   const Errors e = compare(r.temperature, ref);
-  INFO("rms " << e.rms << " max " << e.max << " dmean " << e.mean << " dstd " << e.std << " rho " << e.spearman
-              << " s " << r.seconds);
+  INFO("rms " << e.rms << " max " << e.max << " dmean " << e.mean << " dstd " << e.std << " rho "
+              << e.spearman << " s " << r.seconds);
   // The bars of shared/cases/thermal/README.md for a reference tier.
   CHECK(e.rms <= 0.1);
   CHECK(std::abs(e.mean) <= 0.1);
@@ -288,7 +290,8 @@ TEST_CASE("finite volume: stiff and extreme inputs stay finite and meet their li
     for (auto& ch : m.channels) ch.film = 1e9;
     const FvResult r = solve_finite_volume(m, ref.samples, options);
     REQUIRE(all_finite(r));
-    for (std::size_t i = 0; i < r.temperature.size(); ++i) CHECK(r.temperature[i] == Approx(base.temperature[i]).margin(1e-6));
+    for (std::size_t i = 0; i < r.temperature.size(); ++i)
+      CHECK(r.temperature[i] == Approx(base.temperature[i]).margin(1e-6));
   }
   SECTION("film -> 0 leaves an adiabatic block that only the faces cool") {
     Model m = block_case();
@@ -320,7 +323,8 @@ TEST_CASE("finite volume: stiff and extreme inputs stay finite and meet their li
     const Reference far = patch_samples(shift);
     const FvResult r = solve_finite_volume(block_case(shift), far.samples, options);
     REQUIRE(all_finite(r));
-    for (std::size_t i = 0; i < r.temperature.size(); ++i) CHECK(r.temperature[i] == Approx(base.temperature[i]).margin(1e-6));
+    for (std::size_t i = 0; i < r.temperature.size(); ++i)
+      CHECK(r.temperature[i] == Approx(base.temperature[i]).margin(1e-6));
     CHECK(r.heat_to_channels == Approx(base.heat_to_channels).epsilon(1e-9));
   }
 }
@@ -339,7 +343,8 @@ Model block_under_a_cavity(bool as_mesh) {
   }
   auto mesh = std::make_shared<mtcs::mesh::TriangleMesh>();
   for (int corner = 0; corner < 8; ++corner)
-    mesh->vertices.push_back(Vec3(corner & 1 ? cavity.max.x() : cavity.min.x(), corner & 2 ? cavity.max.y() : cavity.min.y(),
+    mesh->vertices.push_back(Vec3(corner & 1 ? cavity.max.x() : cavity.min.x(),
+                                  corner & 2 ? cavity.max.y() : cavity.min.y(),
                                   corner & 4 ? cavity.max.z() : cavity.min.z()));
   mesh->triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
                      {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
@@ -361,7 +366,8 @@ TEST_CASE("finite volume: heat through a cavity void's wall matches the same hea
     CHECK(wall.heat_in == Approx(144).epsilon(1e-12));
     CHECK(balance_error(wall) < 1e-6);
     double rms = 0;
-    for (std::size_t i = 0; i < ref.samples.size(); ++i) rms += std::pow(wall.temperature[i] - face.temperature[i], 2);
+    for (std::size_t i = 0; i < ref.samples.size(); ++i)
+      rms += std::pow(wall.temperature[i] - face.temperature[i], 2);
     rms = std::sqrt(rms / double(ref.samples.size()));
     INFO("mesh " << as_mesh << " rms difference " << rms);
     CHECK(rms < 0.05);
@@ -371,7 +377,8 @@ TEST_CASE("finite volume: heat through a cavity void's wall matches the same hea
 // The error-versus-cost table of experiments/thermal/fv.md: run by hand, it prints CSV.
 TEST_CASE("finite volume: error against run time on the reference block", "[.fv-table]") {
   const Reference ref = patch_samples();
-  std::cout << "cell_mm,steel_cells,seconds,solver_seconds,iterations,rms_K,max_K,dmean_K,dstd_K,spearman,heat_in_W,"
+  std::cout << "cell_mm,steel_cells,seconds,solver_seconds,iterations,rms_K,max_K,dmean_K,dstd_K,spearman,"
+               "heat_in_W,"
                "to_channels_W,to_faces_W,balance_rel\n";
   // MTCS_FV_PRECONDITIONER=jacobi compares the preconditioners; unset, the default (ic).
   const char* choice = std::getenv("MTCS_FV_PRECONDITIONER");
@@ -383,10 +390,10 @@ TEST_CASE("finite volume: error against run time on the reference block", "[.fv-
     if (preconditioner == "jacobi") options.preconditioner = FvPreconditioner::Jacobi;
     const FvResult r = solve_finite_volume(block_case(), ref.samples, options);
     const Errors e = compare(r.temperature, ref);
-    std::cout << cell << ',' << r.steel_cells << ',' << r.seconds << ',' << r.solver_seconds << ',' << r.iterations
-              << ',' << e.rms << ',' << e.max << ',' << e.mean << ',' << e.std << ',' << e.spearman << ','
-              << r.heat_in << ',' << r.heat_to_channels << ',' << r.heat_to_faces << ',' << balance_error(r)
-              << std::endl;
+    std::cout << cell << ',' << r.steel_cells << ',' << r.seconds << ',' << r.solver_seconds << ','
+              << r.iterations << ',' << e.rms << ',' << e.max << ',' << e.mean << ',' << e.std << ','
+              << e.spearman << ',' << r.heat_in << ',' << r.heat_to_channels << ',' << r.heat_to_faces << ','
+              << balance_error(r) << std::endl;
   }
 }
 
@@ -409,4 +416,13 @@ TEST_CASE("finite volume: models and options it cannot solve are rejected", "[fv
   m = block_case();
   m.setting.heat_in[0].flux = NAN;
   CHECK_THROWS_AS(solve_finite_volume(m, none, {4.0}), std::invalid_argument);
+}
+
+TEST_CASE("finite volume: a solve cut short says so", "[fv]") {
+  FvOptions options{4.0};
+  options.max_iterations = 3;
+  const FvResult r = solve_finite_volume(block_case(), {}, options);
+  CHECK_FALSE(r.converged);
+  CHECK(r.iterations == 3);
+  CHECK(r.residual > options.tolerance);
 }

@@ -32,8 +32,8 @@ namespace mtcs::thermal {
 enum class FvPreconditioner { IncompleteCholesky, Jacobi };
 
 struct FvOptions {
-  double cell = 2.0;            // mm, the target cell size
-  double tolerance = 1e-10;     // relative residual |r| / |b| of the conjugate gradient
+  double cell = 2.0;         // mm, the target cell size
+  double tolerance = 1e-10;  // relative residual |r| / |b| of the conjugate gradient
   int max_iterations = 20000;
   FvPreconditioner preconditioner = FvPreconditioner::IncompleteCholesky;
 };
@@ -80,13 +80,14 @@ class FvField {
 };
 
 struct FvResult {
-  std::vector<double> temperature;  // at the samples
-  double heat_in = 0;               // W, from heat_in (the part inside the block)
-  double heat_to_channels = 0;      // W, through the bore walls
-  double heat_to_faces = 0;         // W, convected from the outer faces
+  std::vector<double> temperature;      // at the samples
+  double heat_in = 0;                   // W, from heat_in (the part inside the block)
+  double heat_to_channels = 0;          // W, through the bore walls
+  double heat_to_faces = 0;             // W, convected from the outer faces
   std::vector<double> heat_to_channel;  // W, per channel
   int iterations = 0;
-  double residual = 0;  // relative, as the solver reports it
+  double residual = 0;        // relative, as the solver reports it
+  bool converged = false;     // the residual reached the tolerance within max_iterations
   double seconds = 0;         // wall time of the whole solve
   double solver_seconds = 0;  // of which the preconditioner and the iterations
   std::size_t steel_cells = 0;
