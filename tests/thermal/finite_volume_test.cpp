@@ -227,6 +227,76 @@ TEST_CASE("finite volume: the single-hole shape factor converges on refinement",
   CHECK(std::abs(fine - expected) < 0.7 * std::abs(coarse - expected));
 }
 
+namespace {
+
+// A row of holes at pitch w and depth z under the top face, bottom adiabatic at z + 3w, as the
+// half cell between a hole's mid-plane and the mid-pitch plane (both adiabatic by symmetry),
+// one cell thick along the holes. With `flux` the top takes q and the holes are at 0 degrees;
+// otherwise the top is isothermal at 0 (a very large film) and the holes at 1.
+FvResult row_of_holes(double diameter, double depth, double pitch, double cell, bool flux) {
+  const double top = depth + 3 * pitch, half = pitch / 2;
+  Model m;
+  m.setting.block = {Vec3(0, 0, 0), Vec3(cell, half, top)};
+  m.setting.conductivity = flux ? 0.03 : 1;
+  for (auto& f : m.setting.faces) f = {0, 0};
+  if (flux) {
+    const Vec3 a(0, 0, top), b(cell, 0, top), c(cell, half, top), d(0, half, top);
+    m.setting.heat_in = {{a, b, c, 0.05}, {a, c, d, 0.05}};
+  } else {
+    m.setting.faces[int(BlockFace::PosZ)] = {1e9, 0};
+  }
+  Channel hole;
+  hole.axis = {Vec3(-1, 0, top - depth), Vec3(cell + 1, 0, top - depth)};
+  hole.radius = diameter / 2;
+  hole.coolant = flux ? 0 : 1;
+  m.channels = {hole};
+  Samples ends;  // above the hole and at mid-pitch
+  ends.points = {Vec3(cell / 2, 0, top), Vec3(cell / 2, half, top)};
+  ends.weights = {1, 1};
+  return solve_finite_volume(m, ends, {cell, 1e-12});
+}
+
+}  // namespace
+
+TEST_CASE("finite volume: a row of holes matches FreeFem's periodic cells", "[fv]") {
+  // closed_form_2d.csv, the rows judged against FreeFem (the line-sink formulas are off there):
+  // the face's spread under a flux, and the shape factor per hole under an isothermal face.
+  struct Row {
+    const char* name;
+    double diameter, depth, pitch, fem;
+    bool flux;
+  };
+  const Row rows[] = {{"row_flux_b0", 10, 15, 30, 2.1311632, true},
+                      {"row_flux_b1", 8, 14, 40, 5.6348558, true},
+                      {"row_flux_b4", 10, 12, 20, 1.1117348, true},
+                      {"row_iso_b0", 10, 15, 30, 2.2156942, false},
+                      {"row_iso_b4", 10, 12, 20, 2.2574696, false}};
+  for (const Row& row : rows) {
+    const double cell = 0.5;
+    const FvResult r = row_of_holes(row.diameter, row.depth, row.pitch, cell, row.flux);
+    const double value = row.flux ? r.temperature[1] - r.temperature[0] : -2 * r.heat_to_channels / cell;
+    INFO(row.name << ": FV " << value << ", FreeFem " << row.fem);
+    CHECK(value == Approx(row.fem).epsilon(4e-3));
+  }
+}
+
+TEST_CASE("finite volume: the row-of-holes error falls as h^2", "[fv]") {
+  // row_flux_b4 and row_iso_b4 of closed_form_2d.csv (FreeFem P2, adapted) at 0.5 and 0.25 mm.
+  for (bool flux : {true, false}) {
+    const double fem = flux ? 1.1117348 : 2.2574696;
+    double error[2];
+    for (int level = 0; level < 2; ++level) {
+      const double cell = level == 0 ? 0.5 : 0.25;
+      const FvResult r = row_of_holes(10, 12, 20, cell, flux);
+      const double value = flux ? r.temperature[1] - r.temperature[0] : -2 * r.heat_to_channels / cell;
+      error[level] = std::abs(value - fem);
+    }
+    INFO((flux ? "spread" : "shape factor")
+         << ": error " << error[0] << " at 0.5 mm, " << error[1] << " at 0.25 mm");
+    CHECK(error[0] / error[1] > 3);  // observed order > 1.58
+  }
+}
+
 TEST_CASE("finite volume: a flat bore wall with a film is exact in one dimension", "[fv]") {
   // A bore of radius 1e6 mm: its wall crosses the block as the plane z = 3.3 (sagitta 5e-5 mm),
   // between grid planes. Adiabatic sides, the flux q on the top face: the temperature is linear,
