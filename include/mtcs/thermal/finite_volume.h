@@ -6,8 +6,10 @@
 // - n = round(L / cell) cells per axis, so the grid covers the block exactly (the spacing may
 //   differ slightly per axis). A cell is steel unless its centre lies in a channel or the cavity.
 // - A link from a steel cell's centre that enters a bore (towards a neighbour, or towards the
-//   block face) is cut at the exact distance to the bore wall along the grid line: Dirichlet
-//   there, or the film as a series resistance (symmetric cut-cell scheme, second order in T).
+//   block face) is cut at the exact distance d to the bore wall along the grid line: Dirichlet
+//   there (conductance k A / d), or the film in series (A / (d / k + 1 / (film |n.e|)), n the
+//   wall's normal, e the link's direction). The symmetric scheme of Gibou, Fedkiw, Cheng and
+//   Kang (J. Comput. Phys. 176, 2002): first order locally, second order in T (measured).
 // - Outer faces: film to ambient with the half-cell resistance in series; a face cell carries
 //   the heat of the heat_in triangles that overlap it (exact area overlap), and only its
 //   uncovered part convects (the covered part touches the melt, not the air).
@@ -94,8 +96,10 @@ struct FvResult {
   FvField field;
 };
 
-// Throws std::invalid_argument when the model or the options cannot be solved (empty block,
-// non-positive cell or conductivity, no steel cell).
+// Throws std::invalid_argument when the model or the options cannot be solved: an empty block,
+// a non-positive cell, conductivity, bore radius or bore film, a negative face film, non-finite
+// input, no steel cell, heat_in with no steel near. A solve cut short by max_iterations returns
+// with converged = false.
 FvResult solve_finite_volume(const Model& model, const Samples& samples, const FvOptions& options = {});
 
 }  // namespace mtcs::thermal
