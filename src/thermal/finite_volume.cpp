@@ -1,0 +1,236 @@
+#include "mtcs/thermal/finite_volume.h"
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCore>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "fv_grid.h"
+#include "fv_heat_input.h"
+
+namespace mtcs::thermal {
+
+using fv::Cut;
+using fv::face_plane_axes;
+using fv::kSteel;
+using fv::kVoid;
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// A conductance from a steel cell to a fixed temperature (a bore wall or the air), for the
+// heat balance.
+struct Sink {
+  int row;
+  double conductance;  // W/K
+  double temperature;
+  int channel;  // -1 for an outer face
+};
+
+template <class Preconditioner>
+Eigen::VectorXd conjugate_gradient(const Eigen::SparseMatrix<double>& matrix, const Eigen::VectorXd& rhs,
+                                   const Eigen::VectorXd& guess, const FvOptions& options, FvResult& result) {
+  const auto start = std::chrono::steady_clock::now();
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper, Preconditioner> solver;
+  solver.setTolerance(options.tolerance);
+  solver.setMaxIterations(options.max_iterations);
+  solver.compute(matrix);
+  if (solver.info() != Eigen::Success) throw std::runtime_error("finite volume: the preconditioner failed");
+  Eigen::VectorXd x = solver.solveWithGuess(rhs, guess);
+  result.iterations = int(solver.iterations());
+  result.residual = solver.error();
+  result.converged = solver.info() == Eigen::Success;
+  result.solver_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return x;
+}
+
+// The heat each steel cell takes from the cavity over the area of its faces to it (W/mm^2),
+// for extrapolating samples to the cavity wall.
+void record_wall_flux(const fv::Grid& grid, const std::vector<double>& source, FvField& field) {
+  for (int kk = 0; kk < field.cells[2]; ++kk)
+    for (int j = 0; j < field.cells[1]; ++j)
+      for (int i = 0; i < field.cells[0]; ++i) {
+        const std::size_t cell = field.index(i, j, kk);
+        if (source[cell] == 0) continue;
+        double open = 0;  // area of the faces to the cavity
+        for (int dir = 0; dir < 6; ++dir) {
+          std::array<int, 3> nb{i, j, kk};
+          nb[dir / 2] += dir % 2 ? 1 : -1;
+          if (grid.inside(nb[0], nb[1], nb[2]) && grid.kind(nb[0], nb[1], nb[2]) == kVoid)
+            open += field.spacing[(dir / 2 + 1) % 3] * field.spacing[(dir / 2 + 2) % 3];
+        }
+        if (open > 0) field.wall_flux[cell] = source[cell] / open;
+      }
+}
+
+// The linear system: one row per steel cell; the conductances to the bore walls and the air
+// are kept for the heat balance.
+struct System {
+  std::vector<int> row;  // per cell, -1 when not steel
+  Eigen::SparseMatrix<double> matrix;
+  Eigen::VectorXd rhs;
+  std::vector<Sink> sinks;
+};
+
+System assemble(const Model& model, const fv::Grid& grid, const FvField& field,
+                const std::vector<double>& source) {
+  const Setting& setting = model.setting;
+  const double k = setting.conductivity;
+  const std::size_t n_cells = source.size();
+  System system;
+  std::vector<int>& row = system.row;
+  Eigen::VectorXd& rhs = system.rhs;
+  std::vector<Sink>& sinks = system.sinks;
+  row.assign(n_cells, -1);
+  // Number the steel cells.
+  int n = 0;
+  for (int kk = 0; kk < field.cells[2]; ++kk)
+    for (int j = 0; j < field.cells[1]; ++j)
+      for (int i = 0; i < field.cells[0]; ++i)
+        if (grid.kind(i, j, kk) == kSteel) row[field.index(i, j, kk)] = n++;
+  if (n == 0) throw std::invalid_argument("finite volume: no steel cell (the cell size is too coarse?)");
+
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(std::size_t(n) * 7);
+  rhs = Eigen::VectorXd::Zero(n);
+  for (int kk = 0; kk < field.cells[2]; ++kk)
+    for (int j = 0; j < field.cells[1]; ++j)
+      for (int i = 0; i < field.cells[0]; ++i) {
+        const std::size_t cell = field.index(i, j, kk);
+        const int r = row[cell];
+        if (r < 0) continue;
+        const std::array<int, 3> ijk{i, j, kk};
+        double diagonal = 0;
+        rhs[r] += source[cell];
+        for (int dir = 0; dir < 6; ++dir) {
+          const int a = dir / 2, step = dir % 2 ? 1 : -1;
+          const double area = field.spacing[(a + 1) % 3] * field.spacing[(a + 2) % 3];
+          const double h = field.spacing[a];
+          std::array<int, 3> nb = ijk;
+          nb[a] += step;
+          const bool boundary = !grid.inside(nb[0], nb[1], nb[2]);
+          const Cut* cut = grid.cut(cell, dir);
+          Cut fallback{};
+          if (!cut && !boundary &&
+              grid.kind(nb[0], nb[1], nb[2]) >= 0) {  // rounding: the centre is in, no entry found
+            fallback = Cut{h, 1.0, grid.kind(nb[0], nb[1], nb[2])};
+            cut = &fallback;
+          }
+          if (boundary) {  // the heat entering there, even where a bore cuts the link
+            const auto [ab, ac] = face_plane_axes(dir);
+            rhs[r] += field.face_heat[std::size_t(dir)][std::size_t(ijk[ab]) +
+                                                        std::size_t(field.cells[ab]) * std::size_t(ijk[ac])];
+          }
+          if (cut) {
+            const Channel& ch = model.channels[std::size_t(cut->channel)];
+            // Conduction to the wall in series with the film; a tiny distance is floored so the
+            // row stays finite (the cell then sits at the wall's temperature).
+            const double distance = std::max(cut->t, 1e-9 * h);
+            const double film = std::isinf(ch.film) ? 0.0
+                                : cut->cosine > 0   ? 1 / (ch.film * cut->cosine)
+                                                    : -1;
+            const double g = film < 0 ? 0.0 : area / (distance / k + film);
+            diagonal += g;
+            rhs[r] += g * ch.coolant;
+            sinks.push_back({r, g, ch.coolant, cut->channel});
+          } else if (boundary) {
+            const auto [ab, ac] = face_plane_axes(dir);
+            const std::size_t f = std::size_t(ijk[ab]) + std::size_t(field.cells[ab]) * std::size_t(ijk[ac]);
+            const FaceCondition& fc = setting.faces[std::size_t(dir)];
+            const double open = std::max(0.0, area - field.face_covered[std::size_t(dir)][f]);
+            const double g = fc.film > 0 ? open / (0.5 * h / k + 1 / fc.film) : 0.0;
+            diagonal += g;
+            rhs[r] += g * fc.ambient;
+            if (g > 0) sinks.push_back({r, g, fc.ambient, -1});
+          } else if (grid.kind(nb[0], nb[1], nb[2]) == kSteel) {
+            const double g = k * area / h;
+            diagonal += g;
+            entries.emplace_back(r, row[field.index(nb[0], nb[1], nb[2])], -g);
+          }  // a void neighbour: adiabatic
+        }
+        entries.emplace_back(r, r, diagonal);
+      }
+  system.matrix.resize(n, n);
+  system.matrix.setFromTriplets(entries.begin(), entries.end());
+  return system;
+}
+
+}  // namespace
+
+FvResult solve_finite_volume(const Model& model, const Samples& samples, const FvOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  FvResult result;
+  FvField& field = result.field;
+  const Setting& setting = model.setting;
+  const double k = setting.conductivity;
+  const fv::Grid grid(model, options, field);
+  field.conductivity = k;
+  field.faces = setting.faces;
+  for (int face = 0; face < 6; ++face) {
+    if (!(setting.faces[std::size_t(face)].film >= 0) ||
+        !std::isfinite(setting.faces[std::size_t(face)].film) ||
+        !std::isfinite(setting.faces[std::size_t(face)].ambient))
+      throw std::invalid_argument("finite volume: face films must be finite and >= 0");
+    const auto [ab, ac] = face_plane_axes(face);
+    field.face_heat[std::size_t(face)].assign(std::size_t(field.cells[ab]) * std::size_t(field.cells[ac]),
+                                              0.0);
+    field.face_covered[std::size_t(face)] = field.face_heat[std::size_t(face)];
+  }
+
+  const std::size_t n_cells = std::size_t(field.cells[0]) * field.cells[1] * field.cells[2];
+  std::vector<double> source(n_cells, 0.0);
+  const fv::HeatInput heat(model, grid, field, source);
+  record_wall_flux(grid, source, field);
+  System system = assemble(model, grid, field, source);
+  const std::vector<int>& row = system.row;
+  const int n = int(system.rhs.size());
+
+  // Start from the conductance-weighted mean of the fixed temperatures: the field is near them.
+  double guess = 0, weight = 0;
+  for (const Sink& s : system.sinks) guess += s.conductance * s.temperature, weight += s.conductance;
+  const Eigen::VectorXd x0 = Eigen::VectorXd::Constant(n, weight > 0 ? guess / weight : 0.0);
+  Eigen::VectorXd x;
+  if (options.preconditioner == FvPreconditioner::IncompleteCholesky)
+    x = conjugate_gradient<Eigen::IncompleteCholesky<double, Eigen::Lower, Eigen::NaturalOrdering<int>>>(
+        system.matrix, system.rhs, x0, options, result);
+  else
+    x = conjugate_gradient<Eigen::DiagonalPreconditioner<double>>(system.matrix, system.rhs, x0, options,
+                                                                  result);
+  result.steel_cells = std::size_t(n);
+
+  field.kind.resize(n_cells);
+  field.temperature.assign(n_cells, kNaN);
+  for (int kk = 0; kk < field.cells[2]; ++kk)
+    for (int j = 0; j < field.cells[1]; ++j)
+      for (int i = 0; i < field.cells[0]; ++i) {
+        const std::size_t cell = field.index(i, j, kk);
+        const int kind = grid.kind(i, j, kk);
+        field.kind[cell] = kind;
+        if (kind == kSteel)
+          field.temperature[cell] = x[row[cell]];
+        else if (kind >= 0)
+          field.temperature[cell] = model.channels[std::size_t(kind)].coolant;
+      }
+
+  result.heat_in = heat.total();
+  result.heat_to_channel.assign(model.channels.size(), 0.0);
+  for (const Sink& s : system.sinks) {
+    const double q = s.conductance * (x[s.row] - s.temperature);
+    if (s.channel >= 0)
+      result.heat_to_channel[std::size_t(s.channel)] += q;
+    else
+      result.heat_to_faces += q;
+  }
+  for (double q : result.heat_to_channel) result.heat_to_channels += q;
+
+  result.temperature.reserve(samples.size());
+  for (const Vec3& p : samples.points) result.temperature.push_back(field.temperature_at(p));
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace mtcs::thermal
