@@ -1,0 +1,610 @@
+#include "mtcs/thermal/line_sinks.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "line_sink_fields.h"
+#include "segment_potential.h"
+
+namespace mtcs::thermal {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The six faces of a box as rectangles (two triangles each), in BlockFace order.
+std::array<std::array<Vec3, 4>, 6> face_corners(const Box& b) {
+  const Vec3& lo = b.min;
+  const Vec3& hi = b.max;
+  std::array<std::array<Vec3, 4>, 6> out;
+  for (int a = 0; a < 3; ++a) {
+    const int u = (a + 1) % 3, v = (a + 2) % 3;
+    for (int side = 0; side < 2; ++side) {
+      Vec3 c = lo;
+      c[a] = side ? hi[a] : lo[a];
+      std::array<Vec3, 4> r{c, c, c, c};
+      r[1][u] = hi[u];
+      r[2][u] = hi[u];
+      r[2][v] = hi[v];
+      r[3][v] = hi[v];
+      out[2 * a + side] = r;
+    }
+  }
+  return out;
+}
+
+bool on_plane(const Vec3& p, int axis, double value, double tol) {
+  return std::abs(p[axis] - value) <= tol;
+}
+
+// Point in a triangle lying in the plane of a face (2-D test on the face's other axes).
+bool in_triangle(const Vec3& p, const HeatedTriangle& t, int axis) {
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  auto cross = [&](const Vec3& a, const Vec3& b, const Vec3& q) {
+    return (b[u] - a[u]) * (q[v] - a[v]) - (b[v] - a[v]) * (q[u] - a[u]);
+  };
+  const double c0 = cross(t.a, t.b, p), c1 = cross(t.b, t.c, p), c2 = cross(t.c, t.a, p);
+  return (c0 >= 0 && c1 >= 0 && c2 >= 0) || (c0 <= 0 && c1 <= 0 && c2 <= 0);
+}
+
+}  // namespace
+
+// ---- cache blocks ----------------------------------------------------------------------------
+
+struct LineSinkCache::ChannelBlock {
+  ChannelAxis axis;
+  int cols = 0;
+  std::vector<float> sample_cols_f;   // samples x cols, column-major (single precision)
+  std::vector<double> sample_cols_d;  // the same in double precision
+  MatrixXd face_means;                // convective faces x cols
+  MatrixXd self;                      // rows x cols: own columns at own rows (V_self removed)
+  std::vector<double> self_dipole;    // per row: the own element's dipole at its own wall
+  VectorXd heat_rows;                 // heat input's field at the rows
+  MatrixXd face_rows;                 // rows x convective faces
+  MatrixXd far_rows;                  // rows x 4: the far lattice's kernel (see Impl::far_kernel)
+  MatrixXd moments;                   // 4 x cols: each column's charge and first moment
+};
+
+struct LineSinkCache::PairBlock {
+  MatrixXd block;  // rows of the first channel x columns of the second
+};
+
+void LineSinkCache::clear() {
+  channels_.clear();
+  pairs_.clear();
+}
+
+// ---- the model -------------------------------------------------------------------------------
+
+struct ConvectiveFace {
+  int face = 0;
+  double film = 0, ambient = 0;
+  double area = 0, convective_area = 0;
+  std::array<Vec3, 4> corners;
+  std::vector<Vec3> cool;           // the grid points off the heated triangles
+  Vec3 center;
+  std::vector<WeightedPoint> grid;  // the same, image-expanded, weights / their number
+};
+
+// The convective faces' unit-loss fields on a regular grid over the block, interpolated
+// tricubically: they are smooth inside the block (the images continue each face's sheet across
+// the edges), small next to the heat input, and needed at every collocation point.
+struct FaceFieldGrid {
+  Vec3 origin, step;
+  std::array<int, 3> nodes{};
+  int fields = 0;
+  std::vector<double> values;  // per node (x fastest), `fields` values
+
+  void interpolate(const Vec3& p, double* out) const {
+    std::array<int, 3> i0;
+    std::array<std::array<double, 4>, 3> w;
+    for (int a = 0; a < 3; ++a) {
+      const double u = (p[a] - origin[a]) / step[a];
+      i0[a] = std::clamp(int(std::floor(u)) - 1, 0, nodes[a] - 4);
+      const double t = u - i0[a];  // stencil nodes at 0, 1, 2, 3
+      w[a] = {-(t - 1) * (t - 2) * (t - 3) / 6, t * (t - 2) * (t - 3) / 2,
+              -t * (t - 1) * (t - 3) / 2, t * (t - 1) * (t - 2) / 6};
+    }
+    std::fill(out, out + fields, 0.0);
+    for (int k = 0; k < 4; ++k)
+      for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+          const double wt = w[0][i] * w[1][j] * w[2][k];
+          const double* v = &values[((std::size_t(i0[2] + k) * nodes[1] + (i0[1] + j)) * nodes[0] + (i0[0] + i)) * fields];
+          for (int f = 0; f < fields; ++f) out[f] += wt * v[f];
+        }
+  }
+};
+
+struct LineSinkModel::Impl {
+  Setting setting;
+  LineSinkOptions options;
+  int kinds = 1;  // columns per element: 1 (sink) or 3 (sink, two dipoles)
+  double inv4pik = 0;
+  double tol = 0;
+  std::vector<Image> images;      // summed exactly
+  std::vector<Image> far_images;  // summed as the charge and dipole of the whole block's image
+  Vec3 center = Vec3::Zero();     // the block's centre: where the moments are taken
+  Eigen::Vector4d heat_moments = Eigen::Vector4d::Zero();
+  std::vector<Eigen::Vector4d> face_moments;
+  MatrixXd far_samples;                      // samples x 4
+  MatrixXd far_face_means;                   // faces x 4
+  FaceFieldGrid face_grid;
+  std::vector<ConvectiveFace> faces;
+  std::optional<double> fixed_constant;  // an isothermal face's ambient
+  double heat_in = 0;
+  std::size_t n_samples = 0;
+  std::vector<WeightedPoint> sample_points;  // image-expanded
+  std::vector<std::size_t> sample_begin;     // CSR into sample_points
+  VectorXd heat_samples;                     // heat input's field at the samples
+  MatrixXd face_samples;                     // samples x faces: unit face loss
+  VectorXd heat_face_means;                  // per face: heat input's field, face mean
+  MatrixXd face_face_means;                  // faces x faces
+
+  double heat_field(const Vec3& p) const {
+    double sum = 0;
+    for (const HeatedTriangle& t : setting.heat_in)
+      sum += t.flux * triangle_image_potential(images, t.a, t.b, t.c, p);
+    return sum * inv4pik;
+  }
+  // Field of a unit uniform loss (W/mm^2 out of the steel) over a face.
+  double face_field(const ConvectiveFace& f, const Vec3& p) const {
+    const auto& c = f.corners;
+    return -inv4pik * (triangle_image_potential(images, c[0], c[1], c[2], p) +
+                       triangle_image_potential(images, c[0], c[2], c[3], p));
+  }
+  template <class Field>
+  double mean_over(const std::vector<WeightedPoint>& pts, Field&& field) const {
+    double sum = 0;
+    for (const WeightedPoint& w : pts) sum += w.weight * field(w.point);
+    return sum;
+  }
+
+  // Adds w * (columns of `axis` at p) to col[0 .. elements * kinds).
+  void add_columns(const ChannelAxis& axis, const Vec3& p, double w, double* col) const {
+    double phi[64], d1[64], d2[64];
+    const int m = axis.elements;
+    element_fields(axis, p, phi, kinds == 3 ? d1 : nullptr, d2);
+    const double s = w * inv4pik;
+    for (int e = 0; e < m; ++e) {
+      col[e * kinds] -= s * phi[e];  // a sink: q' W/mm leaves the steel
+      if (kinds == 3) {
+        col[e * kinds + 1] += s * d1[e];
+        col[e * kinds + 2] += s * d2[e];
+      }
+    }
+  }
+
+  // The far images of the block, each seen as a point charge and dipole at its centre:
+  // (sum sigma / d, sum sigma L_g (s - g(c)) / d^3) / (4 pi k), d = |s - g(c)|. Dotted with the
+  // charge and first moment (about c) of everything in the block, it is the far lattice's field.
+  Eigen::Vector4d far_kernel(const Vec3& s) const {
+    Eigen::Vector4d k = Eigen::Vector4d::Zero();
+    for (const Image& g : far_images) {
+      const Vec3 d = s - (g.mult.cwiseProduct(center) + g.offset);
+      const double r2 = d.squaredNorm();
+      const double inv = 1 / std::sqrt(r2);
+      k[0] += g.sign * inv;
+      k.tail<3>() += (g.sign * inv / r2) * g.mult.cwiseProduct(d);
+    }
+    return k * inv4pik;
+  }
+
+  // The wall points of element e: m +- R n1, m +- R n2.
+  std::array<Vec3, 4> wall_points(const ChannelAxis& a, int e) const {
+    const Vec3 m = a.p0 + ((e + 0.5) * a.element_length) * a.u;
+    return {m + a.radius * a.n1, m - a.radius * a.n1, m + a.radius * a.n2, m - a.radius * a.n2};
+  }
+
+  // The rows' functionals of any field f (images included by f): per element the wall's
+  // four-point mean and, for T2d, the half-differences along n1 and n2 (first harmonic).
+  template <class Field>
+  void row_functionals(const ChannelAxis& rows, Field&& f, int width, double* out, int stride) const {
+    std::vector<double> v(4 * width);
+    for (int e = 0; e < rows.elements; ++e) {
+      const auto w = wall_points(rows, e);
+      for (int i = 0; i < 4; ++i) f(w[i], &v[i * width]);
+      for (int c = 0; c < width; ++c) {
+        const double* x = &v[c];
+        out[(e * kinds) + c * stride] = 0.25 * (x[0] + x[width] + x[2 * width] + x[3 * width]);
+        if (kinds == 3) {
+          out[(e * kinds + 1) + c * stride] = 0.5 * (x[0] - x[width]);
+          out[(e * kinds + 2) + c * stride] = 0.5 * (x[2 * width] - x[3 * width]);
+        }
+      }
+    }
+  }
+
+  // Columns of `source` at the rows of `rows`, all images: a rows x cols matrix.
+  MatrixXd channel_at_rows(const ChannelAxis& rows, const ChannelAxis& source) const {
+    const int cols = source.elements * kinds;
+    MatrixXd out(rows.elements * kinds, cols);
+    std::vector<WeightedPoint> pts;
+    row_functionals(
+        rows,
+        [&](const Vec3& p, double* v) {
+          std::fill(v, v + cols, 0.0);
+          pts.clear();
+          append_image_points(images, p, tol, pts);
+          for (const WeightedPoint& w : pts) add_columns(source, w.point, w.weight, v);
+        },
+        cols, out.data(), int(out.rows()));
+    return out;
+  }
+
+  std::shared_ptr<LineSinkCache::ChannelBlock> build_channel(const Channel& ch) const {
+    auto b = std::make_shared<LineSinkCache::ChannelBlock>();
+    b->axis = channel_axis(ch, options.elements);
+    const ChannelAxis& a = b->axis;
+    const int cols = a.elements * kinds;
+    b->cols = cols;
+    // At the samples.
+    std::vector<double> col(cols);
+    if (options.single_precision) b->sample_cols_f.resize(n_samples * cols);
+    else b->sample_cols_d.resize(n_samples * cols);
+    for (std::size_t s = 0; s < n_samples; ++s) {
+      std::fill(col.begin(), col.end(), 0.0);
+      for (std::size_t i = sample_begin[s]; i < sample_begin[s + 1]; ++i)
+        add_columns(a, sample_points[i].point, sample_points[i].weight, col.data());
+      for (int c = 0; c < cols; ++c) {
+        if (options.single_precision) b->sample_cols_f[c * n_samples + s] = float(col[c]);
+        else b->sample_cols_d[c * n_samples + s] = col[c];
+      }
+    }
+    // At the convective faces' grids (means).
+    b->face_means = MatrixXd::Zero(faces.size(), cols);
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      std::fill(col.begin(), col.end(), 0.0);
+      for (const WeightedPoint& w : faces[f].grid) add_columns(a, w.point, w.weight, col.data());
+      for (int c = 0; c < cols; ++c) b->face_means(f, c) = col[c];
+    }
+    // Own rows: the own columns, the heat input and the face losses.
+    b->self = channel_at_rows(a, a);
+    b->self_dipole.assign(cols, 0.0);
+    if (kinds == 3)
+      for (int e = 0; e < a.elements; ++e)
+        for (int j = 1; j <= 2; ++j) {
+          const int r = e * 3 + j;
+          b->self_dipole[r] = b->self(r, r);
+          b->self(r, r) = 0;  // V_self: kept apart, the film condition weighs it differently
+        }
+    b->heat_rows.resize(cols);
+    row_functionals(a, [&](const Vec3& p, double* v) { v[0] = heat_field(p); }, 1,
+                    b->heat_rows.data(), cols);
+    b->far_rows.resize(cols, 4);
+    row_functionals(a, [&](const Vec3& p, double* v) {
+      const Eigen::Vector4d k = far_kernel(p);
+      for (int i = 0; i < 4; ++i) v[i] = k[i];
+    }, 4, b->far_rows.data(), cols);
+    b->moments = MatrixXd::Zero(4, cols);
+    for (int e = 0; e < a.elements; ++e) {
+      const Vec3 mid = a.p0 + ((e + 0.5) * a.element_length) * a.u;
+      const double L = a.element_length;
+      b->moments(0, e * kinds) = -L;  // a sink: charge -L per unit strength
+      b->moments.block<3, 1>(1, e * kinds) = -L * (mid - center);
+      if (kinds == 3) {
+        b->moments.block<3, 1>(1, e * kinds + 1) = L * a.n1;
+        b->moments.block<3, 1>(1, e * kinds + 2) = L * a.n2;
+      }
+    }
+    b->face_rows.resize(cols, faces.size());
+    if (!faces.empty())
+      row_functionals(a, [&](const Vec3& p, double* v) { face_grid.interpolate(p, v); },
+                      int(faces.size()), b->face_rows.data(), cols);
+    return b;
+  }
+};
+
+LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, LineSinkOptions options)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  if (options.elements < 1 || options.elements > 64)
+    throw std::invalid_argument("line sinks: elements per channel must be in 1..64");
+  if (options.images < 0) throw std::invalid_argument("line sinks: images must be >= 0");
+  if (!(setting.conductivity > 0)) throw std::invalid_argument("line sinks: conductivity must be > 0");
+  m.setting = setting;
+  m.options = options;
+  m.kinds = options.tier == Tier::T2d ? 3 : 1;
+  m.inv4pik = 1 / (4 * std::numbers::pi * setting.conductivity);
+  const Box& box = setting.block;
+  m.tol = 1e-12 * (box.max.cwiseAbs().maxCoeff() + box.min.cwiseAbs().maxCoeff() + box.size().maxCoeff());
+
+  std::array<double, 6> sign{};
+  for (int f = 0; f < 6; ++f) {
+    const FaceCondition& fc = setting.faces[f];
+    sign[f] = fc.film == kInf ? -1 : 1;
+    if (fc.film == kInf) {
+      if (m.fixed_constant && *m.fixed_constant != fc.ambient)
+        throw std::invalid_argument("line sinks: isothermal faces must share one ambient");
+      m.fixed_constant = fc.ambient;
+    }
+  }
+  m.images = block_images(box, sign, options.images);
+  if (options.far_images > options.images) {
+    m.far_images = block_images(box, sign, options.far_images);
+    m.far_images.erase(m.far_images.begin(), m.far_images.begin() + m.images.size());
+  }
+  m.center = 0.5 * (box.min + box.max);
+
+  for (const HeatedTriangle& t : setting.heat_in) {
+    const double q = t.flux * 0.5 * (t.b - t.a).cross(t.c - t.a).norm();
+    m.heat_in += q;
+    m.heat_moments[0] += q;
+    m.heat_moments.tail<3>() += q * ((t.a + t.b + t.c) / 3 - m.center);
+  }
+
+  // Convective faces: one unknown uniform loss each, collocated on a grid of the face's part
+  // that is not heated.
+  const auto corners = face_corners(box);
+  const int g = std::max(1, options.face_grid);
+  for (int f = 0; f < 6; ++f) {
+    const FaceCondition& fc = setting.faces[f];
+    if (!(fc.film > 0) || fc.film == kInf) continue;
+    ConvectiveFace cf;
+    cf.face = f;
+    cf.film = fc.film;
+    cf.ambient = fc.ambient;
+    cf.corners = corners[f];
+    const int axis = f / 2;
+    const double plane = (f % 2) ? box.max[axis] : box.min[axis];
+    cf.area = (corners[f][1] - corners[f][0]).norm() * (corners[f][3] - corners[f][0]).norm();
+    cf.convective_area = cf.area;
+    std::vector<const HeatedTriangle*> on_face;
+    for (const HeatedTriangle& t : setting.heat_in)
+      if (on_plane(t.a, axis, plane, m.tol) && on_plane(t.b, axis, plane, m.tol) && on_plane(t.c, axis, plane, m.tol)) {
+        on_face.push_back(&t);
+        cf.convective_area -= 0.5 * (t.b - t.a).cross(t.c - t.a).norm();
+      }
+    if (cf.convective_area <= 1e-9 * cf.area) continue;
+    std::vector<Vec3> grid, cool;
+    for (int i = 0; i < g; ++i)
+      for (int j = 0; j < g; ++j) {
+        const Vec3 p = corners[f][0] + ((i + 0.5) / g) * (corners[f][1] - corners[f][0]) +
+                       ((j + 0.5) / g) * (corners[f][3] - corners[f][0]);
+        grid.push_back(p);
+        bool heated = false;
+        for (const HeatedTriangle* t : on_face) heated = heated || in_triangle(p, *t, axis);
+        if (!heated) cool.push_back(p);
+      }
+    if (cool.empty()) cool = grid;
+    cf.cool = cool;
+    cf.center = 0.5 * (corners[f][0] + corners[f][2]);
+    for (const Vec3& p : cool) {
+      const std::size_t first = cf.grid.size();
+      append_image_points(m.images, p, m.tol, cf.grid);
+      for (std::size_t i = first; i < cf.grid.size(); ++i) cf.grid[i].weight /= double(cool.size());
+    }
+    m.faces.push_back(std::move(cf));
+  }
+
+  // The samples: expanded by the images, and the layout-independent fields there.
+  m.n_samples = samples.size();
+  m.sample_begin.push_back(0);
+  for (const Vec3& p : samples.points) {
+    append_image_points(m.images, p, m.tol, m.sample_points);
+    m.sample_begin.push_back(m.sample_points.size());
+  }
+  const std::size_t nf = m.faces.size();
+  for (const ConvectiveFace& cf : m.faces) {
+    Eigen::Vector4d mo;
+    mo << -cf.area, -cf.area * (cf.center - m.center);
+    m.face_moments.push_back(mo);
+  }
+  m.far_samples.resize(m.n_samples, 4);
+  for (std::size_t s = 0; s < m.n_samples; ++s) m.far_samples.row(s) = m.far_kernel(samples.points[s]).transpose();
+  m.far_face_means = MatrixXd::Zero(nf, 4);
+  for (std::size_t f = 0; f < nf; ++f) {
+    for (const Vec3& p : m.faces[f].cool) m.far_face_means.row(f) += m.far_kernel(p).transpose();
+    m.far_face_means.row(f) /= double(m.faces[f].cool.size());
+  }
+  if (nf) {
+    FaceFieldGrid& g = m.face_grid;
+    constexpr int cells = 10;
+    g.origin = box.min;
+    g.step = box.size() / cells;
+    g.nodes = {cells + 1, cells + 1, cells + 1};
+    g.fields = int(nf);
+    g.values.resize(std::size_t(cells + 1) * (cells + 1) * (cells + 1) * nf);
+    std::size_t n = 0;
+    for (int k = 0; k <= cells; ++k)
+      for (int j = 0; j <= cells; ++j)
+        for (int i = 0; i <= cells; ++i) {
+          const Vec3 p = box.min + g.step.cwiseProduct(Vec3(i, j, k));
+          for (std::size_t f = 0; f < nf; ++f) g.values[n++] = m.face_field(m.faces[f], p);
+        }
+  }
+  m.heat_samples.resize(m.n_samples);
+  m.face_samples.resize(m.n_samples, nf);
+  for (std::size_t s = 0; s < m.n_samples; ++s) {
+    m.heat_samples[s] = m.heat_field(samples.points[s]);
+    for (std::size_t f = 0; f < nf; ++f) m.face_samples(s, f) = m.face_field(m.faces[f], samples.points[s]);
+  }
+  m.heat_face_means.resize(nf);
+  m.face_face_means.resize(nf, nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const std::vector<Vec3>& plain = m.faces[f].cool;
+    double h = 0;
+    for (const Vec3& p : plain) h += m.heat_field(p);
+    m.heat_face_means[f] = h / double(plain.size());
+    for (std::size_t f2 = 0; f2 < nf; ++f2) {
+      double s = 0;
+      for (const Vec3& p : plain) s += m.face_field(m.faces[f2], p);
+      m.face_face_means(f, f2) = s / double(plain.size());
+    }
+  }
+}
+
+LineSinkModel::~LineSinkModel() = default;
+LineSinkModel::LineSinkModel(LineSinkModel&&) noexcept = default;
+const LineSinkOptions& LineSinkModel::options() const { return impl_->options; }
+
+LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSinkCache& cache) const {
+  const Impl& m = *impl_;
+  if (cache.owner_ != impl_.get()) {
+    cache.clear();
+    cache.owner_ = impl_.get();
+  }
+  const std::size_t nc = channels.size();
+  if (nc == 0 && !m.fixed_constant)
+    throw std::invalid_argument("line sinks: no channel and no isothermal face: no steady state");
+  // Look up or build every channel's and pair's blocks.
+  using Key = LineSinkCache::Key;
+  std::vector<Key> keys(nc);
+  std::vector<std::shared_ptr<LineSinkCache::ChannelBlock>> blocks(nc);
+  std::map<Key, std::shared_ptr<LineSinkCache::ChannelBlock>> used;
+  for (std::size_t c = 0; c < nc; ++c) {
+    const Channel& ch = channels[c];
+    if (!((ch.axis.p1 - ch.axis.p0).norm() > 0) || !(ch.radius > 0))
+      throw std::invalid_argument("line sinks: a channel needs a positive length and radius");
+    keys[c] = {ch.axis.p0.x(), ch.axis.p0.y(), ch.axis.p0.z(), ch.axis.p1.x(), ch.axis.p1.y(),
+               ch.axis.p1.z(), ch.radius};
+    auto it = cache.channels_.find(keys[c]);
+    if (it != cache.channels_.end()) {
+      blocks[c] = it->second;
+      ++cache.channels_reused;
+    } else {
+      blocks[c] = m.build_channel(ch);
+      ++cache.channels_computed;
+    }
+    used[keys[c]] = blocks[c];
+  }
+  std::map<std::pair<Key, Key>, std::shared_ptr<LineSinkCache::PairBlock>> used_pairs;
+  auto pair = [&](std::size_t r, std::size_t c) -> const MatrixXd& {
+    const auto k = std::make_pair(keys[r], keys[c]);
+    auto found = used_pairs.find(k);
+    if (found != used_pairs.end()) return found->second->block;
+    auto it = cache.pairs_.find(k);
+    std::shared_ptr<LineSinkCache::PairBlock> p;
+    if (it != cache.pairs_.end()) {
+      p = it->second;
+    } else {
+      p = std::make_shared<LineSinkCache::PairBlock>();
+      p->block = m.channel_at_rows(blocks[r]->axis, blocks[c]->axis);
+    }
+    used_pairs[k] = p;
+    return p->block;
+  };
+
+  // Unknowns: the channels' columns, the faces' losses, the free constant.
+  std::vector<int> offset(nc + 1, 0);
+  for (std::size_t c = 0; c < nc; ++c) offset[c + 1] = offset[c] + blocks[c]->cols;
+  const int n_ch = offset[nc];
+  const int nf = int(m.faces.size());
+  const bool free_constant = !m.fixed_constant;
+  const int n = n_ch + nf + (free_constant ? 1 : 0);
+  const int t0 = n_ch + nf;  // column of the free constant
+  const double fixed = m.fixed_constant.value_or(0.0);
+  const double k = m.setting.conductivity;
+  MatrixXd A = MatrixXd::Zero(n, n);
+  VectorXd rhs = VectorXd::Zero(n);
+
+  for (std::size_t c = 0; c < nc; ++c) {
+    const auto& b = *blocks[c];
+    const Channel& ch = channels[c];
+    const double R = b.axis.radius, h = ch.film;
+    const double w1 = h == kInf ? 1 : h * R / (k + h * R);
+    const double w2 = h == kInf ? 0 : 1 / (2 * std::numbers::pi * (k + h * R));
+    const double beta = h == kInf ? -1 : (k - h * R) / (k + h * R);
+    for (int r = 0; r < b.cols; ++r) {
+      const int row = offset[c] + r;
+      const bool mean_row = r % m.kinds == 0;
+      const double wr = mean_row ? w1 : -beta;  // weight of the field's functional in this row
+      const Eigen::RowVector4d far = b.far_rows.row(r);
+      for (std::size_t d = 0; d < nc; ++d) {
+        const MatrixXd& blk = d == c ? b.self : pair(c, d);
+        A.block(row, offset[d], 1, blk.cols()) = wr * (blk.row(r) + far * blocks[d]->moments);
+      }
+      for (int f = 0; f < nf; ++f) A(row, n_ch + f) = wr * (b.face_rows(r, f) + far.dot(m.face_moments[f]));
+      const double heat_r = b.heat_rows[r] + far.dot(m.heat_moments);
+      if (mean_row) {
+        A(row, row) -= w2;  // the film's drop: q' / (2 pi R h)
+        if (free_constant) A(row, t0) = w1;
+        rhs[row] = w1 * (ch.coolant - heat_r - fixed);
+      } else {
+        A(row, row) += b.self_dipole[r];
+        rhs[row] = beta * heat_r;
+      }
+    }
+  }
+  for (int f = 0; f < nf; ++f) {
+    const ConvectiveFace& cf = m.faces[f];
+    const int row = n_ch + f;
+    // loss / (h A_conv) - face mean temperature = - ambient
+    const Eigen::RowVector4d far = m.far_face_means.row(f);
+    for (std::size_t c = 0; c < nc; ++c)
+      A.block(row, offset[c], 1, blocks[c]->cols) = -(blocks[c]->face_means.row(f) + far * blocks[c]->moments);
+    for (int f2 = 0; f2 < nf; ++f2) A(row, n_ch + f2) = -(m.face_face_means(f, f2) + far.dot(m.face_moments[f2]));
+    A(row, row) += cf.area / (cf.film * cf.convective_area);
+    if (free_constant) A(row, t0) = -1;
+    rhs[row] = m.heat_face_means[f] + far.dot(m.heat_moments) + fixed - cf.ambient;
+  }
+  if (free_constant) {  // the energy balance fixes the constant
+    for (std::size_t c = 0; c < nc; ++c) {
+      const auto& b = *blocks[c];
+      for (int e = 0; e < b.axis.elements; ++e) A(t0, offset[c] + e * m.kinds) = b.axis.element_length;
+    }
+    for (int f = 0; f < nf; ++f) A(t0, n_ch + f) = m.faces[f].area;
+    rhs[t0] = m.heat_in;
+  }
+
+  VectorXd x;
+  if (m.options.tier == Tier::T1) {
+    // One strength for every element: the columns summed, the mean rows summed by length.
+    const int n1 = 1 + nf + (free_constant ? 1 : 0);
+    MatrixXd P = MatrixXd::Zero(n, n1), Rm = MatrixXd::Zero(n1, n);
+    for (std::size_t c = 0; c < nc; ++c)
+      for (int e = 0; e < blocks[c]->axis.elements; ++e) {
+        P(offset[c] + e, 0) = 1;
+        Rm(0, offset[c] + e) = blocks[c]->axis.element_length;
+      }
+    for (int i = n_ch; i < n; ++i) {
+      P(i, 1 + i - n_ch) = 1;
+      Rm(1 + i - n_ch, i) = 1;
+    }
+    const VectorXd y = (Rm * A * P).fullPivLu().solve(Rm * rhs);
+    x = P * y;
+  } else {
+    x = A.fullPivLu().solve(rhs);
+  }
+
+  LineSinkSolution out;
+  out.heat_in = m.heat_in;
+  const double T0 = free_constant ? x[t0] : fixed;
+  VectorXd T = m.heat_samples + VectorXd::Constant(m.n_samples, T0);
+  if (nf) T += m.face_samples * x.segment(n_ch, nf);
+  Eigen::Vector4d total = m.heat_moments;  // everything in the block, for the far lattice
+  for (int f = 0; f < nf; ++f) total += x[n_ch + f] * m.face_moments[f];
+  for (std::size_t c = 0; c < nc; ++c) total += blocks[c]->moments * x.segment(offset[c], blocks[c]->cols);
+  if (!m.far_images.empty()) T += m.far_samples * total;
+  const std::size_t ns = m.n_samples;
+  for (std::size_t c = 0; c < nc; ++c) {
+    const auto& b = *blocks[c];
+    for (int col = 0; col < b.cols; ++col) {
+      const double xi = x[offset[c] + col];
+      if (m.options.single_precision) {
+        const float* v = &b.sample_cols_f[col * ns];
+        for (std::size_t s = 0; s < ns; ++s) T[s] += xi * double(v[s]);
+      } else {
+        const double* v = &b.sample_cols_d[col * ns];
+        for (std::size_t s = 0; s < ns; ++s) T[s] += xi * v[s];
+      }
+    }
+    double q = 0;
+    for (int e = 0; e < b.axis.elements; ++e) q += x[offset[c] + e * m.kinds] * b.axis.element_length;
+    out.channel_heat.push_back(q);
+  }
+  for (int f = 0; f < nf; ++f) out.face_heat += x[n_ch + f] * m.faces[f].area;
+  out.temperature.assign(T.data(), T.data() + ns);
+
+  cache.channels_ = std::move(used);
+  cache.pairs_ = std::move(used_pairs);
+  return out;
+}
+
+}  // namespace mtcs::thermal
