@@ -32,8 +32,8 @@ enum class Tier { T1, T2, T2d };
 struct LineSinkOptions {
   Tier tier = Tier::T2d;
   int elements = 4;     // per channel
-  int images = 1;       // reflection levels summed exactly: 1 = the six faces, 2 = also the
-                        // double reflections
+  int images = 2;       // reflection levels summed exactly: 1 = the six faces, 2 = also the
+                        // double reflections (edges, and the translations by twice the block)
   int far_images = 6;   // up to this level, the farther images as the block's charge + dipole
   int face_grid = 4;    // face_grid^2 points per convective face for its mean temperature
   bool single_precision = true;  // the per-channel columns at the samples in float
