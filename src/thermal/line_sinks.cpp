@@ -133,7 +133,8 @@ struct LineSinkModel::Impl {
   Vec3 center = Vec3::Zero();     // the block's centre: where the moments are taken
   Eigen::Vector4d heat_moments = Eigen::Vector4d::Zero();
   std::vector<Eigen::Vector4d> face_moments;
-  MatrixXd far_samples;                      // samples x 4
+  MatrixXd far_samples;       // samples x 4: the far lattice for the channels' columns
+  MatrixXd far_samples_fixed; // the same for the heat input and the faces (exact to `images`)
   MatrixXd far_face_means;                   // faces x 4
   FaceFieldGrid face_grid;
   std::vector<ConvectiveFace> faces;
@@ -142,6 +143,7 @@ struct LineSinkModel::Impl {
   std::size_t n_samples = 0;
   std::vector<WeightedPoint> sample_points;  // image-expanded
   std::vector<std::size_t> sample_begin;     // CSR into sample_points
+  std::vector<float> sample_x, sample_y, sample_z;  // the same, relative to the centre, in float
   VectorXd heat_samples;                     // heat input's field at the samples
   MatrixXd face_samples;                     // samples x faces: unit face loss
   VectorXd heat_face_means;                  // per face: heat input's field, face mean
@@ -184,9 +186,10 @@ struct LineSinkModel::Impl {
   // The far images of the block, each seen as a point charge and dipole at its centre:
   // (sum sigma / d, sum sigma L_g (s - g(c)) / d^3) / (4 pi k), d = |s - g(c)|. Dotted with the
   // charge and first moment (about c) of everything in the block, it is the far lattice's field.
-  Eigen::Vector4d far_kernel(const Vec3& s) const {
+  Eigen::Vector4d far_kernel(const Vec3& s) const { return far_kernel(s, far_images); }
+  Eigen::Vector4d far_kernel(const Vec3& s, std::span<const Image> far) const {
     Eigen::Vector4d k = Eigen::Vector4d::Zero();
-    for (const Image& g : far_images) {
+    for (const Image& g : far) {
       const Vec3 d = s - (g.mult.cwiseProduct(center) + g.offset);
       const double r2 = d.squaredNorm();
       const double inv = 1 / std::sqrt(r2);
@@ -246,16 +249,28 @@ struct LineSinkModel::Impl {
     b->cols = cols;
     // At the samples.
     std::vector<double> col(cols);
-    if (options.single_precision) b->sample_cols_f.resize(n_samples * cols);
-    else b->sample_cols_d.resize(n_samples * cols);
-    for (std::size_t s = 0; s < n_samples; ++s) {
+    if (options.single_precision) {
+      b->sample_cols_f.resize(n_samples * cols);
+      const std::size_t n = sample_points.size();
+      std::vector<float> buf(n * cols);
+      element_fields_float(a, center, kinds, sample_x.data(), sample_y.data(), sample_z.data(), n, buf.data());
+      for (int c = 0; c < cols; ++c) {
+        const double scale = (c % kinds == 0 ? -1 : 1) * inv4pik;
+        const float* v = &buf[c * n];
+        for (std::size_t s = 0; s < n_samples; ++s) {
+          double acc = 0;
+          for (std::size_t i = sample_begin[s]; i < sample_begin[s + 1]; ++i) acc += sample_points[i].weight * v[i];
+          b->sample_cols_f[c * n_samples + s] = float(scale * acc);
+        }
+      }
+    } else {
+      b->sample_cols_d.resize(n_samples * cols);
+    }
+    for (std::size_t s = 0; s < n_samples && !options.single_precision; ++s) {
       std::fill(col.begin(), col.end(), 0.0);
       for (std::size_t i = sample_begin[s]; i < sample_begin[s + 1]; ++i)
         add_columns(a, sample_points[i].point, sample_points[i].weight, col.data());
-      for (int c = 0; c < cols; ++c) {
-        if (options.single_precision) b->sample_cols_f[c * n_samples + s] = float(col[c]);
-        else b->sample_cols_d[c * n_samples + s] = col[c];
-      }
+      for (int c = 0; c < cols; ++c) b->sample_cols_d[c * n_samples + s] = col[c];
     }
     // At the convective faces' grids (means).
     b->face_means = MatrixXd::Zero(faces.size(), cols);
@@ -331,6 +346,15 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     m.far_images.erase(m.far_images.begin(), m.far_images.begin() + m.images.size());
   }
   m.center = 0.5 * (box.min + box.max);
+  // At the samples (the bulk of the work) fewer images may be summed exactly, the rest as the
+  // far lattice's charge and dipole.
+  const int sample_levels = options.sample_images < 0 ? options.images : std::min(options.sample_images, options.images);
+  const std::vector<Image> sample_images = block_images(box, sign, sample_levels);
+  std::vector<Image> sample_far;
+  if (options.far_images > sample_levels) {
+    sample_far = block_images(box, sign, options.far_images);
+    sample_far.erase(sample_far.begin(), sample_far.begin() + sample_images.size());
+  }
 
   for (const HeatedTriangle& t : setting.heat_in) {
     const double q = t.flux * 0.5 * (t.b - t.a).cross(t.c - t.a).norm();
@@ -387,8 +411,14 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
   m.n_samples = samples.size();
   m.sample_begin.push_back(0);
   for (const Vec3& p : samples.points) {
-    append_image_points(m.images, p, m.tol, m.sample_points);
+    append_image_points(sample_images, p, m.tol, m.sample_points);
     m.sample_begin.push_back(m.sample_points.size());
+  }
+  for (const WeightedPoint& w : m.sample_points) {
+    const Vec3 r = w.point - m.center;
+    m.sample_x.push_back(float(r.x()));
+    m.sample_y.push_back(float(r.y()));
+    m.sample_z.push_back(float(r.z()));
   }
   const std::size_t nf = m.faces.size();
   for (const ConvectiveFace& cf : m.faces) {
@@ -397,7 +427,11 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     m.face_moments.push_back(mo);
   }
   m.far_samples.resize(m.n_samples, 4);
-  for (std::size_t s = 0; s < m.n_samples; ++s) m.far_samples.row(s) = m.far_kernel(samples.points[s]).transpose();
+  m.far_samples_fixed.resize(m.n_samples, 4);
+  for (std::size_t s = 0; s < m.n_samples; ++s) {
+    m.far_samples.row(s) = m.far_kernel(samples.points[s], sample_far).transpose();
+    m.far_samples_fixed.row(s) = m.far_kernel(samples.points[s]).transpose();
+  }
   m.far_face_means = MatrixXd::Zero(nf, 4);
   for (std::size_t f = 0; f < nf; ++f) {
     for (const Vec3& p : m.faces[f].cool) m.far_face_means.row(f) += m.far_kernel(p).transpose();
@@ -578,10 +612,11 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
   const double T0 = free_constant ? x[t0] : fixed;
   VectorXd T = m.heat_samples + VectorXd::Constant(m.n_samples, T0);
   if (nf) T += m.face_samples * x.segment(n_ch, nf);
-  Eigen::Vector4d total = m.heat_moments;  // everything in the block, for the far lattice
-  for (int f = 0; f < nf; ++f) total += x[n_ch + f] * m.face_moments[f];
-  for (std::size_t c = 0; c < nc; ++c) total += blocks[c]->moments * x.segment(offset[c], blocks[c]->cols);
-  if (!m.far_images.empty()) T += m.far_samples * total;
+  // The far lattice: the moments of everything in the block.
+  Eigen::Vector4d fixed_moments = m.heat_moments, channel_moments = Eigen::Vector4d::Zero();
+  for (int f = 0; f < nf; ++f) fixed_moments += x[n_ch + f] * m.face_moments[f];
+  for (std::size_t c = 0; c < nc; ++c) channel_moments += blocks[c]->moments * x.segment(offset[c], blocks[c]->cols);
+  T += m.far_samples_fixed * fixed_moments + m.far_samples * channel_moments;
   const std::size_t ns = m.n_samples;
   for (std::size_t c = 0; c < nc; ++c) {
     const auto& b = *blocks[c];
