@@ -55,10 +55,32 @@ bool in_triangle(const Vec3& p, const HeatedTriangle& t, int axis) {
 
 }  // namespace
 
+// Field points expanded by their images, grouped by target (a sample, a wall point, a face),
+// in double and, relative to the block's centre, in float for the vectorised kernel.
+struct PointSet {
+  std::vector<WeightedPoint> points;
+  std::vector<float> x, y, z;
+  std::vector<std::size_t> begin{0};
+  std::size_t targets() const { return begin.size() - 1; }
+  void add(std::span<const Image> images, const Vec3& p, double tol, double weight, const Vec3& centre) {
+    const std::size_t first = points.size();
+    append_image_points(images, p, tol, points);
+    for (std::size_t i = first; i < points.size(); ++i) {
+      points[i].weight *= weight;
+      const Vec3 r = points[i].point - centre;
+      x.push_back(float(r.x()));
+      y.push_back(float(r.y()));
+      z.push_back(float(r.z()));
+    }
+  }
+  void close_target() { begin.push_back(points.size()); }
+};
+
 // ---- cache blocks ----------------------------------------------------------------------------
 
 struct LineSinkCache::ChannelBlock {
   ChannelAxis axis;
+  PointSet walls;  // 4 wall points per element, all images
   int cols = 0;
   std::vector<float> sample_cols_f;   // samples x cols, column-major (single precision)
   std::vector<double> sample_cols_d;  // the same in double precision
@@ -89,7 +111,6 @@ struct ConvectiveFace {
   std::array<Vec3, 4> corners;
   std::vector<Vec3> cool;           // the grid points off the heated triangles
   Vec3 center;
-  std::vector<WeightedPoint> grid;  // the same, image-expanded, weights / their number
 };
 
 // The convective faces' unit-loss fields on a regular grid over the block, interpolated
@@ -135,15 +156,15 @@ struct LineSinkModel::Impl {
   std::vector<Eigen::Vector4d> face_moments;
   MatrixXd far_samples;       // samples x 4: the far lattice for the channels' columns
   MatrixXd far_samples_fixed; // the same for the heat input and the faces (exact to `images`)
-  MatrixXd far_face_means;                   // faces x 4
+  MatrixXd far_face_means;                   // faces x 4: the far lattice for the channels
+  MatrixXd far_face_means_fixed;             // the same for the heat input and the faces
   FaceFieldGrid face_grid;
   std::vector<ConvectiveFace> faces;
   std::optional<double> fixed_constant;  // an isothermal face's ambient
   double heat_in = 0;
   std::size_t n_samples = 0;
-  std::vector<WeightedPoint> sample_points;  // image-expanded
-  std::vector<std::size_t> sample_begin;     // CSR into sample_points
-  std::vector<float> sample_x, sample_y, sample_z;  // the same, relative to the centre, in float
+  PointSet sample_set;                       // the samples, image-expanded
+  PointSet face_set;                         // per convective face: its grid, weights / size
   VectorXd heat_samples;                     // heat input's field at the samples
   MatrixXd face_samples;                     // samples x faces: unit face loss
   VectorXd heat_face_means;                  // per face: heat input's field, face mean
@@ -224,20 +245,48 @@ struct LineSinkModel::Impl {
     }
   }
 
-  // Columns of `source` at the rows of `rows`, all images: a rows x cols matrix.
-  MatrixXd channel_at_rows(const ChannelAxis& rows, const ChannelAxis& source) const {
+  // Columns of `source` at every target of a point set: targets x cols. In single precision
+  // only where asked (samples, face grids): a wall point sits a radius, maybe 1e-3 mm, from
+  // its axis, finer than a float resolves at the block's coordinates.
+  MatrixXd columns_at(const ChannelAxis& source, const PointSet& ps, bool single) const {
     const int cols = source.elements * kinds;
-    MatrixXd out(rows.elements * kinds, cols);
-    std::vector<WeightedPoint> pts;
-    row_functionals(
-        rows,
-        [&](const Vec3& p, double* v) {
-          std::fill(v, v + cols, 0.0);
-          pts.clear();
-          append_image_points(images, p, tol, pts);
-          for (const WeightedPoint& w : pts) add_columns(source, w.point, w.weight, v);
-        },
-        cols, out.data(), int(out.rows()));
+    MatrixXd out = MatrixXd::Zero(ps.targets(), cols);
+    if (single) {
+      const std::size_t n = ps.points.size();
+      std::vector<float> buf(n * cols);
+      element_fields_float(source, center, kinds, ps.x.data(), ps.y.data(), ps.z.data(), n, buf.data());
+      for (int c = 0; c < cols; ++c) {
+        const double scale = (c % kinds == 0 ? -1 : 1) * inv4pik;  // a sink takes heat out
+        const float* v = &buf[c * n];
+        for (std::size_t t = 0; t < ps.targets(); ++t) {
+          double acc = 0;
+          for (std::size_t i = ps.begin[t]; i < ps.begin[t + 1]; ++i) acc += ps.points[i].weight * v[i];
+          out(t, c) = scale * acc;
+        }
+      }
+    } else {
+      std::vector<double> col(cols);
+      for (std::size_t t = 0; t < ps.targets(); ++t) {
+        std::fill(col.begin(), col.end(), 0.0);
+        for (std::size_t i = ps.begin[t]; i < ps.begin[t + 1]; ++i)
+          add_columns(source, ps.points[i].point, ps.points[i].weight, col.data());
+        for (int c = 0; c < cols; ++c) out(t, c) = col[c];
+      }
+    }
+    return out;
+  }
+
+  // Columns of `source` at the rows of a channel: its wall points' mean and half-differences.
+  MatrixXd channel_at_rows(const LineSinkCache::ChannelBlock& rows, const ChannelAxis& source) const {
+    const MatrixXd v = columns_at(source, rows.walls, false);
+    MatrixXd out(rows.axis.elements * kinds, v.cols());
+    for (int e = 0; e < rows.axis.elements; ++e) {
+      out.row(e * kinds) = 0.25 * (v.row(4 * e) + v.row(4 * e + 1) + v.row(4 * e + 2) + v.row(4 * e + 3));
+      if (kinds == 3) {
+        out.row(e * kinds + 1) = 0.5 * (v.row(4 * e) - v.row(4 * e + 1));
+        out.row(e * kinds + 2) = 0.5 * (v.row(4 * e + 2) - v.row(4 * e + 3));
+      }
+    }
     return out;
   }
 
@@ -247,40 +296,24 @@ struct LineSinkModel::Impl {
     const ChannelAxis& a = b->axis;
     const int cols = a.elements * kinds;
     b->cols = cols;
+    for (int e = 0; e < a.elements; ++e)
+      for (const Vec3& p : wall_points(a, e)) {
+        b->walls.add(images, p, tol, 1.0, center);
+        b->walls.close_target();
+      }
     // At the samples.
-    std::vector<double> col(cols);
+    const MatrixXd at_samples = columns_at(a, sample_set, options.single_precision);
     if (options.single_precision) {
       b->sample_cols_f.resize(n_samples * cols);
-      const std::size_t n = sample_points.size();
-      std::vector<float> buf(n * cols);
-      element_fields_float(a, center, kinds, sample_x.data(), sample_y.data(), sample_z.data(), n, buf.data());
-      for (int c = 0; c < cols; ++c) {
-        const double scale = (c % kinds == 0 ? -1 : 1) * inv4pik;
-        const float* v = &buf[c * n];
-        for (std::size_t s = 0; s < n_samples; ++s) {
-          double acc = 0;
-          for (std::size_t i = sample_begin[s]; i < sample_begin[s + 1]; ++i) acc += sample_points[i].weight * v[i];
-          b->sample_cols_f[c * n_samples + s] = float(scale * acc);
-        }
-      }
+      for (int c = 0; c < cols; ++c)
+        for (std::size_t s = 0; s < n_samples; ++s) b->sample_cols_f[c * n_samples + s] = float(at_samples(s, c));
     } else {
-      b->sample_cols_d.resize(n_samples * cols);
-    }
-    for (std::size_t s = 0; s < n_samples && !options.single_precision; ++s) {
-      std::fill(col.begin(), col.end(), 0.0);
-      for (std::size_t i = sample_begin[s]; i < sample_begin[s + 1]; ++i)
-        add_columns(a, sample_points[i].point, sample_points[i].weight, col.data());
-      for (int c = 0; c < cols; ++c) b->sample_cols_d[c * n_samples + s] = col[c];
+      b->sample_cols_d.assign(at_samples.data(), at_samples.data() + at_samples.size());
     }
     // At the convective faces' grids (means).
-    b->face_means = MatrixXd::Zero(faces.size(), cols);
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-      std::fill(col.begin(), col.end(), 0.0);
-      for (const WeightedPoint& w : faces[f].grid) add_columns(a, w.point, w.weight, col.data());
-      for (int c = 0; c < cols; ++c) b->face_means(f, c) = col[c];
-    }
+    b->face_means = columns_at(a, face_set, options.single_precision);
     // Own rows: the own columns, the heat input and the face losses.
-    b->self = channel_at_rows(a, a);
+    b->self = channel_at_rows(*b, a);
     b->self_dipole.assign(cols, 0.0);
     if (kinds == 3)
       for (int e = 0; e < a.elements; ++e)
@@ -399,26 +432,16 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     if (cool.empty()) cool = grid;
     cf.cool = cool;
     cf.center = 0.5 * (corners[f][0] + corners[f][2]);
-    for (const Vec3& p : cool) {
-      const std::size_t first = cf.grid.size();
-      append_image_points(m.images, p, m.tol, cf.grid);
-      for (std::size_t i = first; i < cf.grid.size(); ++i) cf.grid[i].weight /= double(cool.size());
-    }
+    for (const Vec3& p : cool) m.face_set.add(sample_images, p, m.tol, 1.0 / double(cool.size()), m.center);
+    m.face_set.close_target();
     m.faces.push_back(std::move(cf));
   }
 
   // The samples: expanded by the images, and the layout-independent fields there.
   m.n_samples = samples.size();
-  m.sample_begin.push_back(0);
   for (const Vec3& p : samples.points) {
-    append_image_points(sample_images, p, m.tol, m.sample_points);
-    m.sample_begin.push_back(m.sample_points.size());
-  }
-  for (const WeightedPoint& w : m.sample_points) {
-    const Vec3 r = w.point - m.center;
-    m.sample_x.push_back(float(r.x()));
-    m.sample_y.push_back(float(r.y()));
-    m.sample_z.push_back(float(r.z()));
+    m.sample_set.add(sample_images, p, m.tol, 1.0, m.center);
+    m.sample_set.close_target();
   }
   const std::size_t nf = m.faces.size();
   for (const ConvectiveFace& cf : m.faces) {
@@ -433,9 +456,14 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     m.far_samples_fixed.row(s) = m.far_kernel(samples.points[s]).transpose();
   }
   m.far_face_means = MatrixXd::Zero(nf, 4);
+  m.far_face_means_fixed = MatrixXd::Zero(nf, 4);
   for (std::size_t f = 0; f < nf; ++f) {
-    for (const Vec3& p : m.faces[f].cool) m.far_face_means.row(f) += m.far_kernel(p).transpose();
+    for (const Vec3& p : m.faces[f].cool) {
+      m.far_face_means.row(f) += m.far_kernel(p, sample_far).transpose();
+      m.far_face_means_fixed.row(f) += m.far_kernel(p).transpose();
+    }
     m.far_face_means.row(f) /= double(m.faces[f].cool.size());
+    m.far_face_means_fixed.row(f) /= double(m.faces[f].cool.size());
   }
   if (nf) {
     FaceFieldGrid& g = m.face_grid;
@@ -519,7 +547,7 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
       p = it->second;
     } else {
       p = std::make_shared<LineSinkCache::PairBlock>();
-      p->block = m.channel_at_rows(blocks[r]->axis, blocks[c]->axis);
+      p->block = m.channel_at_rows(*blocks[r], blocks[c]->axis);
     }
     used_pairs[k] = p;
     return p->block;
@@ -570,9 +598,9 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
     const ConvectiveFace& cf = m.faces[f];
     const int row = n_ch + f;
     // loss / (h A_conv) - face mean temperature = - ambient
-    const Eigen::RowVector4d far = m.far_face_means.row(f);
+    const Eigen::RowVector4d far_ch = m.far_face_means.row(f), far = m.far_face_means_fixed.row(f);
     for (std::size_t c = 0; c < nc; ++c)
-      A.block(row, offset[c], 1, blocks[c]->cols) = -(blocks[c]->face_means.row(f) + far * blocks[c]->moments);
+      A.block(row, offset[c], 1, blocks[c]->cols) = -(blocks[c]->face_means.row(f) + far_ch * blocks[c]->moments);
     for (int f2 = 0; f2 < nf; ++f2) A(row, n_ch + f2) = -(m.face_face_means(f, f2) + far.dot(m.face_moments[f2]));
     A(row, row) += cf.area / (cf.film * cf.convective_area);
     if (free_constant) A(row, t0) = -1;
