@@ -479,7 +479,10 @@ TEST_CASE("line sinks: error and time per evaluation on the block case", "[.benc
         if (t == Tier::T2d && images == 2) rows.push_back({t, m, images, true, 1});
         if (m == 4 && t == Tier::T2d) rows.push_back({t, m, images, false});
       }
+  // MTCS_LS_ELEMENTS=4 keeps the rows of 4 elements (for profiling).
+  const int only = std::getenv("MTCS_LS_ELEMENTS") ? std::atoi(std::getenv("MTCS_LS_ELEMENTS")) : 0;
   for (const Row& r : rows) {
+    if (only && r.elements != only) continue;
     LineSinkOptions o;
     o.tier = r.tier;
     o.elements = r.elements;
@@ -518,5 +521,93 @@ TEST_CASE("line sinks: error and time per evaluation on the block case", "[.benc
     std::printf("%s,%d,%d,%d,%s,%.4f,%.4f,%.4f,%.4f,%.5f,%.3f,%.3f,%.4f,%.4f\n", tier, r.elements,
                 r.images, r.sample_images < 0 ? r.images : r.sample_images, r.single ? "float" : "double", c.rms, c.max, c.mean_diff, c.std_diff,
                 c.spearman, q, sol.face_heat, full_ms, inc_ms);
+  }
+}
+
+namespace {
+
+// 60 random layouts of 2-5 through-bores along x in the block: diameters 6-12 mm, walls at
+// least 1 mm from the faces and from each other. Deterministic (own mapping of mt19937).
+std::vector<std::vector<Channel>> random_layouts(int count) {
+  std::mt19937 rng(20261124);
+  auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * (rng() / 4294967296.0); };
+  std::vector<std::vector<Channel>> layouts;
+  while (int(layouts.size()) < count) {
+    const int n = 2 + int(rng() % 4);
+    std::vector<Channel> bores;
+    for (int tries = 0; int(bores.size()) < n && tries < 1000; ++tries) {
+      const double d = uniform(6, 12), r = d / 2;
+      const double y = uniform(1 + r, 79 - r), z = uniform(1 + r, 59 - r);
+      bool clear = true;
+      for (const Channel& b : bores)
+        clear = clear && std::hypot(b.axis.p0.y() - y, b.axis.p0.z() - z) >= b.radius + r + 1;
+      if (!clear) continue;
+      Channel c;
+      c.axis = Segment{Vec3(0, y, z), Vec3(120, y, z)};
+      c.radius = r;
+      bores.push_back(c);
+    }
+    if (int(bores.size()) == n) layouts.push_back(bores);
+  }
+  return layouts;
+}
+
+double kendall_tau(const std::vector<double>& a, const std::vector<double>& b) {
+  double concordant = 0, discordant = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = i + 1; j < a.size(); ++j) {
+      const double s = (a[i] - a[j]) * (b[i] - b[j]);
+      if (s > 0) ++concordant;
+      if (s < 0) ++discordant;
+    }
+  return (concordant - discordant) / (concordant + discordant);
+}
+
+}  // namespace
+
+// How the tiers rank random layouts by the patch temperature's std, against the finest line
+// sinks (T2d, 12 elements, 3 image levels everywhere, double precision) until T3 lands.
+TEST_CASE("line sinks: ranking of 60 random layouts by patch std", "[.bench]") {
+  const Reference ref = patch_reference();
+  const Setting setting = block_setting();
+  const auto layouts = random_layouts(60);
+  auto stds = [&](const LineSinkOptions& o, double& ms) {
+    const LineSinkModel model(setting, ref.samples, o);
+    std::vector<double> out;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (const auto& layout : layouts) {
+      LineSinkCache cache;
+      out.push_back(std_of(model.temperatures(layout, cache)));
+    }
+    ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / double(layouts.size());
+    return out;
+  };
+  LineSinkOptions fine;
+  fine.tier = Tier::T2d;
+  fine.elements = 12;
+  fine.images = 3;
+  fine.sample_images = 3;
+  fine.single_precision = false;
+  double fine_ms = 0;
+  const auto reference = stds(fine, fine_ms);
+  std::printf("tier,elements,images,sample_images,kendall_tau,spearman,max_abs_std_diff_K,full_ms\n");
+  std::printf("T2d,12,3,3,1,1,0,%.3f\n", fine_ms);
+  struct Row { Tier tier; int elements; int images; int sample_images; };
+  const Row rows[] = {{Tier::T1, 1, 2, 1},  {Tier::T2, 4, 2, 1},  {Tier::T2, 12, 2, 1},
+                      {Tier::T2d, 1, 2, 1}, {Tier::T2d, 2, 2, 1}, {Tier::T2d, 4, 2, 1},
+                      {Tier::T2d, 4, 1, 1}, {Tier::T2d, 8, 2, 1}, {Tier::T2d, 4, 2, 2}};
+  for (const Row& r : rows) {
+    LineSinkOptions o;
+    o.tier = r.tier;
+    o.elements = r.elements;
+    o.images = r.images;
+    o.sample_images = r.sample_images;
+    double ms = 0;
+    const auto s = stds(o, ms);
+    double worst = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) worst = std::max(worst, std::abs(s[i] - reference[i]));
+    const char* tier = r.tier == Tier::T1 ? "T1" : r.tier == Tier::T2 ? "T2" : "T2d";
+    std::printf("%s,%d,%d,%d,%.4f,%.4f,%.4f,%.3f\n", tier, r.elements, r.images, r.sample_images,
+                kendall_tau(s, reference), pearson(ranks(s), ranks(reference)), worst, ms);
   }
 }
