@@ -80,7 +80,9 @@ struct PointSet {
 
 struct LineSinkCache::ChannelBlock {
   ChannelAxis axis;
-  PointSet walls;  // 4 wall points per element, all images
+  PointSet walls;  // 4 wall points per element, all images, relative to walls_origin
+  Vec3 walls_origin = Vec3::Zero();
+  bool walls_single = false;  // the radius is coarse enough for the float kernel
   int cols = 0;
   std::vector<float> sample_cols_f;   // samples x cols, column-major (single precision)
   std::vector<double> sample_cols_d;  // the same in double precision
@@ -159,6 +161,17 @@ struct LineSinkModel::Impl {
   MatrixXd far_face_means;                   // faces x 4: the far lattice for the channels
   MatrixXd far_face_means_fixed;             // the same for the heat input and the faces
   FaceFieldGrid face_grid;
+  // The heat input's field on a ~3 mm grid, for collocation points off `heat_near` (the heated
+  // triangles' bounds grown by two cells); nearer, it is summed exactly.
+  FaceFieldGrid heat_grid;
+  Box heat_near = Box::empty();
+
+  double heat_at(const Vec3& p) const {
+    if (heat_grid.values.empty() || heat_near.contains(p)) return heat_field(p);
+    double v;
+    heat_grid.interpolate(p, &v);
+    return v;
+  }
   std::vector<ConvectiveFace> faces;
   std::optional<double> fixed_constant;  // an isothermal face's ambient
   double heat_in = 0;
@@ -248,13 +261,14 @@ struct LineSinkModel::Impl {
   // Columns of `source` at every target of a point set: targets x cols. In single precision
   // only where asked (samples, face grids): a wall point sits a radius, maybe 1e-3 mm, from
   // its axis, finer than a float resolves at the block's coordinates.
-  MatrixXd columns_at(const ChannelAxis& source, const PointSet& ps, bool single) const {
+  MatrixXd columns_at(const ChannelAxis& source, const PointSet& ps, bool single,
+                      const Vec3& origin) const {
     const int cols = source.elements * kinds;
     MatrixXd out = MatrixXd::Zero(ps.targets(), cols);
     if (single) {
       const std::size_t n = ps.points.size();
       std::vector<float> buf(n * cols);
-      element_fields_float(source, center, kinds, ps.x.data(), ps.y.data(), ps.z.data(), n, buf.data());
+      element_fields_float(source, origin, kinds, ps.x.data(), ps.y.data(), ps.z.data(), n, buf.data());
       for (int c = 0; c < cols; ++c) {
         const double scale = (c % kinds == 0 ? -1 : 1) * inv4pik;  // a sink takes heat out
         const float* v = &buf[c * n];
@@ -278,7 +292,7 @@ struct LineSinkModel::Impl {
 
   // Columns of `source` at the rows of a channel: its wall points' mean and half-differences.
   MatrixXd channel_at_rows(const LineSinkCache::ChannelBlock& rows, const ChannelAxis& source) const {
-    const MatrixXd v = columns_at(source, rows.walls, false);
+    const MatrixXd v = columns_at(source, rows.walls, rows.walls_single, rows.walls_origin);
     MatrixXd out(rows.axis.elements * kinds, v.cols());
     for (int e = 0; e < rows.axis.elements; ++e) {
       out.row(e * kinds) = 0.25 * (v.row(4 * e) + v.row(4 * e + 1) + v.row(4 * e + 2) + v.row(4 * e + 3));
@@ -296,13 +310,18 @@ struct LineSinkModel::Impl {
     const ChannelAxis& a = b->axis;
     const int cols = a.elements * kinds;
     b->cols = cols;
+    // Wall points relative to the channel's middle: a float resolves 6e-8 of the distances
+    // there, fine next to a radius above 1e-3 of the block and the channel.
+    b->walls_origin = a.p0 + 0.5 * a.length * a.u;
+    b->walls_single = options.single_precision &&
+                      a.radius >= 1e-3 * (setting.block.size().norm() + a.length);
     for (int e = 0; e < a.elements; ++e)
       for (const Vec3& p : wall_points(a, e)) {
-        b->walls.add(images, p, tol, 1.0, center);
+        b->walls.add(images, p, tol, 1.0, b->walls_origin);
         b->walls.close_target();
       }
     // At the samples.
-    const MatrixXd at_samples = columns_at(a, sample_set, options.single_precision);
+    const MatrixXd at_samples = columns_at(a, sample_set, options.single_precision, center);
     if (options.single_precision) {
       b->sample_cols_f.resize(n_samples * cols);
       for (int c = 0; c < cols; ++c)
@@ -311,7 +330,7 @@ struct LineSinkModel::Impl {
       b->sample_cols_d.assign(at_samples.data(), at_samples.data() + at_samples.size());
     }
     // At the convective faces' grids (means).
-    b->face_means = columns_at(a, face_set, options.single_precision);
+    b->face_means = columns_at(a, face_set, options.single_precision, center);
     // Own rows: the own columns, the heat input and the face losses.
     b->self = channel_at_rows(*b, a);
     b->self_dipole.assign(cols, 0.0);
@@ -323,7 +342,7 @@ struct LineSinkModel::Impl {
           b->self(r, r) = 0;  // V_self: kept apart, the film condition weighs it differently
         }
     b->heat_rows.resize(cols);
-    row_functionals(a, [&](const Vec3& p, double* v) { v[0] = heat_field(p); }, 1,
+    row_functionals(a, [&](const Vec3& p, double* v) { v[0] = heat_at(p); }, 1,
                     b->heat_rows.data(), cols);
     b->far_rows.resize(cols, 4);
     row_functionals(a, [&](const Vec3& p, double* v) {
@@ -480,6 +499,29 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
           const Vec3 p = box.min + g.step.cwiseProduct(Vec3(i, j, k));
           for (std::size_t f = 0; f < nf; ++f) g.values[n++] = m.face_field(m.faces[f], p);
         }
+  }
+  if (!setting.heat_in.empty() && options.heat_grid > 0) {
+    FaceFieldGrid& g = m.heat_grid;
+    g.origin = box.min;
+    g.fields = 1;
+    for (int a = 0; a < 3; ++a) {
+      const int cells = std::clamp(int(std::ceil(box.size()[a] / options.heat_grid)), 3, 64);
+      g.nodes[a] = cells + 1;
+      g.step[a] = box.size()[a] / cells;
+    }
+    g.values.resize(std::size_t(g.nodes[0]) * g.nodes[1] * g.nodes[2]);
+    std::size_t n = 0;
+    for (int k = 0; k < g.nodes[2]; ++k)
+      for (int j = 0; j < g.nodes[1]; ++j)
+        for (int i = 0; i < g.nodes[0]; ++i) g.values[n++] = m.heat_field(box.min + g.step.cwiseProduct(Vec3(i, j, k)));
+    for (const HeatedTriangle& t : setting.heat_in)
+      for (const Vec3& v : {t.a, t.b, t.c}) {
+        m.heat_near.min = m.heat_near.min.cwiseMin(v);
+        m.heat_near.max = m.heat_near.max.cwiseMax(v);
+      }
+    const Vec3 margin = Vec3::Constant(2 * g.step.maxCoeff());
+    m.heat_near.min -= margin;
+    m.heat_near.max += margin;
   }
   m.heat_samples.resize(m.n_samples);
   m.face_samples.resize(m.n_samples, nf);
