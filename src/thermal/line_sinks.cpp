@@ -166,6 +166,16 @@ struct LineSinkModel::Impl {
   FaceFieldGrid heat_grid;
   Box heat_near = Box::empty();
 
+  // The far lattice's kernel on the same grid: its images of the centre lie a block's width or
+  // more outside, so it is smooth everywhere inside.
+  FaceFieldGrid far_grid;
+  Eigen::Vector4d far_at(const Vec3& p) const {
+    if (far_grid.values.empty() || !setting.block.contains(p)) return far_kernel(p);
+    Eigen::Vector4d v;
+    far_grid.interpolate(p, v.data());
+    return v;
+  }
+
   double heat_at(const Vec3& p) const {
     if (heat_grid.values.empty() || heat_near.contains(p)) return heat_field(p);
     double v;
@@ -346,7 +356,7 @@ struct LineSinkModel::Impl {
                     b->heat_rows.data(), cols);
     b->far_rows.resize(cols, 4);
     row_functionals(a, [&](const Vec3& p, double* v) {
-      const Eigen::Vector4d k = far_kernel(p);
+      const Eigen::Vector4d k = far_at(p);
       for (int i = 0; i < 4; ++i) v[i] = k[i];
     }, 4, b->far_rows.data(), cols);
     b->moments = MatrixXd::Zero(4, cols);
@@ -500,16 +510,30 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
           for (std::size_t f = 0; f < nf; ++f) g.values[n++] = m.face_field(m.faces[f], p);
         }
   }
-  if (!setting.heat_in.empty() && options.heat_grid > 0) {
-    FaceFieldGrid& g = m.heat_grid;
+  auto grid_over_block = [&](FaceFieldGrid& g, int fields) {
     g.origin = box.min;
-    g.fields = 1;
+    g.fields = fields;
     for (int a = 0; a < 3; ++a) {
       const int cells = std::clamp(int(std::ceil(box.size()[a] / options.heat_grid)), 3, 64);
       g.nodes[a] = cells + 1;
       g.step[a] = box.size()[a] / cells;
     }
-    g.values.resize(std::size_t(g.nodes[0]) * g.nodes[1] * g.nodes[2]);
+    g.values.resize(std::size_t(g.nodes[0]) * g.nodes[1] * g.nodes[2] * fields);
+  };
+  if (!m.far_images.empty() && options.heat_grid > 0) {
+    FaceFieldGrid& g = m.far_grid;
+    grid_over_block(g, 4);
+    std::size_t n = 0;
+    for (int k = 0; k < g.nodes[2]; ++k)
+      for (int j = 0; j < g.nodes[1]; ++j)
+        for (int i = 0; i < g.nodes[0]; ++i) {
+          const Eigen::Vector4d v = m.far_kernel(box.min + g.step.cwiseProduct(Vec3(i, j, k)));
+          for (int c = 0; c < 4; ++c) g.values[n++] = v[c];
+        }
+  }
+  if (!setting.heat_in.empty() && options.heat_grid > 0) {
+    FaceFieldGrid& g = m.heat_grid;
+    grid_over_block(g, 1);
     std::size_t n = 0;
     for (int k = 0; k < g.nodes[2]; ++k)
       for (int j = 0; j < g.nodes[1]; ++j)
@@ -671,10 +695,10 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
       P(i, 1 + i - n_ch) = 1;
       Rm(1 + i - n_ch, i) = 1;
     }
-    const VectorXd y = (Rm * A * P).fullPivLu().solve(Rm * rhs);
+    const VectorXd y = (Rm * A * P).partialPivLu().solve(Rm * rhs);
     x = P * y;
   } else {
-    x = A.fullPivLu().solve(rhs);
+    x = A.partialPivLu().solve(rhs);
   }
 
   LineSinkSolution out;
