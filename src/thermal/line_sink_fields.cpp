@@ -175,15 +175,18 @@ inline void element_float(const FloatAxis& g, float start, float len, const floa
     const float rho2 = rx * rx + ry * ry + rz * rz;
     const float ta = t0 - start, tb = ta - len;
     const float ra = std::sqrt(rho2 + ta * ta), rb = std::sqrt(rho2 + tb * tb);
-    const float A = ta > 0 ? rho2 / (ra + ta) : ra - ta;
-    const float B = tb < 0 ? rho2 / (rb - tb) : rb + tb;
+    // r + |t| and its reciprocal serve both kernels: r - t = rho^2/(r + t) when t > 0.
+    const float pa = ra + std::abs(ta), pb = rb + std::abs(tb);
+    const float ipa = 1 / pa, ipb = 1 / pb;
+    const float A = ta > 0 ? rho2 * ipa : pa;
+    const float B = tb < 0 ? rho2 * ipb : pb;
     const float D = A + B;
     phi[i] = log_float((D + 2 * len) / D);
     if constexpr (Dipoles) {
       // (ta/ra - tb/rb)/rho^2 in the cancellation-free forms of element_fields.
-      const float ca = 1 / (ra * (ra + std::abs(ta)));
-      const float cb = 1 / (rb * (rb + std::abs(tb)));
-      const float across = (ta / ra - tb / rb) / rho2;
+      const float ira = 1 / ra, irb = 1 / rb;
+      const float ca = ipa * ira, cb = ipb * irb;
+      const float across = (ta * ira - tb * irb) / rho2;
       const float factor = tb >= 0 ? cb - ca : (ta <= 0 ? ca - cb : across);
       d1[i] = factor * (rx * g.n1x + ry * g.n1y + rz * g.n1z);
       d2[i] = factor * (rx * g.n2x + ry * g.n2y + rz * g.n2z);

@@ -74,6 +74,24 @@ struct PointSet {
     }
   }
   void close_target() { begin.push_back(points.size()); }
+
+  // The slot layout of many targets (the samples): point j of target t at j * T + t, targets
+  // with fewer images padded with weight 0, so that the sum over images runs contiguously.
+  int slots = 0;
+  std::vector<float> sx, sy, sz, sw;
+  void make_slots() {
+    const std::size_t T = targets();
+    slots = 0;
+    for (std::size_t t = 0; t < T; ++t) slots = std::max(slots, int(begin[t + 1] - begin[t]));
+    const std::size_t n = std::size_t(slots) * T;
+    sx.assign(n, 0.0f), sy.assign(n, 0.0f), sz.assign(n, 0.0f), sw.assign(n, 0.0f);
+    for (std::size_t t = 0; t < T; ++t)
+      for (int j = 0; j < slots; ++j) {
+        const std::size_t i = std::min(begin[t] + j, begin[t + 1] - 1), k = j * T + t;
+        sx[k] = x[i], sy[k] = y[i], sz[k] = z[i];
+        sw[k] = begin[t] + j < begin[t + 1] ? float(points[i].weight) : 0.0f;
+      }
+  }
 };
 
 // ---- cache blocks ----------------------------------------------------------------------------
@@ -275,7 +293,22 @@ struct LineSinkModel::Impl {
                       const Vec3& origin) const {
     const int cols = source.elements * kinds;
     MatrixXd out = MatrixXd::Zero(ps.targets(), cols);
-    if (single) {
+    if (single && ps.slots > 0) {
+      const std::size_t T = ps.targets(), n = std::size_t(ps.slots) * T;
+      std::vector<float> buf(n * cols), acc(T);
+      element_fields_float(source, origin, kinds, ps.sx.data(), ps.sy.data(), ps.sz.data(), n, buf.data());
+      for (int c = 0; c < cols; ++c) {
+        const float scale = float((c % kinds == 0 ? -1 : 1) * inv4pik);
+        const float* v = &buf[c * n];
+        std::fill(acc.begin(), acc.end(), 0.0f);
+        for (int j = 0; j < ps.slots; ++j) {
+          const float* vj = v + j * T;
+          const float* wj = ps.sw.data() + j * T;
+          for (std::size_t t = 0; t < T; ++t) acc[t] += wj[t] * vj[t];
+        }
+        for (std::size_t t = 0; t < T; ++t) out(t, c) = scale * acc[t];
+      }
+    } else if (single) {
       const std::size_t n = ps.points.size();
       std::vector<float> buf(n * cols);
       element_fields_float(source, origin, kinds, ps.x.data(), ps.y.data(), ps.z.data(), n, buf.data());
@@ -472,6 +505,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     m.sample_set.add(sample_images, p, m.tol, 1.0, m.center);
     m.sample_set.close_target();
   }
+  if (m.n_samples) m.sample_set.make_slots();
   const std::size_t nf = m.faces.size();
   for (const ConvectiveFace& cf : m.faces) {
     Eigen::Vector4d mo;
