@@ -544,6 +544,9 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
           for (std::size_t f = 0; f < nf; ++f) g.values[n++] = m.face_field(m.faces[f], p);
         }
   }
+  // Tabulated fields pay off only at their spacing: a block too large for 64 cells of
+  // `heat_grid` mm per axis sums them exactly.
+  const bool grids = options.heat_grid > 0 && (box.size() / options.heat_grid).maxCoeff() <= 64;
   auto grid_over_block = [&](FaceFieldGrid& g, int fields) {
     g.origin = box.min;
     g.fields = fields;
@@ -554,7 +557,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     }
     g.values.resize(std::size_t(g.nodes[0]) * g.nodes[1] * g.nodes[2] * fields);
   };
-  if (!m.far_images.empty() && options.heat_grid > 0) {
+  if (!m.far_images.empty() && grids) {
     FaceFieldGrid& g = m.far_grid;
     grid_over_block(g, 4);
     std::size_t n = 0;
@@ -565,7 +568,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
           for (int c = 0; c < 4; ++c) g.values[n++] = v[c];
         }
   }
-  if (!setting.heat_in.empty() && options.heat_grid > 0) {
+  if (!setting.heat_in.empty() && grids) {
     FaceFieldGrid& g = m.heat_grid;
     grid_over_block(g, 1);
     std::size_t n = 0;

@@ -39,7 +39,7 @@ struct LineSinkOptions {
                            // cheaper, the rest joins the far lattice there
   int face_grid = 4;    // face_grid^2 points per convective face for its mean temperature
   bool single_precision = true;  // the per-channel columns at the samples in float
-  double heat_grid = 3;          // mm: the heat input's field tabulated for the collocation
+  double heat_grid = 4;          // mm: the heat input's field tabulated for the collocation
                                  // points 2 cells or more from it (0: always summed exactly)
 };
 
