@@ -7,4 +7,4 @@ MTCS_BUILD_TARGET=thermal_tests bash scripts/build.sh >/dev/null
 t=./build/tests/thermal_tests
 $t "line sinks: error and time*" | grep -E "^(tier|T)" > experiments/thermal/line_sinks_block.csv
 $t "line sinks: ranking*" | grep -E "^(tier|T)" > experiments/thermal/line_sinks_ranking.csv
-$t "line sinks: best time*" | grep -A1 full_ms > experiments/thermal/line_sinks_best_time.csv
+$t "line sinks: best time*" | grep -B1 -A1 full_ms > experiments/thermal/line_sinks_best_time.csv
