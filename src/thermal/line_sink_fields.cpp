@@ -31,25 +31,6 @@ std::vector<Image1d> axis_images(double lo, double hi, double sign_lo, double si
 
 }  // namespace
 
-double log_at_least_one(double x) {
-  if (!(x < std::numeric_limits<double>::max())) return x;  // +inf (on the segment) or NaN
-  std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
-  int e = int((bits >> 52) & 0x7ff) - 1023;
-  bits = (bits & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL;
-  double m = std::bit_cast<double>(bits);  // x = m 2^e, m in [1, 2)
-  if (m > 1.4142135623730951) {
-    m *= 0.5;
-    ++e;
-  }
-  // log m = 2 atanh(f), f = (m - 1)/(m + 1), |f| <= 0.1716: the series to f^23 is below 1e-17.
-  const double f = (m - 1) / (m + 1), f2 = f * f;
-  constexpr double c[12] = {1.0,      1.0 / 3,  1.0 / 5,  1.0 / 7,  1.0 / 9,  1.0 / 11,
-                            1.0 / 13, 1.0 / 15, 1.0 / 17, 1.0 / 19, 1.0 / 21, 1.0 / 23};
-  double p = c[11];
-  for (int k = 10; k >= 0; --k) p = c[k] + f2 * p;
-  return e * 0.6931471805599453 + 2 * f * p;
-}
-
 std::vector<Image> block_images(const Box& block, const std::array<double, 6>& face_sign,
                                 int levels) {
   std::array<std::vector<Image1d>, 3> per_axis;

@@ -52,10 +52,6 @@ void element_fields(const ChannelAxis& axis, const Vec3& s, double* phi, double*
 void element_fields_float(const ChannelAxis& axis, const Vec3& origin, int kinds, const float* x,
                           const float* y, const float* z, std::size_t n, float* out);
 
-// log x for x >= 1, faster than std::log1p and within a few ulp; +inf stays +inf. Used on
-// (D + 2L)/D: the rounding of the ratio costs eps * D / 2L relative, 1e-12 at 1e4 lengths away.
-double log_at_least_one(double x);
-
 // The potential of a uniform unit source on a triangle, summed over the images at s.
 double triangle_image_potential(std::span<const Image> images, const Vec3& a, const Vec3& b,
                                 const Vec3& c, const Vec3& s);

@@ -223,12 +223,7 @@ struct LineSinkModel::Impl {
     return -inv4pik * (triangle_image_potential(images, c[0], c[1], c[2], p) +
                        triangle_image_potential(images, c[0], c[2], c[3], p));
   }
-  template <class Field>
-  double mean_over(const std::vector<WeightedPoint>& pts, Field&& field) const {
-    double sum = 0;
-    for (const WeightedPoint& w : pts) sum += w.weight * field(w.point);
-    return sum;
-  }
+
 
   // Adds w * (columns of `axis` at p) to col[0 .. elements * kinds).
   void add_columns(const ChannelAxis& axis, const Vec3& p, double w, double* col) const {

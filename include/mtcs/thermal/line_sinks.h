@@ -15,7 +15,13 @@
 // The block's faces: adiabatic (film 0) and convective faces reflect the sources with the same
 // sign; a convective face also carries an unknown uniform loss, h A (face mean - ambient),
 // collocated at a grid on the face; an isothermal face (film infinite) reflects with the
-// opposite sign and fixes the free constant at its ambient. `images` reflection levels.
+// opposite sign and fixes the free constant at its ambient. `images` reflection levels are
+// summed exactly, the farther ones up to `far_images` as the charge and dipole of the block's
+// image. That split assumes a compact block (no side much shorter than the others): for a slab,
+// sum more levels exactly and set far_images to 0.
+//
+// Default (T2d, 4 elements) on the reference block: RMS 0.14 K against FreeFem++ P2, 0.44 ms
+// per full evaluation, 0.19 ms with one bore changed (experiments/thermal/line_sinks.md).
 
 #include <array>
 #include <map>
