@@ -53,6 +53,25 @@ bool in_triangle(const Vec3& p, const HeatedTriangle& t, int axis) {
   return (c0 >= 0 && c1 >= 0 && c2 >= 0) || (c0 <= 0 && c1 <= 0 && c2 <= 0);
 }
 
+// The part of a channel's axis inside the block (Liang-Barsky); ends already inside are kept
+// bit for bit, so the cache keys of ordinary channels do not change. Empty: nothing inside.
+std::optional<geometry::Segment> clip_to_block(const Box& box, const geometry::Segment& s) {
+  const Vec3 d = s.p1 - s.p0;
+  double t0 = 0, t1 = 1;
+  for (int a = 0; a < 3; ++a) {
+    if (d[a] == 0) {
+      if (s.p0[a] < box.min[a] || s.p0[a] > box.max[a]) return std::nullopt;
+      continue;
+    }
+    double ta = (box.min[a] - s.p0[a]) / d[a], tb = (box.max[a] - s.p0[a]) / d[a];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+  }
+  if (!(t0 < t1)) return std::nullopt;
+  return geometry::Segment{t0 > 0 ? Vec3(s.p0 + t0 * d) : s.p0, t1 < 1 ? Vec3(s.p0 + t1 * d) : s.p1};
+}
+
 }  // namespace
 
 // Field points expanded by their images, grouped by target (a sample, a wall point, a face),
@@ -195,7 +214,7 @@ struct LineSinkModel::Impl {
   }
 
   double heat_at(const Vec3& p) const {
-    if (heat_grid.values.empty() || heat_near.contains(p)) return heat_field(p);
+    if (heat_grid.values.empty() || heat_near.contains(p) || !setting.block.contains(p)) return heat_field(p);
     double v;
     heat_grid.interpolate(p, &v);
     return v;
@@ -400,7 +419,10 @@ struct LineSinkModel::Impl {
     }
     b->face_rows.resize(cols, faces.size());
     if (!faces.empty())
-      row_functionals(a, [&](const Vec3& p, double* v) { face_grid.interpolate(p, v); },
+      row_functionals(a, [&](const Vec3& p, double* v) {
+        if (setting.block.contains(p)) return face_grid.interpolate(p, v);
+        for (std::size_t f = 0; f < faces.size(); ++f) v[f] = face_field(faces[f], p);  // no extrapolation
+      },
                       int(faces.size()), b->face_rows.data(), cols);
     return b;
   }
@@ -613,6 +635,15 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
   const std::size_t nc = channels.size();
   if (nc == 0 && !m.fixed_constant)
     throw std::invalid_argument("line sinks: no channel and no isothermal face: no steady state");
+  // Only the steel conducts: a channel's part outside the block (a connection in the air) takes
+  // no heat, and its images would land inside.
+  std::vector<Channel> inside(channels.begin(), channels.end());
+  for (Channel& ch : inside) {
+    const auto clipped = clip_to_block(m.setting.block, ch.axis);
+    if (!clipped) throw std::invalid_argument("line sinks: a channel lies outside the block");
+    ch.axis = *clipped;
+  }
+  channels = inside;
   // Look up or build every channel's and pair's blocks.
   using Key = LineSinkCache::Key;
   std::vector<Key> keys(nc);

@@ -412,6 +412,16 @@ TEST_CASE("line sinks: stiff and extreme inputs stay finite and reach their limi
     const Comparison c = compare(Th, Tw);
     CHECK(c.rms < 0.15);
   }
+  SECTION("a bore reaching out of the block counts only inside the steel") {
+    auto out = bores;
+    out[0].axis.p0.x() = -30;  // 30 mm of the bore in the air
+    const auto T = model_of_block().temperatures(out, cache);
+    const auto base = model_of_block().temperatures(bores, cache);
+    CHECK(T == base);
+    auto away = bores;
+    away[0].axis.p0.z() = away[0].axis.p1.z() = 70;  // above the block
+    CHECK_THROWS_AS(model_of_block().temperatures(away, cache), std::invalid_argument);
+  }
   SECTION("everything moved by 1e4 mm in each axis") {
     Setting far = setting;
     const Vec3 d(1e4, 1e4, 1e4);
