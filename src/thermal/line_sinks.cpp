@@ -191,6 +191,7 @@ struct LineSinkModel::Impl {
   std::vector<Image> images;      // summed exactly
   std::vector<Image> far_images;  // summed as the charge and dipole of the whole block's image
   Vec3 center = Vec3::Zero();     // the block's centre: where the moments are taken
+  Vec3 sample_origin = Vec3::Zero();  // the samples' centre: their float coordinates' origin
   Eigen::Vector4d heat_moments = Eigen::Vector4d::Zero();
   std::vector<Eigen::Vector4d> face_moments;
   MatrixXd far_samples;       // samples x 4: the far lattice for the channels' columns
@@ -378,7 +379,7 @@ struct LineSinkModel::Impl {
         b->walls.close_target();
       }
     // At the samples.
-    const MatrixXd at_samples = columns_at(a, sample_set, options.single_precision, center);
+    const MatrixXd at_samples = columns_at(a, sample_set, options.single_precision, sample_origin);
     if (options.single_precision) {
       b->sample_cols_f.resize(n_samples * cols);
       for (int c = 0; c < cols; ++c)
@@ -518,8 +519,15 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
 
   // The samples: expanded by the images, and the layout-independent fields there.
   m.n_samples = samples.size();
+  // Float coordinates from the samples' own centre: a float resolves 6e-8 of their spread,
+  // not of the block's size or distance from the origin.
+  if (m.n_samples) {
+    Box bounds = Box::empty();
+    for (const Vec3& p : samples.points) bounds.min = bounds.min.cwiseMin(p), bounds.max = bounds.max.cwiseMax(p);
+    m.sample_origin = 0.5 * (bounds.min + bounds.max);
+  }
   for (const Vec3& p : samples.points) {
-    m.sample_set.add(sample_images, p, m.tol, 1.0, m.center);
+    m.sample_set.add(sample_images, p, m.tol, 1.0, m.sample_origin);
     m.sample_set.close_target();
   }
   if (m.n_samples) m.sample_set.make_slots();
