@@ -1,0 +1,59 @@
+#pragma once
+// The pieces of the line-sink tiers that know geometry but not the system: the block's image
+// lattice, and the fields of all elements of one channel at a point (shared distances).
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "mtcs/thermal/model.h"
+
+namespace mtcs::thermal {
+
+// One image of the block's reflection group: x -> mult .* x + offset, weighted by sign (-1 for
+// each reflection across an isothermal face). A source's image field at s equals the source's
+// field at the image of s, since the group is closed under inversion.
+struct Image {
+  Vec3 mult = Vec3::Ones();
+  Vec3 offset = Vec3::Zero();
+  double sign = 1;
+};
+// All images reached by at most `levels` reflections across the six faces (identity first).
+// face_sign: +1 (adiabatic or convective) or -1 (isothermal) per BlockFace.
+std::vector<Image> block_images(const Box& block, const std::array<double, 6>& face_sign,
+                                int levels);
+
+struct WeightedPoint {
+  Vec3 point;
+  double weight;
+};
+// Appends the images of s; images that land on s or on each other within tol (a point on a
+// face) are merged into one point of summed weight.
+void append_image_points(std::span<const Image> images, const Vec3& s, double tol,
+                         std::vector<WeightedPoint>& out);
+
+// A channel's axis cut into equal elements, with a transverse frame (n1, n2) for the dipoles.
+struct ChannelAxis {
+  Vec3 p0, u, n1, n2;
+  double length = 0, element_length = 0, radius = 0;
+  int elements = 1;
+};
+ChannelAxis channel_axis(const Channel& channel, int elements);
+
+// At s, for each element e: phi[e] = the line source's potential (notes 4.4), and when dip1 is
+// given, dip1[e], dip2[e] = the potential of a unit transverse line dipole along n1, n2.
+// Nodes are shared by neighbouring elements: elements + 1 square roots per point.
+void element_fields(const ChannelAxis& axis, const Vec3& s, double* phi, double* dip1,
+                    double* dip2);
+
+// element_fields for many points at once in single precision, vectorised (AVX2 when the CPU
+// has it): points as x, y, z arrays relative to `origin`, out[(e * kinds + k) * n + i] with
+// k = 0 the sink's phi and k = 1, 2 the dipoles (kinds 3). Relative error ~1e-6.
+void element_fields_float(const ChannelAxis& axis, const Vec3& origin, int kinds, const float* x,
+                          const float* y, const float* z, std::size_t n, float* out);
+
+// The potential of a uniform unit source on a triangle, summed over the images at s.
+double triangle_image_potential(std::span<const Image> images, const Vec3& a, const Vec3& b,
+                                const Vec3& c, const Vec3& s);
+
+}  // namespace mtcs::thermal

@@ -1,0 +1,133 @@
+// The line-sink kernels against closed forms and brute-force quadrature.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "thermal/segment_potential.h"
+
+using namespace mtcs::thermal;
+
+namespace {
+
+// Composite Gauss-Legendre (5 points) over n panels of the segment: the independent check.
+template <class F>
+double integrate_segment(const Vec3& a, const Vec3& b, int panels, F&& f) {
+  static const double x[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
+                              0.9061798459386640};
+  static const double w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
+                              0.4786286704993665, 0.2369268850561891};
+  const double L = (b - a).norm();
+  double sum = 0;
+  for (int p = 0; p < panels; ++p)
+    for (int g = 0; g < 5; ++g) {
+      const double t = (p + 0.5 + 0.5 * x[g]) / panels;
+      sum += w[g] * 0.5 / panels * f(a + t * (b - a));
+    }
+  return sum * L;
+}
+
+// Midpoint rule on n x n sub-triangles (4^k refinement by barycentric grid).
+double integrate_triangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& s, int n) {
+  const double area = 0.5 * (b - a).cross(c - a).norm();
+  double sum = 0;
+  // Upward and downward sub-triangles of the barycentric grid, each sampled at 3 interior points.
+  auto tri = [&](const Vec3& p, const Vec3& q, const Vec3& r) {
+    const Vec3 m1 = (4 * p + q + r) / 6, m2 = (p + 4 * q + r) / 6, m3 = (p + q + 4 * r) / 6;
+    return ((s - m1).norm() > 0 ? 1 / (s - m1).norm() : 0) +
+           ((s - m2).norm() > 0 ? 1 / (s - m2).norm() : 0) +
+           ((s - m3).norm() > 0 ? 1 / (s - m3).norm() : 0);
+  };
+  auto at = [&](int i, int j) { return a + (double(i) / n) * (b - a) + (double(j) / n) * (c - a); };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; i + j < n; ++j) {
+      sum += tri(at(i, j), at(i + 1, j), at(i, j + 1));
+      if (i + j + 1 < n) sum += tri(at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  return sum / 3 * area / (double(n) * n);
+}
+
+}  // namespace
+
+TEST_CASE("segment potential opposite the midpoint equals 2 asinh(L/2 rho) for any rho") {
+  const Vec3 a(-500, 0, 0), b(500, 0, 0);
+  for (double rho : {10.0, 1.0, 1e-3, 1e-5, 1e-7, 1e-9}) {
+    const double exact = 2 * std::asinh(500 / rho);
+    CHECK(segment_potential(a, b, Vec3(0, rho, 0)) == Approx(exact).epsilon(1e-14));
+  }
+}
+
+TEST_CASE("segment potential keeps its precision far from the origin") {
+  const Vec3 offset(1e4, -1e4, 1e4);
+  const Vec3 a(0, 0, 0), b(0, 0, 1e6);  // aspect ratio 1e6 against a 1 mm bore
+  const Vec3 s(0.5, 0, 3e5);
+  const double exact = std::asinh(3e5 / 0.5) + std::asinh(7e5 / 0.5);
+  CHECK(segment_potential(a, b, s) == Approx(exact).epsilon(1e-14));
+  // Offsetting moves the inputs by 1e4: the relative error of the offset, 1e-16 * 1e4 / 0.5.
+  CHECK(segment_potential(a + offset, b + offset, s + offset) == Approx(exact).epsilon(1e-10));
+}
+
+TEST_CASE("segment potential and dipole factor match quadrature beyond the ends and beside") {
+  const Vec3 a(1, 2, 3), b(4, -1, 7);
+  const Vec3 points[] = {Vec3(9, 5, -2), Vec3(2.5, 0.5, 5) + Vec3(0.3, 0.1, -0.2),
+                         b + 2.0 * (b - a) + Vec3(0, 1e-3, 0), a - 0.5 * (b - a),
+                         Vec3(-20, 30, 11)};
+  for (const Vec3& s : points) {
+    const SegmentField f = segment_field(a, b, s);
+    const double phi = integrate_segment(a, b, 2000, [&](const Vec3& y) { return 1 / (s - y).norm(); });
+    CHECK(f.phi == Approx(phi).epsilon(1e-9));
+    // A transverse unit moment: the dipole integral by quadrature.
+    const Vec3 p = (b - a).unitOrthogonal();
+    const double dip = integrate_segment(a, b, 2000, [&](const Vec3& y) {
+      return (s - y).dot(p) / std::pow((s - y).norm(), 3);
+    });
+    CHECK(f.dipole_factor * p.dot(f.rho) == Approx(dip).epsilon(1e-8).margin(1e-14));
+  }
+}
+
+TEST_CASE("dipole factor on the axis beyond an end stays finite and exact") {
+  // On the axis the transverse offset is zero, but the factor must not be 0/0:
+  // (t_a/r_a - t_b/r_b) / rho^2 -> (1/t_b^2 - 1/t_a^2) / 2 as rho -> 0.
+  const Vec3 a(0, 0, 0), b(10, 0, 0);
+  const SegmentField f = segment_field(a, b, Vec3(15, 1e-9, 0));
+  CHECK(std::isfinite(f.dipole_factor));
+  CHECK(f.dipole_factor == Approx(0.5 * (1 / 25.0 - 1 / 225.0)).epsilon(1e-9));
+  const SegmentField g = segment_field(a, b, Vec3(-5, 0, 0));
+  CHECK(g.dipole_factor == Approx(0.5 * (1 / 25.0 - 1 / 225.0)).epsilon(1e-12));
+}
+
+TEST_CASE("triangle potential matches quadrature off, in and on its plane") {
+  const Vec3 a(0, 0, 0), b(4, 0.5, 0.2), c(1, 3, -0.4);
+  const Vec3 n = (b - a).cross(c - a).normalized();
+  const Vec3 centroid = (a + b + c) / 3;
+  struct Case { Vec3 s; double tol; };
+  const Case cases[] = {
+      {centroid + 2.0 * n, 1e-6},            // above
+      {centroid - 0.3 * n, 1e-4},            // close below
+      {Vec3(10, -7, 5), 1e-7},               // far
+      {a + 1.5 * (b - a) + 0.0 * n, 1e-5},   // in the plane, beyond an edge line
+      {2.0 * c - centroid, 1e-5},            // in the plane, outside
+      {centroid, 2e-3},                      // on the triangle: integrable singularity
+      {0.5 * (a + b), 2e-3},                 // on an edge
+  };
+  for (const Case& k : cases) {
+    const double quad = integrate_triangle(a, b, c, k.s, 400);
+    CHECK(triangle_potential(a, b, c, k.s) == Approx(quad).epsilon(k.tol));
+    CHECK(std::isfinite(triangle_potential(a, b, c, k.s)));
+  }
+}
+
+TEST_CASE("triangle potential: a square's centre, the closed form 8 a asinh(1)") {
+  // Unit density on the square [-a,a]^2 at its centre: 8 a asinh(1); two triangles.
+  const double h = 3;
+  const Vec3 p00(-h, -h, 0), p10(h, -h, 0), p11(h, h, 0), p01(-h, h, 0);
+  const Vec3 o(0, 0, 0);
+  const double sum = triangle_potential(p00, p10, p11, o) + triangle_potential(p00, p11, p01, o);
+  CHECK(sum == Approx(8 * h * std::asinh(1.0)).epsilon(1e-13));
+  // At height z above the centre of the square (Durand): far away it tends to area / z.
+  const Vec3 far(0, 0, 1e5);
+  const double sum_far = triangle_potential(p00, p10, p11, far) + triangle_potential(p00, p11, p01, far);
+  CHECK(sum_far == Approx(36.0 / 1e5).epsilon(1e-8));
+  // Orientation does not matter for a potential.
+  CHECK(triangle_potential(p00, p11, p10, Vec3(1, 2, 0.5)) ==
+        Approx(triangle_potential(p00, p10, p11, Vec3(1, 2, 0.5))).epsilon(1e-14));
+}
