@@ -328,7 +328,7 @@ thermal:
   heat_flux: 50000
   tier: t2d
 objectives:
-  use: [uniformity, worst_covered, cost]
+  use: [temperature_std, temperature_max, cost]
   scales: {uniformity: 5, worst_covered: 20, cost: 1000, temperature_mean: 10, temperature_std: 1,
            temperature_max: 10, cycle_time: 10}
   cost: {setup: 20, per_mm: 0.05, deep_factor: 0.02, plug: 5}

@@ -3,6 +3,8 @@
 #include <chrono>
 #include <cmath>
 
+#include "mtcs/eval/thermal_model.h"
+#include "mtcs/eval/thermal_tiers.h"
 #include "mtcs/mold/decoder.h"
 #include "stages.h"
 
@@ -22,10 +24,8 @@ Pipeline::Pipeline(const mold::Scene& scene, const TemperatureSolverFactory& tem
   for (const mold::Objective o : use) {
     if (!mold::is_temperature_objective(o)) continue;
     if (!spec.cavity) throw std::invalid_argument("the temperature objectives need a cavity");
-    if (!temperatures)
-      throw std::invalid_argument("objective " + mold::to_string(o) + " needs a thermal solver (tier " +
-                                  mold::to_string(spec.thermal.tier) + "), and none was given");
-    stages_.push_back(make_temperature_stage(scene, temperatures));
+    stages_.push_back(make_temperature_stage(scene, temperatures ? temperatures : temperature_solver(spec.thermal.tier)));
+    samples_ = std::max(samples_, thermal_samples(scene).size());
     break;
   }
   if (uses(mold::Objective::Cost)) stages_.push_back(make_cost_stage(scene));

@@ -24,12 +24,12 @@ class Stage {
 
 class Pipeline {
  public:
-  // The temperature objectives need `temperatures`, which builds the thermal tier's solver
-  // (std::invalid_argument without one when the spec uses them).
+  // The temperature objectives ask the solver `temperatures` builds; by default the one of the
+  // spec's thermal tier (eval/thermal_tiers.h). Tests and benchmarks may pass their own.
   explicit Pipeline(const mold::Scene& scene, const TemperatureSolverFactory& temperatures = {});
   ~Pipeline();
 
-  // Thread-safe: stages hold only data built at construction.
+  // Thread-safe: stages hold only data built at construction (and per-thread caches).
   Evaluation evaluate(const mold::Genome& genome, bool timed = false) const;
   Evaluation evaluate(const mold::Layout& layout, bool timed = false) const;
 

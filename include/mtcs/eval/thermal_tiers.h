@@ -1,0 +1,15 @@
+#pragma once
+// The thermal tiers as the pipeline's temperature solvers: the spec's `thermal.tier` picks one
+// (t1, t2, t2d: line sinks with `elements_per_bore`; fd: finite volumes at `cell_size`).
+
+#include "mtcs/eval/temperature_objectives.h"
+#include "mtcs/mold/mold_spec.h"
+
+namespace mtcs::eval {
+
+// The factory for that tier. Line sinks keep one cache per thread, so that a layout sharing
+// channels with the one the same thread scored last recomputes only the channels that changed
+// (the result is bit-identical to a cold evaluation: the thread count does not change it).
+TemperatureSolverFactory temperature_solver(mold::ThermalTier tier);
+
+}  // namespace mtcs::eval

@@ -1,0 +1,51 @@
+#include "mtcs/eval/thermal_tiers.h"
+
+#include <memory>
+
+#include <tbb/enumerable_thread_specific.h>
+
+#include "mtcs/thermal/finite_volume.h"
+#include "mtcs/thermal/line_sinks.h"
+
+namespace mtcs::eval {
+namespace {
+
+thermal::Tier line_sink_tier(mold::ThermalTier tier) {
+  switch (tier) {
+    case mold::ThermalTier::T1: return thermal::Tier::T1;
+    case mold::ThermalTier::T2: return thermal::Tier::T2;
+    default: return thermal::Tier::T2d;
+  }
+}
+
+// The model and its per-thread caches live as long as the solver (shared by its copies).
+struct LineSinks {
+  LineSinks(const thermal::Setting& setting, const thermal::Samples& samples, const thermal::LineSinkOptions& options)
+      : model(setting, samples, options) {}
+  thermal::LineSinkModel model;
+  tbb::enumerable_thread_specific<thermal::LineSinkCache> caches;
+};
+
+}  // namespace
+
+TemperatureSolverFactory temperature_solver(mold::ThermalTier tier) {
+  if (tier == mold::ThermalTier::Fd)
+    return [](const thermal::Setting& setting, const thermal::Samples& samples, const mold::ThermalSpec& spec) {
+      thermal::FvOptions options;
+      options.cell = spec.cell_size;
+      return TemperatureSolver([&setting, &samples, options](const std::vector<thermal::Channel>& channels) {
+        return thermal::solve_finite_volume({setting, channels}, samples, options).temperature;
+      });
+    };
+  return [tier](const thermal::Setting& setting, const thermal::Samples& samples, const mold::ThermalSpec& spec) {
+    thermal::LineSinkOptions options;
+    options.tier = line_sink_tier(tier);
+    options.elements = spec.elements_per_bore;
+    auto sinks = std::make_shared<LineSinks>(setting, samples, options);
+    return TemperatureSolver([sinks](const std::vector<thermal::Channel>& channels) {
+      return sinks->model.temperatures(channels, sinks->caches.local());
+    });
+  };
+}
+
+}  // namespace mtcs::eval
