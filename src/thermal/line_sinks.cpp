@@ -131,7 +131,7 @@ struct LineSinkModel::Impl {
   MatrixXd far_face_means;                   // faces x 4: the far lattice for the channels
   MatrixXd far_face_means_fixed;             // the same for the heat input and the faces
   FieldGrid face_grid;
-  // The heat input's field on a ~3 mm grid, for collocation points off `heat_near` (the heated
+  // The heat input's field on a `heat_grid` mm grid, for collocation points off `heat_near` (the heated
   // triangles' bounds grown by two cells); nearer, it is summed exactly.
   FieldGrid heat_grid;
   Box heat_near = Box::empty();
