@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "line_sink_fields.h"
+#include "line_sink_tables.h"
 #include "segment_potential.h"
 
 namespace mtcs::thermal {
@@ -74,45 +75,6 @@ std::optional<geometry::Segment> clip_to_block(const Box& box, const geometry::S
 
 }  // namespace
 
-// Field points expanded by their images, grouped by target (a sample, a wall point, a face),
-// in double and, relative to the block's centre, in float for the vectorised kernel.
-struct PointSet {
-  std::vector<WeightedPoint> points;
-  std::vector<float> x, y, z;
-  std::vector<std::size_t> begin{0};
-  std::size_t targets() const { return begin.size() - 1; }
-  void add(std::span<const Image> images, const Vec3& p, double tol, double weight, const Vec3& centre) {
-    const std::size_t first = points.size();
-    append_image_points(images, p, tol, points);
-    for (std::size_t i = first; i < points.size(); ++i) {
-      points[i].weight *= weight;
-      const Vec3 r = points[i].point - centre;
-      x.push_back(float(r.x()));
-      y.push_back(float(r.y()));
-      z.push_back(float(r.z()));
-    }
-  }
-  void close_target() { begin.push_back(points.size()); }
-
-  // The slot layout of many targets (the samples): point j of target t at j * T + t, targets
-  // with fewer images padded with weight 0, so that the sum over images runs contiguously.
-  int slots = 0;
-  std::vector<float> sx, sy, sz, sw;
-  void make_slots() {
-    const std::size_t T = targets();
-    slots = 0;
-    for (std::size_t t = 0; t < T; ++t) slots = std::max(slots, int(begin[t + 1] - begin[t]));
-    const std::size_t n = std::size_t(slots) * T;
-    sx.assign(n, 0.0f), sy.assign(n, 0.0f), sz.assign(n, 0.0f), sw.assign(n, 0.0f);
-    for (std::size_t t = 0; t < T; ++t)
-      for (int j = 0; j < slots; ++j) {
-        const std::size_t i = std::min(begin[t] + j, begin[t + 1] - 1), k = j * T + t;
-        sx[k] = x[i], sy[k] = y[i], sz[k] = z[i];
-        sw[k] = begin[t] + j < begin[t + 1] ? float(points[i].weight) : 0.0f;
-      }
-  }
-};
-
 // ---- cache blocks ----------------------------------------------------------------------------
 
 struct LineSinkCache::ChannelBlock {
@@ -152,36 +114,6 @@ struct ConvectiveFace {
   Vec3 center;
 };
 
-// The convective faces' unit-loss fields on a regular grid over the block, interpolated
-// tricubically: they are smooth inside the block (the images continue each face's sheet across
-// the edges), small next to the heat input, and needed at every collocation point.
-struct FaceFieldGrid {
-  Vec3 origin, step;
-  std::array<int, 3> nodes{};
-  int fields = 0;
-  std::vector<double> values;  // per node (x fastest), `fields` values
-
-  void interpolate(const Vec3& p, double* out) const {
-    std::array<int, 3> i0;
-    std::array<std::array<double, 4>, 3> w;
-    for (int a = 0; a < 3; ++a) {
-      const double u = (p[a] - origin[a]) / step[a];
-      i0[a] = std::clamp(int(std::floor(u)) - 1, 0, nodes[a] - 4);
-      const double t = u - i0[a];  // stencil nodes at 0, 1, 2, 3
-      w[a] = {-(t - 1) * (t - 2) * (t - 3) / 6, t * (t - 2) * (t - 3) / 2,
-              -t * (t - 1) * (t - 3) / 2, t * (t - 1) * (t - 2) / 6};
-    }
-    std::fill(out, out + fields, 0.0);
-    for (int k = 0; k < 4; ++k)
-      for (int j = 0; j < 4; ++j)
-        for (int i = 0; i < 4; ++i) {
-          const double wt = w[0][i] * w[1][j] * w[2][k];
-          const double* v = &values[((std::size_t(i0[2] + k) * nodes[1] + (i0[1] + j)) * nodes[0] + (i0[0] + i)) * fields];
-          for (int f = 0; f < fields; ++f) out[f] += wt * v[f];
-        }
-  }
-};
-
 struct LineSinkModel::Impl {
   Setting setting;
   LineSinkOptions options;
@@ -198,15 +130,15 @@ struct LineSinkModel::Impl {
   MatrixXd far_samples_fixed; // the same for the heat input and the faces (exact to `images`)
   MatrixXd far_face_means;                   // faces x 4: the far lattice for the channels
   MatrixXd far_face_means_fixed;             // the same for the heat input and the faces
-  FaceFieldGrid face_grid;
-  // The heat input's field on a ~3 mm grid, for collocation points off `heat_near` (the heated
+  FieldGrid face_grid;
+  // The heat input's field on a `heat_grid` mm grid, for collocation points off `heat_near` (the heated
   // triangles' bounds grown by two cells); nearer, it is summed exactly.
-  FaceFieldGrid heat_grid;
+  FieldGrid heat_grid;
   Box heat_near = Box::empty();
 
   // The far lattice's kernel on the same grid: its images of the centre lie a block's width or
   // more outside, so it is smooth everywhere inside.
-  FaceFieldGrid far_grid;
+  FieldGrid far_grid;
   Eigen::Vector4d far_at(const Vec3& p) const {
     if (far_grid.values.empty() || !setting.block.contains(p)) return far_kernel(p);
     Eigen::Vector4d v;
@@ -554,7 +486,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     m.far_face_means_fixed.row(f) /= double(m.faces[f].cool.size());
   }
   if (nf) {
-    FaceFieldGrid& g = m.face_grid;
+    FieldGrid& g = m.face_grid;
     constexpr int cells = 10;
     g.origin = box.min;
     g.step = box.size() / cells;
@@ -572,7 +504,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
   // Tabulated fields pay off only at their spacing: a block too large for 64 cells of
   // `heat_grid` mm per axis sums them exactly.
   const bool grids = options.heat_grid > 0 && (box.size() / options.heat_grid).maxCoeff() <= 64;
-  auto grid_over_block = [&](FaceFieldGrid& g, int fields) {
+  auto grid_over_block = [&](FieldGrid& g, int fields) {
     g.origin = box.min;
     g.fields = fields;
     for (int a = 0; a < 3; ++a) {
@@ -583,7 +515,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     g.values.resize(std::size_t(g.nodes[0]) * g.nodes[1] * g.nodes[2] * fields);
   };
   if (!m.far_images.empty() && grids) {
-    FaceFieldGrid& g = m.far_grid;
+    FieldGrid& g = m.far_grid;
     grid_over_block(g, 4);
     std::size_t n = 0;
     for (int k = 0; k < g.nodes[2]; ++k)
@@ -594,7 +526,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
         }
   }
   if (!setting.heat_in.empty() && grids) {
-    FaceFieldGrid& g = m.heat_grid;
+    FieldGrid& g = m.heat_grid;
     grid_over_block(g, 1);
     std::size_t n = 0;
     for (int k = 0; k < g.nodes[2]; ++k)
