@@ -1,0 +1,46 @@
+#pragma once
+// The cavity-surface temperature of one layout, for people rather than the optimiser: what
+// `mtcs thermal` prints and writes. The summary at the cavity samples (the numbers the
+// temperature objectives use), the heat balance, temperatures at any points, and a field on a
+// refined copy of the cavity surface for ParaView / MeshLab.
+
+#include <string>
+#include <vector>
+
+#include "mtcs/mesh/surface_field.h"
+#include "mtcs/mold/layout.h"
+#include "mtcs/mold/scene.h"
+#include "mtcs/thermal/model.h"
+
+namespace mtcs::eval {
+
+struct ThermalQuery {
+  mold::ThermalTier tier = mold::ThermalTier::T2d;
+  int elements = 4;   // per bore, line sinks
+  double cell = 2;    // mm, finite volumes
+};
+// The spec's tier and settings.
+ThermalQuery thermal_query(const mold::MoldSpec& spec);
+
+struct HeatBalance {
+  double in = 0, to_channels = 0, to_faces = 0;  // W
+  double residual() const { return in - to_channels - to_faces; }
+};
+
+struct CavityTemperature {
+  std::string tier;                  // t1, t2, t2d, fd
+  thermal::Summary summary;          // area-weighted over the cavity samples
+  geometry::Vec3 hottest;            // where the maximum is
+  std::vector<double> at_samples;    // degrees C, at thermal_samples(scene)
+  std::vector<double> at_points;     // degrees C, at the extra points asked for
+  HeatBalance balance;
+  double seconds = 0;                // the solve (and the model's construction)
+  mesh::SurfaceField field;          // filled when a field was asked for
+};
+
+// Solves once for the layout. `points`: extra points (e.g. a user's CSV); `field_edge` > 0: also
+// the field on the cavity surface refined to edges of about that length (mm).
+CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layout& layout, const ThermalQuery& query,
+                                     const std::vector<geometry::Vec3>& points = {}, double field_edge = 0);
+
+}  // namespace mtcs::eval

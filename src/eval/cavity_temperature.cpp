@@ -1,0 +1,84 @@
+#include "mtcs/eval/cavity_temperature.h"
+
+#include <chrono>
+#include <map>
+
+#include "mtcs/eval/thermal_model.h"
+#include "mtcs/thermal/finite_volume.h"
+#include "mtcs/thermal/line_sinks.h"
+
+namespace mtcs::eval {
+namespace {
+
+using geometry::Vec3;
+
+// The heated triangles as one mesh (shared corners merged): the cavity surface as the thermal
+// model sees it.
+mesh::TriangleMesh heated_surface(const thermal::Setting& setting) {
+  mesh::TriangleMesh m;
+  std::map<std::array<double, 3>, int> index;
+  auto vertex = [&](const Vec3& p) {
+    auto [it, fresh] = index.try_emplace({p.x(), p.y(), p.z()}, int(m.vertices.size()));
+    if (fresh) m.vertices.push_back(p);
+    return it->second;
+  };
+  for (const auto& t : setting.heat_in) m.triangles.push_back({vertex(t.a), vertex(t.b), vertex(t.c)});
+  return m;
+}
+
+thermal::Tier line_sink_tier(mold::ThermalTier t) {
+  return t == mold::ThermalTier::T1 ? thermal::Tier::T1 : t == mold::ThermalTier::T2 ? thermal::Tier::T2 : thermal::Tier::T2d;
+}
+
+}  // namespace
+
+ThermalQuery thermal_query(const mold::MoldSpec& spec) {
+  return {spec.thermal.tier, spec.thermal.elements_per_bore, spec.thermal.cell_size};
+}
+
+CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layout& layout, const ThermalQuery& query,
+                                     const std::vector<Vec3>& points, double field_edge) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const thermal::Setting setting = thermal_setting(scene);
+  const thermal::Samples samples = thermal_samples(scene);
+  const std::vector<thermal::Channel> channels = thermal_channels(layout, scene.spec());
+  CavityTemperature out;
+  out.tier = mold::to_string(query.tier);
+  if (field_edge > 0) out.field = {mesh::refine(heated_surface(setting), field_edge), {}, "temperature", "degC"};
+
+  // Every point where a temperature is wanted, in one set: the samples, the extra points, the
+  // field's vertices (weights matter only for the samples' summary).
+  thermal::Samples all = samples;
+  for (const Vec3& p : points) all.points.push_back(p), all.weights.push_back(0);
+  for (const Vec3& p : out.field.surface.vertices) all.points.push_back(p), all.weights.push_back(0);
+
+  std::vector<double> t;
+  if (query.tier == mold::ThermalTier::Fd) {
+    thermal::FvOptions options;
+    options.cell = query.cell;
+    const thermal::FvResult r = thermal::solve_finite_volume({setting, channels}, all, options);
+    t = r.temperature;
+    out.balance = {r.heat_in, r.heat_to_channels, r.heat_to_faces};
+  } else {
+    thermal::LineSinkOptions options;
+    options.tier = line_sink_tier(query.tier);
+    options.elements = query.elements;
+    const thermal::LineSinkModel model(setting, all, options);
+    thermal::LineSinkCache cache;
+    const thermal::LineSinkSolution r = model.solve(channels, cache);
+    t = r.temperature;
+    double to_channels = 0;
+    for (double q : r.channel_heat) to_channels += q;
+    out.balance = {r.heat_in, to_channels, r.face_heat};
+  }
+  const std::size_t n = samples.size(), m = points.size();
+  out.at_samples.assign(t.begin(), t.begin() + std::ptrdiff_t(n));
+  out.at_points.assign(t.begin() + std::ptrdiff_t(n), t.begin() + std::ptrdiff_t(n + m));
+  out.field.values.assign(t.begin() + std::ptrdiff_t(n + m), t.end());
+  out.summary = thermal::summarize(out.at_samples, samples);
+  if (n > 0) out.hottest = samples.points[out.summary.hottest];
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace mtcs::eval
