@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace mtcs::cli {
+namespace mtcs::bench {
 
 // For each mesh and its certified cases: BVH build time and cylinder-vs-mesh distance time and
 // error, ours (exact, and with the upper bound bound_fraction x the mesh's largest extent) and
@@ -12,4 +12,4 @@ namespace mtcs::cli {
 int bench_clearance(const std::vector<std::string>& meshes, const std::vector<std::string>& cases, int repeat,
                     int builds, double bound_fraction);
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::bench

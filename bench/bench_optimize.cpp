@@ -6,11 +6,15 @@
 
 #include <chrono>
 #include <cmath>
+#include <iostream>
+#include <memory>
 
 #include "bench_optimize.h"
+#include "mtcs/io/atomic_file.h"
+#include "run_config.h"
 #include "mtcs/mold/layout_io.h"
 
-namespace mtcs::cli {
+namespace mtcs::bench {
 namespace {
 
 using geometry::Vec3;
@@ -115,4 +119,44 @@ OptimizeTrace bench_nlopt(const MoldProblem& problem, const mold::Scene& scene, 
   return trace;
 }
 
-}  // namespace mtcs::cli
+int bench_optimize(const OptimizeRuns& oo) {
+  const mold::Scene scene(mold::load_mold_spec(oo.mold));
+  const eval::Pipeline pipeline(scene);
+  const RunConfig config = oo.config.empty() ? RunConfig{} : load_run_config(oo.config, pipeline.objective_names());
+  const MoldProblem problem(pipeline, config.weights, config.mutation);
+  // NLopt's fixed topology: a layout file, or by default the seed's first random sample (the
+  // same kind of start the ES gets).
+  auto topology_for = [&](std::uint64_t seed) {
+    if (!oo.topology.empty()) return mold::load_layout(oo.topology, scene.spec());
+    opt::Rng rng = opt::Rng::for_individual(seed, 0, 0);
+    return problem.genome(problem.sample(rng));
+  };
+  std::unique_ptr<io::AtomicFile> trace;
+  if (!oo.trace.empty()) {
+    trace = std::make_unique<io::AtomicFile>(oo.trace);
+    trace->stream() << "algorithm,seed,evaluations,best_feasible\n";
+  }
+  std::cout << "mold,algorithm,seed,evaluations,best_objective,feasible,seconds\n";
+  for (int seed = 1; seed <= oo.seeds; ++seed) {
+    OptimizeTrace t;
+    if (oo.algorithm == "nlopt") {
+      t = bench_nlopt(problem, scene, topology_for(std::uint64_t(seed)), oo.evaluations, std::uint64_t(seed));
+    } else {
+      opt::EsConfig es = config.es;
+      es.seed = std::uint64_t(seed);
+      es.evaluations = oo.evaluations;
+      es.random_search = oo.algorithm == "random";
+      es.min_step = 0.1 * *std::min_element(scene.spec().drilling.diameters.begin(), scene.spec().drilling.diameters.end());
+      t = bench_es(problem, es);
+    }
+    std::cout << oo.mold << ',' << oo.algorithm << ',' << seed << ',' << oo.evaluations << ',' << t.best.value << ','
+              << (t.best.feasible ? 1 : 0) << ',' << t.seconds << std::endl;
+    if (trace)
+      for (const auto& p : t.points)
+        trace->stream() << oo.algorithm << ',' << seed << ',' << p.evaluations << ',' << p.best_feasible << '\n';
+  }
+  if (trace) trace->commit();
+  return 0;
+}
+
+}  // namespace mtcs::bench

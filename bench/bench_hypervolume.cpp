@@ -15,7 +15,7 @@
 #include "mtcs/opt/hypervolume.h"
 #include "pagmo_peer.h"
 
-namespace mtcs::cli {
+namespace mtcs::bench {
 namespace {
 
 namespace fs = std::filesystem;
@@ -97,4 +97,4 @@ int bench_hypervolume(const std::string& dir, int repeat, std::size_t max_contri
   return 0;
 }
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::bench

@@ -6,7 +6,7 @@
 
 #include "mtcs/mesh/triangle_mesh.h"
 
-namespace mtcs::cli {
+namespace mtcs::bench {
 
 class CgalMesh {
  public:
@@ -22,4 +22,4 @@ class CgalMesh {
 
 bool cgal_do_intersect(const CgalMesh& a, const CgalMesh& b);
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::bench

@@ -9,7 +9,7 @@
 #include "mtcs/mold/genome.h"
 #include "mtcs/mold/scene.h"
 
-namespace mtcs::cli {
+namespace mtcs::bench {
 
 struct EvaluateBench {
   int bores = 0;
@@ -24,4 +24,9 @@ std::vector<mold::Genome> random_genomes(const mold::Scene& scene, int count, in
                                          std::uint64_t seed);
 EvaluateBench bench_evaluate(const mold::Scene& scene, const std::vector<mold::Genome>& genomes, int threads);
 
-}  // namespace mtcs::cli
+// mtcs bench evaluate: one row on one thread and one on `threads`; CSV on stdout, the stages'
+// times on stderr.
+int bench_evaluate_rows(const std::string& mold_path, int threads, int evaluations, int circuits, int bores,
+                        std::uint64_t seed);
+
+}  // namespace mtcs::bench

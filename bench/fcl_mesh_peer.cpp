@@ -6,7 +6,7 @@
 
 #include <algorithm>
 
-namespace mtcs::cli {
+namespace mtcs::bench {
 
 struct FclMesh::Impl {
   fcl::BVHModel<fcl::OBBRSSd> model;
@@ -60,4 +60,4 @@ double fcl_mesh_distance(const FclMesh& a, const FclMesh& b) {
   return fcl::distance(&a.impl_->model, identity, &b.impl_->model, identity, request, result);
 }
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::bench

@@ -6,7 +6,7 @@
 
 #include "mtcs/geometry/primitives.h"
 
-namespace mtcs::cli {
+namespace mtcs::bench {
 
 class FclPair {
  public:
@@ -21,4 +21,4 @@ class FclPair {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::bench

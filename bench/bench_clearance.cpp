@@ -20,7 +20,7 @@
 #include "mtcs/mesh/bvh.h"
 #include "mtcs/mesh/mesh_io.h"
 
-namespace mtcs::cli {
+namespace mtcs::bench {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -131,4 +131,4 @@ int bench_clearance(const std::vector<std::string>& meshes, const std::vector<st
   return 0;
 }
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::bench

@@ -15,7 +15,7 @@
 #include "mtcs/mold/decoder.h"
 #include "mtcs/opt/rng.h"
 
-namespace mtcs::cli {
+namespace mtcs::bench {
 namespace {
 
 using geometry::Vec3;
@@ -110,4 +110,22 @@ EvaluateBench bench_evaluate(const mold::Scene& scene, const std::vector<mold::G
   return r;
 }
 
-}  // namespace mtcs::cli
+int bench_evaluate_rows(const std::string& mold_path, int threads, int evaluations, int circuits, int bores,
+                        std::uint64_t seed) {
+  const mold::Scene scene(mold::load_mold_spec(mold_path));
+  const auto genomes = random_genomes(scene, evaluations, circuits, bores, seed);
+  std::cout << "mold,threads,bores,samples,evaluations_per_second\n";
+  std::vector<int> rows{1};
+  if (threads > 1) rows.push_back(threads);
+  for (const int t : rows) {
+    const auto r = bench_evaluate(scene, genomes, t);
+    std::cout << mold_path << ',' << t << ',' << r.bores << ',' << r.samples << ',' << r.evaluations_per_second << '\n';
+    if (t == 1) {
+      std::cerr << "stage,microseconds_per_evaluation\n";
+      for (const auto& [name, sec] : r.stage_seconds) std::cerr << name << ',' << sec * 1e6 << '\n';
+    }
+  }
+  return 0;
+}
+
+}  // namespace mtcs::bench

@@ -9,7 +9,7 @@
 #include "mtcs/opt/sms_emoa.h"
 #include "pagmo_peer.h"
 
-namespace mtcs::cli {
+namespace mtcs::bench {
 namespace {
 
 bool dominates(const std::vector<double>& a, const std::vector<double>& b) {
@@ -58,4 +58,4 @@ int bench_sms(const std::string& problem, const std::vector<std::string>& algori
   return 0;
 }
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::bench

@@ -5,14 +5,14 @@
 #include <string>
 #include <vector>
 
-namespace mtcs::cli {
+namespace mtcs::bench {
 
 double pagmo_hypervolume(const std::vector<std::vector<double>>& points, const std::vector<double>& ref);
 std::vector<double> pagmo_contributions(const std::vector<std::vector<double>>& points, const std::vector<double>& ref);
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::bench
 
-namespace mtcs::cli {
+namespace mtcs::bench {
 
 // pagmo's NSGA-II (Deb's settings: crossover 0.9, eta_c 20, mutation 1/n, eta_m 20) or MOEA/D
 // (grid weights for 2 objectives, low-discrepancy for 3; Tchebycheff) on pagmo's own ZDT/DTLZ, population 100: the final objective
@@ -20,4 +20,4 @@ namespace mtcs::cli {
 std::vector<std::vector<double>> pagmo_run(const std::string& name, const std::string& algorithm, long evaluations,
                                            unsigned seed);
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::bench

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace mtcs::cli {
+namespace mtcs::bench {
 namespace {
 
 // FCL cylinders are centred at the origin with the axis along z.
@@ -39,4 +39,4 @@ double FclPair::distance() const {
   return std::max(0.0, d);
 }
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::bench

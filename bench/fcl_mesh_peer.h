@@ -11,7 +11,7 @@
 #include "mtcs/geometry/primitives.h"
 #include "mtcs/mesh/triangle_mesh.h"
 
-namespace mtcs::cli {
+namespace mtcs::bench {
 
 class FclMesh {
  public:
@@ -35,4 +35,4 @@ std::vector<std::array<int, 2>> fcl_colliding_pairs(const FclMesh& a, const FclM
 // FCL's distance between the two surfaces (its exact mode: no relative error allowed).
 double fcl_mesh_distance(const FclMesh& a, const FclMesh& b);
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::bench

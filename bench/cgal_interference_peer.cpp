@@ -6,7 +6,7 @@
 #include <CGAL/Polygon_mesh_processing/intersection.h>
 #include <CGAL/Surface_mesh.h>
 
-namespace mtcs::cli {
+namespace mtcs::bench {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 
@@ -28,4 +28,4 @@ bool cgal_do_intersect(const CgalMesh& a, const CgalMesh& b) {
   return CGAL::Polygon_mesh_processing::do_intersect(a.impl_->mesh, b.impl_->mesh);
 }
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::bench

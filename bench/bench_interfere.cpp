@@ -19,7 +19,7 @@
 #include "mtcs/mesh/interference.h"
 #include "mtcs/mesh/mesh_io.h"
 
-namespace mtcs::cli {
+namespace mtcs::bench {
 namespace {
 
 using mesh::InterferenceBvh;
@@ -129,4 +129,4 @@ int bench_interfere(const std::string& cases, const std::string& meshes, int rep
   return 0;
 }
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::bench

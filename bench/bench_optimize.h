@@ -1,13 +1,19 @@
 #pragma once
 // Optimiser comparisons at equal budgets (mtcs bench optimize; experiments/optimize).
 
+#include <string>
 #include <vector>
 
 #include "mold_problem.h"
+#include "run_config.h"
 #include "mtcs/mold/scene.h"
 #include "mtcs/opt/evolution_strategy.h"
 
-namespace mtcs::cli {
+namespace mtcs::bench {
+
+using cli::MoldProblem;
+using cli::RunConfig;
+using cli::load_run_config;
 
 struct OptimizeTrace {
   struct Point {
@@ -26,4 +32,14 @@ OptimizeTrace bench_es(const MoldProblem& problem, opt::EsConfig config);
 OptimizeTrace bench_nlopt(const MoldProblem& problem, const mold::Scene& scene, const mold::Genome& topology,
                           long evaluations, std::uint64_t seed);
 
-}  // namespace mtcs::cli
+// mtcs bench optimize: `algorithm` (es, random or nlopt) on the mold over seeds 1..seeds; CSV on
+// stdout, the convergence in `trace` when given. nlopt keeps the topology of the layout file
+// `topology`, by default each seed's first random sample.
+struct OptimizeRuns {
+  std::string mold, algorithm = "es", config, topology, trace;
+  int seeds = 11;
+  long evaluations = 20000;
+};
+int bench_optimize(const OptimizeRuns& runs);
+
+}  // namespace mtcs::bench

@@ -2,7 +2,7 @@
 
 #include <pagmo/utils/hypervolume.hpp>
 
-namespace mtcs::cli {
+namespace mtcs::bench {
 
 double pagmo_hypervolume(const std::vector<std::vector<double>>& points, const std::vector<double>& ref) {
   const pagmo::hypervolume hv(points, false);
@@ -14,7 +14,7 @@ std::vector<double> pagmo_contributions(const std::vector<std::vector<double>>& 
   return hv.contributions(ref);
 }
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::bench
 
 #include <pagmo/algorithm.hpp>
 #include <pagmo/algorithms/moead.hpp>
@@ -24,7 +24,7 @@ std::vector<double> pagmo_contributions(const std::vector<std::vector<double>>& 
 #include <pagmo/problems/dtlz.hpp>
 #include <pagmo/problems/zdt.hpp>
 
-namespace mtcs::cli {
+namespace mtcs::bench {
 
 std::vector<std::vector<double>> pagmo_run(const std::string& name, const std::string& algorithm, long evaluations,
                                            unsigned seed) {
@@ -43,4 +43,4 @@ std::vector<std::vector<double>> pagmo_run(const std::string& name, const std::s
   return pop.get_f();
 }
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::bench
