@@ -14,6 +14,7 @@
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/opt/rng.h"
+#include "mtcs/run/session.h"
 
 namespace mtcs::bench {
 namespace {
@@ -87,8 +88,8 @@ std::vector<mold::Genome> random_genomes(const mold::Scene& scene, int count, in
   return out;
 }
 
-EvaluateBench bench_evaluate(const mold::Scene& scene, const std::vector<mold::Genome>& genomes, int threads) {
-  const eval::Pipeline pipeline(scene);
+EvaluateBench bench_evaluate(const eval::Pipeline& pipeline, const std::vector<mold::Genome>& genomes, int threads) {
+  const mold::Scene& scene = pipeline.scene();
   EvaluateBench r;
   r.samples = pipeline.surface_samples();
   r.bores = 0;
@@ -112,13 +113,14 @@ EvaluateBench bench_evaluate(const mold::Scene& scene, const std::vector<mold::G
 
 int bench_evaluate_rows(const std::string& mold_path, int threads, int evaluations, int circuits, int bores,
                         std::uint64_t seed) {
-  const mold::Scene scene(mold::load_mold_spec(mold_path));
+  const run::Session session(mold_path);
+  const mold::Scene& scene = session.scene();
   const auto genomes = random_genomes(scene, evaluations, circuits, bores, seed);
   std::cout << "mold,threads,bores,samples,evaluations_per_second\n";
   std::vector<int> rows{1};
   if (threads > 1) rows.push_back(threads);
   for (const int t : rows) {
-    const auto r = bench_evaluate(scene, genomes, t);
+    const auto r = bench_evaluate(session.pipeline(), genomes, t);
     std::cout << mold_path << ',' << t << ',' << r.bores << ',' << r.samples << ',' << r.evaluations_per_second << '\n';
     if (t == 1) {
       std::cerr << "stage,microseconds_per_evaluation\n";

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "mtcs/eval/pipeline.h"
 #include "mtcs/mold/genome.h"
 #include "mtcs/mold/scene.h"
 
@@ -22,7 +23,7 @@ struct EvaluateBench {
 // drillable axes force an odd count), reproducible from the seed.
 std::vector<mold::Genome> random_genomes(const mold::Scene& scene, int count, int circuits, int bores,
                                          std::uint64_t seed);
-EvaluateBench bench_evaluate(const mold::Scene& scene, const std::vector<mold::Genome>& genomes, int threads);
+EvaluateBench bench_evaluate(const eval::Pipeline& pipeline, const std::vector<mold::Genome>& genomes, int threads);
 
 // mtcs bench evaluate: one row on one thread and one on `threads`; CSV on stdout, the stages'
 // times on stderr.

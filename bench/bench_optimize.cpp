@@ -11,7 +11,7 @@
 
 #include "bench_optimize.h"
 #include "mtcs/io/atomic_file.h"
-#include "run_config.h"
+#include "mtcs/run/session.h"
 #include "mtcs/mold/layout_io.h"
 
 namespace mtcs::bench {
@@ -120,10 +120,10 @@ OptimizeTrace bench_nlopt(const MoldProblem& problem, const mold::Scene& scene, 
 }
 
 int bench_optimize(const OptimizeRuns& oo) {
-  const mold::Scene scene(mold::load_mold_spec(oo.mold));
-  const eval::Pipeline pipeline(scene);
-  const RunConfig config = oo.config.empty() ? RunConfig{} : load_run_config(oo.config, pipeline.objective_names());
-  const MoldProblem problem(pipeline, config.weights, config.mutation);
+  const run::Session session(oo.mold, {oo.config, "", {}, std::nullopt, std::nullopt});
+  const mold::Scene& scene = session.scene();
+  const run::RunConfig& config = session.config();
+  const MoldProblem& problem = session.problem();
   // NLopt's fixed topology: a layout file, or by default the seed's first random sample (the
   // same kind of start the ES gets).
   auto topology_for = [&](std::uint64_t seed) {

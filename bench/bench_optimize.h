@@ -4,16 +4,13 @@
 #include <string>
 #include <vector>
 
-#include "mold_problem.h"
-#include "run_config.h"
+#include "mtcs/run/mold_problem.h"
 #include "mtcs/mold/scene.h"
 #include "mtcs/opt/evolution_strategy.h"
 
 namespace mtcs::bench {
 
-using cli::MoldProblem;
-using cli::RunConfig;
-using cli::load_run_config;
+using run::MoldProblem;
 
 struct OptimizeTrace {
   struct Point {

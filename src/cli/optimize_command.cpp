@@ -16,8 +16,6 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "mold_problem.h"
-#include "polish.h"
 #include "mtcs/cli/commands.h"
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/io/atomic_file.h"
@@ -27,7 +25,8 @@
 #include "mtcs/opt/benchmark_problems.h"
 #include "mtcs/opt/sms_emoa.h"
 #include "mtcs/store/run_store.h"
-#include "mold_run.h"
+#include "mtcs/run/polish.h"
+#include "mtcs/run/session.h"
 
 namespace mtcs::cli {
 namespace {
@@ -150,16 +149,17 @@ int run_optimize(const Options& o) {
     mold_path = meta.at("mold");
     config_text = meta.at("config");
   }
-  const mold::Scene scene(mold::load_mold_spec(mold_path));
-  const eval::Pipeline pipeline(scene);
-  const auto names = pipeline.objective_names();
-  RunConfig config;
-  if (!o.resume.empty()) {
-    if (fnv1a(read_file(mold_path)) != meta.at("mold_hash"))
-      throw io::InputError(mold_path, 0, 0, "", "the mold spec changed since the run started; start a new run");
-    config = parse_run_config(config_text, db_path + ":config", names);
-  } else {
-    config = resolve_run_config({o.config, o.algorithm == "es" ? "" : o.algorithm, o.ref, o.seed, o.evaluations}, names);
+  if (!o.resume.empty() && fnv1a(read_file(mold_path)) != meta.at("mold_hash"))
+    throw io::InputError(mold_path, 0, 0, "", "the mold spec changed since the run started; start a new run");
+  // A resumed run keeps its stored config; a new one resolves RUN.yaml and the command line.
+  const run::RunOverrides overrides{o.config, o.algorithm == "es" ? "" : o.algorithm, o.ref, o.seed, o.evaluations};
+  const run::Session session = o.resume.empty()
+                                   ? run::Session(mold::load_mold_spec(mold_path), overrides)
+                                   : run::Session(mold::load_mold_spec(mold_path), config_text, db_path + ":config");
+  const mold::Scene& scene = session.scene();
+  const std::vector<std::string>& names = session.objective_names();
+  const run::RunConfig& config = session.config();
+  if (o.resume.empty()) {
     fs::create_directories(out_dir);
     if (fs::exists(db_path))
       throw io::InputError(db_path, 0, 0, "", "a run exists here: resume it with --resume " + out_dir + " or choose --out");
@@ -172,8 +172,8 @@ int run_optimize(const Options& o) {
 
   std::optional<tbb::global_control> limit;
   if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
-  const MoldProblem problem(pipeline, config.weights, config.mutation);
-  const MoldOptimizer optimizer(problem, scene, config);
+  const run::MoldProblem& problem = session.problem();
+  const run::MoldOptimizer optimizer(problem, scene, config);
   const bool pareto = optimizer.pareto();
   const auto previous = db->last();
   const double seconds_before = previous ? db->summaries().back().seconds : 0;
@@ -202,7 +202,7 @@ int run_optimize(const Options& o) {
   mold::Genome genome = problem.genome(best.x);
   nlohmann::ordered_json polish_json;
   if (o.polish > 0) {
-    const Polished p = polish(problem, scene, genome, o.polish);
+    const run::Polished p = run::polish(problem, scene, genome, o.polish);
     polish_json = {{"evaluations", p.evaluations}, {"improved", p.improved}, {"before", best.score.value},
                    {"after", p.score.value}};
     if (p.improved) genome = p.genome, best.score = p.score;

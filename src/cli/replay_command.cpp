@@ -11,7 +11,6 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "mold_problem.h"
 #include "mtcs/cli/commands.h"
 #include "mtcs/io/atomic_file.h"
 #include "mtcs/io/input_error.h"
@@ -20,7 +19,7 @@
 #include "mtcs/opt/sms_emoa.h"
 #include "mtcs/store/run_store.h"
 #include "python_plot.h"
-#include "run_config.h"
+#include "mtcs/run/session.h"
 
 namespace mtcs::cli {
 namespace {
@@ -54,11 +53,10 @@ int run_replay(const Options& o) {
   const store::RunStore db = store::RunStore::open(db_path);
   const auto meta = db.meta();
   if (!meta.count("mold")) throw io::InputError(db_path, 0, 0, "", "a test-problem run: nothing to replay against a mold");
-  const mold::Scene scene(mold::load_mold_spec(meta.at("mold")));
-  const eval::Pipeline pipeline(scene);
-  const auto names = pipeline.objective_names();
-  const RunConfig config = parse_run_config(meta.at("config"), db_path + ":config", names);
-  const MoldProblem problem(pipeline, config.weights, config.mutation);
+  const run::Session session(mold::load_mold_spec(meta.at("mold")), meta.at("config"), db_path + ":config");
+  const mold::Scene& scene = session.scene();
+  const std::vector<std::string>& names = session.objective_names();
+  const run::MoldProblem& problem = session.problem();
 
   std::vector<int> indices;
   const auto summaries = db.summaries();

@@ -6,7 +6,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "cli/mold_problem.h"
+#include "mtcs/run/mold_problem.h"
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/mold/scene.h"
 
@@ -28,14 +28,14 @@ opt::Score ranked(mold::PenaltyVariant variant, double weight, opt::Score* score
   spec.penalty.weight = weight;
   const mold::Scene scene(spec);
   const eval::Pipeline pipeline(scene);
-  const cli::MoldProblem problem(pipeline, {}, {});
+  const run::MoldProblem problem(pipeline, {}, {});
   *score = problem.evaluate(problem.encode(through_ejector()));
   return problem.ranking(*score);
 }
 
 }  // namespace
 
-TEST_CASE("MoldProblem ranks an infeasible layout as its penalty variant says", "[cli][penalty]") {
+TEST_CASE("MoldProblem ranks an infeasible layout as its penalty variant says", "[run][penalty]") {
   opt::Score s;
   const opt::Score cd = ranked(mold::PenaltyVariant::ConstrainedDomination, 1, &s);
   REQUIRE_FALSE(s.feasible);

@@ -6,12 +6,13 @@
 // Genotype layout: [K, then per circuit: diameter index, n, x0, y0, z0, ..., x(n-1), y, z].
 
 #include <atomic>
+#include <optional>
 
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/mold/genome.h"
 #include "mtcs/opt/problem.h"
 
-namespace mtcs::cli {
+namespace mtcs::run {
 
 struct MutationRates {
   double insert = 0.1, remove = 0.1, snap = 0.05, diameter = 0.05, circuit = 0.02;
@@ -19,7 +20,9 @@ struct MutationRates {
 
 class MoldProblem final : public opt::Problem {
  public:
-  MoldProblem(const eval::Pipeline& pipeline, std::vector<double> weights, MutationRates rates);
+  // `penalty`: the constraint-handling variant the layouts are ranked by (default: the spec's).
+  MoldProblem(const eval::Pipeline& pipeline, std::vector<double> weights, MutationRates rates,
+              std::optional<mold::PenaltyVariant> penalty = std::nullopt);
 
   std::string name() const override { return "mold"; }
   opt::Genotype sample(opt::Rng& rng) const override;
@@ -35,6 +38,8 @@ class MoldProblem final : public opt::Problem {
   // objective plus the variant's penalty term (in scaled units: the same term on each).
   opt::Score ranking(const opt::Score& s) const override;
 
+  mold::PenaltyVariant penalty_variant() const { return ranking_.penalty.variant; }
+
   // Layouts evaluated so far, and how many of them were feasible.
   long evaluated() const { return evaluated_; }
   long feasible_evaluated() const { return feasible_; }
@@ -49,6 +54,9 @@ class MoldProblem final : public opt::Problem {
 
   const eval::Pipeline& pipeline_;
   const mold::MoldSpec& spec_;
+  // The spec's objectives and penalty with this problem's variant: what the ranking reads
+  // (no geometry: a variant costs no copy of the meshes).
+  mold::MoldSpec ranking_;
   geometry::Box block_;
   geometry::Box region_;  // where new circuits' waypoints are drawn: around the part
   std::vector<double> weights_;
@@ -57,4 +65,4 @@ class MoldProblem final : public opt::Problem {
   mutable std::atomic<long> evaluated_{0}, feasible_{0};
 };
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::run

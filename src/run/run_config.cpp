@@ -1,4 +1,4 @@
-#include "run_config.h"
+#include "mtcs/run/run_config.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -8,7 +8,7 @@
 
 #include "mtcs/io/yaml_reader.h"
 
-namespace mtcs::cli {
+namespace mtcs::run {
 
 RunConfig parse_run_config(const std::string& text, const std::string& origin,
                            const std::vector<std::string>& objective_names) {
@@ -21,7 +21,7 @@ RunConfig parse_run_config(const std::string& text, const std::string& origin,
   }
   RunConfig c;
   if (root.IsNull()) return c;
-  r.expect_map(root, "", {"algorithm", "es", "evaluations", "seed", "weights", "mutation", "log_every", "ref"});
+  r.expect_map(root, "", {"algorithm", "es", "evaluations", "seed", "weights", "mutation", "log_every", "ref", "penalty"});
   if (root["algorithm"]) {
     c.algorithm = r.text(root["algorithm"], "algorithm");
     if (c.algorithm != "es" && c.algorithm != "sms-emoa") r.fail(root["algorithm"], "algorithm", "expected es or sms-emoa");
@@ -45,6 +45,10 @@ RunConfig parse_run_config(const std::string& text, const std::string& origin,
   }
   if (root["evaluations"]) c.es.evaluations = r.integer(root["evaluations"], "evaluations", 1, 2000000000);
   if (root["seed"]) c.es.seed = std::uint64_t(r.number(root["seed"], "seed", 0, 9.007199254740992e15));
+  if (root["penalty"]) {
+    c.penalty = mold::penalty_variant(r.text(root["penalty"], "penalty"));
+    if (!c.penalty) r.fail(root["penalty"], "penalty", "expected one of " + mold::kPenaltyVariantNames);
+  }
   if (root["log_every"]) c.log_every = r.integer(root["log_every"], "log_every", 1, 1000000);
   if (root["weights"]) {
     const YAML::Node& w = root["weights"];
@@ -94,6 +98,7 @@ std::string RunConfig::to_yaml(const std::vector<std::string>& objective_names) 
   out << YAML::Key << "evaluations" << YAML::Value << es.evaluations;
   out << YAML::Key << "seed" << YAML::Value << es.seed;
   out << YAML::Key << "log_every" << YAML::Value << log_every;
+  if (penalty) out << YAML::Key << "penalty" << YAML::Value << mold::to_string(*penalty);
   if (!weights.empty()) {
     out << YAML::Key << "weights" << YAML::Value << YAML::Flow << YAML::BeginMap;
     for (std::size_t k = 0; k < weights.size() && k < objective_names.size(); ++k)
@@ -109,4 +114,4 @@ std::string RunConfig::to_yaml(const std::vector<std::string>& objective_names) 
   return s + "\n";
 }
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::run

@@ -8,10 +8,10 @@
 // share a coordinate move as one (a hole shifts across its axis), so refining keeps holes
 // aligned; ports keep the coordinate that puts them on their face.
 
-#include "mold_problem.h"
+#include "mtcs/run/mold_problem.h"
 #include "mtcs/mold/scene.h"
 
-namespace mtcs::cli {
+namespace mtcs::run {
 
 struct Polished {
   mold::Genome genome;
@@ -22,4 +22,4 @@ struct Polished {
 
 Polished polish(const MoldProblem& problem, const mold::Scene& scene, const mold::Genome& start, int max_evaluations);
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::run

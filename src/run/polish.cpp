@@ -1,11 +1,11 @@
-#include "polish.h"
+#include "mtcs/run/polish.h"
 
 #include <nlopt.hpp>
 
 #include <algorithm>
 #include <cmath>
 
-namespace mtcs::cli {
+namespace mtcs::run {
 namespace {
 
 using geometry::Vec3;
@@ -99,4 +99,4 @@ Polished polish(const MoldProblem& problem, const mold::Scene& scene, const mold
   return best;
 }
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::run

@@ -1,10 +1,10 @@
-#include "mold_run.h"
+#include "mtcs/run/mold_run.h"
 
 #include <algorithm>
 
 #include "mtcs/io/input_error.h"
 
-namespace mtcs::cli {
+namespace mtcs::run {
 
 RunConfig resolve_run_config(const RunOverrides& o, const std::vector<std::string>& names) {
   RunConfig config;
@@ -55,4 +55,4 @@ opt::Generation MoldOptimizer::run(const opt::Generation* start,
   return pareto_ ? opt::run(sms_, start, on_generation) : opt::run(es_, start, on_generation);
 }
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::run

@@ -1,10 +1,10 @@
-#include "mold_problem.h"
+#include "mtcs/run/mold_problem.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-namespace mtcs::cli {
+namespace mtcs::run {
 
 using geometry::Vec3;
 
@@ -23,9 +23,13 @@ double face_plane(const geometry::Box& b, mold::Face f) {
 
 }  // namespace
 
-MoldProblem::MoldProblem(const eval::Pipeline& pipeline, std::vector<double> weights, MutationRates rates)
+MoldProblem::MoldProblem(const eval::Pipeline& pipeline, std::vector<double> weights, MutationRates rates,
+                         std::optional<mold::PenaltyVariant> penalty)
     : pipeline_(pipeline), spec_(pipeline.scene().spec()), block_(pipeline.scene().block_bounds()),
       weights_(std::move(weights)), rates_(rates), initial_step_(0.1 * block_.size().minCoeff()) {
+  ranking_.objectives = spec_.objectives;
+  ranking_.penalty = spec_.penalty;
+  if (penalty) ranking_.penalty.variant = *penalty;
   region_ = block_;
   if (spec_.cavity) {
     const geometry::Box part = spec_.cavity->box ? *spec_.cavity->box : spec_.cavity->mesh->mesh.bounds();
@@ -192,7 +196,7 @@ opt::Genotype MoldProblem::recombine(const opt::Genotype& a, const opt::Genotype
 
 opt::Score MoldProblem::evaluate(const opt::Genotype& g) const {
   const eval::Evaluation e = pipeline_.evaluate(genome(g));
-  const eval::Fitness f = eval::fitness(e, spec_, weights_);
+  const eval::Fitness f = eval::fitness(e, ranking_, weights_);
   // "kind element element distance/margin; ..." for the run store.
   std::string detail;
   for (const auto& v : e.violations) {
@@ -209,8 +213,8 @@ opt::Score MoldProblem::evaluate(const opt::Genotype& g) const {
 }
 
 opt::Score MoldProblem::ranking(const opt::Score& s) const {
-  if (spec_.penalty.variant == mold::PenaltyVariant::ConstrainedDomination) return s;
-  const double term = eval::penalty_term(s.feasible, s.violation, spec_.penalty);
+  if (ranking_.penalty.variant == mold::PenaltyVariant::ConstrainedDomination) return s;
+  const double term = eval::penalty_term(s.feasible, s.violation, ranking_.penalty);
   opt::Score r = s;
   for (std::size_t k = 0; k < r.objectives.size(); ++k)
     r.objectives[k] += term * spec_.objectives.scale(spec_.objectives.use[k]);
@@ -220,7 +224,7 @@ opt::Score MoldProblem::ranking(const opt::Score& s) const {
 }
 
 bool MoldProblem::better(const opt::Score& a, const opt::Score& b) const {
-  return eval::better({a.feasible, a.violation, a.value}, {b.feasible, b.violation, b.value}, spec_.penalty.variant);
+  return eval::better({a.feasible, a.violation, a.value}, {b.feasible, b.violation, b.value}, ranking_.penalty.variant);
 }
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::run

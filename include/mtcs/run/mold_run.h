@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "mold_problem.h"
+#include "mtcs/run/mold_problem.h"
 #include "mtcs/mold/scene.h"
 #include "mtcs/opt/sms_emoa.h"
-#include "run_config.h"
+#include "mtcs/run/run_config.h"
 
-namespace mtcs::cli {
+namespace mtcs::run {
 
 // What the command line may change in a run config; unset fields keep the config's.
 struct RunOverrides {
@@ -52,4 +52,4 @@ class MoldOptimizer {
   bool pareto_;
 };
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::run
