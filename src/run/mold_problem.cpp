@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "holes.h"
+
 namespace mtcs::run {
 
 using geometry::Vec3;
@@ -160,16 +162,11 @@ void MoldProblem::mutate(opt::Genotype& x, const std::vector<double>& steps, opt
       // Move holes, not points: along each axis, consecutive waypoints that share the
       // coordinate (the ends of a hole across it) shift together, so aligned holes stay
       // aligned instead of breaking into zig-zags.
-      for (int k = 0; k < 3; ++k) {
-        std::size_t i = 0;
-        while (i < w.size()) {
-          std::size_t j = i + 1;
-          while (j < w.size() && std::abs(w[j][k] - w[i][k]) <= 1e-9 * (1 + std::abs(w[i][k]))) ++j;
+      for (int k = 0; k < 3; ++k)
+        for (const auto& [first, last] : aligned_runs(w, k)) {
           const double shift = sigma * rng.normal();
-          for (std::size_t m = i; m < j; ++m) w[m][k] += shift;
-          i = j;
+          for (std::size_t m = first; m < last; ++m) w[m][k] += shift;
         }
-      }
     } else {
       for (Vec3& p : w) p += sigma * Vec3(rng.normal(), rng.normal(), rng.normal());
     }

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "holes.h"
+
 namespace mtcs::run {
 namespace {
 
@@ -27,16 +29,16 @@ std::vector<Variable> variables_of(const mold::Genome& g, const mold::Scene& sce
       return (p == 0 || p + 1 == w.size()) && (std::abs(w[p][k] - b.min[k]) < 1e-9 || std::abs(w[p][k] - b.max[k]) < 1e-9);
     };
     for (int k = 0; k < 3; ++k) {
-      std::size_t i = 0;
-      while (i < w.size()) {
-        std::size_t j = i + 1;
-        if (aligned)
-          while (j < w.size() && std::abs(w[j][k] - w[i][k]) <= 1e-9 * (1 + std::abs(w[i][k]))) ++j;
+      // Without axis-parallel drilling every waypoint moves on its own.
+      std::vector<std::pair<std::size_t, std::size_t>> runs;
+      if (aligned) runs = aligned_runs(w, k);
+      else
+        for (std::size_t i = 0; i < w.size(); ++i) runs.emplace_back(i, i + 1);
+      for (const auto& [first, last] : runs) {
         Variable v{c, k, {}};
         bool fixed = false;
-        for (std::size_t m = i; m < j; ++m) v.points.push_back(m), fixed = fixed || on_face(m, k);
+        for (std::size_t m = first; m < last; ++m) v.points.push_back(m), fixed = fixed || on_face(m, k);
         if (!fixed) vars.push_back(std::move(v));
-        i = j;
       }
     }
   }

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <CLI/CLI.hpp>
+#include <tbb/global_control.h>
 #include <filesystem>
 
 #include "mtcs/cli/commands.h"
@@ -79,4 +80,27 @@ TEST_CASE("run config: penalty is read, written back, and checked", "[run][sessi
     CHECK(what.find("cfg.yaml:2:") != std::string::npos);
     CHECK(what.find("penalty") != std::string::npos);
   }
+}
+
+TEST_CASE("SMS-EMOA on the mold: same seed, same populations, with 1 thread or 2", "[run][sms-emoa][determinism]") {
+  run::RunOverrides o;
+  o.algorithm = "sms-emoa";
+  o.seed = 4;
+  o.evaluations = 160;
+  const run::Session session(kMold, o);
+  const run::MoldOptimizer optimizer(session.problem(), session.scene(), session.config());
+  REQUIRE(optimizer.pareto());
+  auto record = [&](int threads) {
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    std::vector<std::vector<double>> log;
+    optimizer.run(nullptr, [&](const opt::Generation& g) {
+      for (const auto& ind : g.population) {
+        log.push_back(ind.x);
+        log.push_back(ind.score.objectives);
+        log.push_back({ind.score.violation});
+      }
+    });
+    return log;
+  };
+  CHECK(record(1) == record(2));
 }

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "mtcs/opt/evolution_strategy.h"
+#include "mtcs/opt/population.h"
 
 struct sqlite3;
 
