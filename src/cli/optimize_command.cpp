@@ -26,29 +26,13 @@
 #include "mtcs/opt/sms_emoa.h"
 #include "mtcs/store/run_store.h"
 #include "mtcs/run/polish.h"
+#include "mtcs/run/run_record.h"
 #include "mtcs/run/session.h"
 
 namespace mtcs::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw io::InputError(path, 0, 0, "", "cannot open file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-// FNV-1a, 64 bits: identifies the mold spec a run was made with.
-std::string fnv1a(const std::string& bytes) {
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (const unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ULL;
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
-}
 
 struct Options {
   std::string mold, config, out = "mtcs-run", resume;
@@ -149,7 +133,7 @@ int run_optimize(const Options& o) {
     mold_path = meta.at("mold");
     config_text = meta.at("config");
   }
-  if (!o.resume.empty() && fnv1a(read_file(mold_path)) != meta.at("mold_hash"))
+  if (!o.resume.empty() && run::content_hash(run::read_file_text(mold_path)) != meta.at("mold_hash"))
     throw io::InputError(mold_path, 0, 0, "", "the mold spec changed since the run started; start a new run");
   // A resumed run keeps its stored config; a new one resolves RUN.yaml and the command line.
   const run::RunOverrides overrides{o.config, o.algorithm == "es" ? "" : o.algorithm, o.ref, o.seed, o.evaluations};
@@ -163,10 +147,7 @@ int run_optimize(const Options& o) {
     fs::create_directories(out_dir);
     if (fs::exists(db_path))
       throw io::InputError(db_path, 0, 0, "", "a run exists here: resume it with --resume " + out_dir + " or choose --out");
-    meta = {{"mold", fs::absolute(mold_path).string()}, {"mold_hash", fnv1a(read_file(mold_path))},
-            {"config", config.to_yaml(names)}, {"seed", std::to_string(config.es.seed)},
-            {"objectives", [&] { std::string s; for (const auto& n : names) s += (s.empty() ? "" : ",") + n; return s; }()},
-            {"program", "mtcs 0.1.0"}};
+    meta = run::mold_run_meta(mold_path, session);
     db = store::RunStore::create(db_path, meta);
   }
 

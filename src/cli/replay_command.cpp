@@ -19,6 +19,7 @@
 #include "mtcs/opt/sms_emoa.h"
 #include "mtcs/store/run_store.h"
 #include "python_plot.h"
+#include "mtcs/run/run_record.h"
 #include "mtcs/run/session.h"
 
 namespace mtcs::cli {
@@ -27,7 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct Options {
-  std::string dir;
+  std::string dir, mold;
   std::optional<int> generation;
   bool verify = false;
   bool plots = true;
@@ -53,7 +54,9 @@ int run_replay(const Options& o) {
   const store::RunStore db = store::RunStore::open(db_path);
   const auto meta = db.meta();
   if (!meta.count("mold")) throw io::InputError(db_path, 0, 0, "", "a test-problem run: nothing to replay against a mold");
-  const run::Session session(mold::load_mold_spec(meta.at("mold")), meta.at("config"), db_path + ":config");
+  std::string mold_note;
+  const run::Session session(run::stored_mold_spec(meta, o.mold, &mold_note), meta.at("config"), db_path + ":config");
+  if (!mold_note.empty()) std::cerr << mold_note << "\n";
   const mold::Scene& scene = session.scene();
   const std::vector<std::string>& names = session.objective_names();
   const run::MoldProblem& problem = session.problem();
@@ -152,6 +155,9 @@ Command add_replay_command(CLI::App& app) {
       "Example: mtcs replay runs/demo-plate --verify");
   sub->add_option("dir", o->dir, "run folder (with run.sqlite)")->required();
   sub->add_option("--generation", o->generation, "only this stored generation");
+  sub->add_option("--mold", o->mold,
+                  "the run's mold at a new place (default: the spec text stored in the run, or for a mold with\n"
+                  "mesh files the stored path); a mold that differs from the run's is named with what changed");
   sub->add_flag("--verify", o->verify, "fail unless the replay reproduces every objective exactly");
   sub->add_flag("!--no-plots", o->plots, "no PNGs (about 0.1 s per generation); frames.json is still written");
   return {sub, [o] { return run_replay(*o); }};
