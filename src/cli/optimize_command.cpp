@@ -28,6 +28,7 @@
 #include "mtcs/run/polish.h"
 #include "mtcs/run/run_record.h"
 #include "mtcs/run/session.h"
+#include "mtcs/run/stored_run.h"
 
 namespace mtcs::cli {
 namespace {
@@ -156,27 +157,11 @@ int run_optimize(const Options& o) {
   const run::MoldProblem& problem = session.problem();
   const run::MoldOptimizer optimizer(problem, scene, config);
   const bool pareto = optimizer.pareto();
-  const auto previous = db->last();
-  const double seconds_before = previous ? db->summaries().back().seconds : 0;
-  const long evals_before = previous ? previous->evaluations : 0;
   Progress progress(o.quiet, config.log_every, config.es.evaluations);
-  const auto t0 = std::chrono::steady_clock::now();
-  auto on_generation = [&](const opt::Generation& g) {
-    // SMS-EMOA steps one offspring at a time: store (and report) every mu steps.
-    if (pareto && g.index % optimizer.mu() != 0) return;
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    db->save(g, seconds_before + s);
-    progress(g, s, g.evaluations - evals_before);
-  };
-  opt::Generation last = optimizer.run(previous ? &*previous : nullptr, on_generation);
-  if (pareto) {
-    if (last.index % optimizer.mu() != 0)  // the last steps, unless just stored
-      db->save(last, seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-    std::stable_sort(last.population.begin(), last.population.end(),
-                     [&](const opt::Individual& a, const opt::Individual& b) { return problem.better(a.score, b.score); });
-  }
+  const run::StoredRun stored = run::run_stored(optimizer, problem, *db, progress);
+  const opt::Generation& last = stored.last;
+  const double seconds = stored.seconds;
   progress.done();
-  const double seconds = seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   // The best layout, for CAD and for re-scoring with mtcs evaluate; optionally polished.
   opt::Individual best = last.population.front();
