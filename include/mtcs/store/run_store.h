@@ -1,9 +1,10 @@
 #pragma once
-// The run store (SQLite): what a run was (resolved config, the mold spec's path, text and hash and
-// its meshes' hashes: run/run_record.h; seed, program version) and every generation's population — genotype, strategy parameters, objectives,
-// total violation, the violated constraints in words, feasibility — with a summary. One transaction per generation, so a run killed at
-// any moment (kill -9 included) keeps every complete generation and resumes from the last.
-// Numbers are stored as their exact bits: a resumed run continues bit for bit.
+// The run store (SQLite): what a run was (the run record of run/run_record.h: resolved config,
+// the mold spec's path, text and hash, its meshes' hashes, seed, program version) and every
+// generation's population — genotype, strategy parameters, objectives, total violation, the
+// violated constraints in words, feasibility — with a summary. One transaction per generation,
+// so a run killed at any moment (kill -9 included) keeps every complete generation and resumes
+// from the last. Numbers are stored as their exact bits: a resumed run continues bit for bit.
 
 #include <map>
 #include <memory>
