@@ -5,6 +5,7 @@
 // thread), so that their times compare.
 
 #include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
 #include <tbb/global_control.h>
 #include <unistd.h>
 
@@ -16,6 +17,7 @@
 #include <memory>
 #include <sstream>
 
+#include "log.h"
 #include "mtcs/cli/commands.h"
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/io/atomic_file.h"
@@ -36,7 +38,6 @@ struct Options {
   std::optional<long> evaluations;
   std::vector<double> ref;
   int threads = 0;
-  bool quiet = false;
 };
 
 std::string fmt(double v, int digits = 6) {
@@ -172,7 +173,9 @@ int run_compare(const Options& o) {
   if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
   fs::create_directories(o.out);
 
-  const bool tty = ::isatty(2);
+  const bool tty = ::isatty(2), progress = spdlog::should_log(spdlog::level::info);
+  spdlog::debug("mold {}: {} surface samples; run config:\n{}", o.mold, session.pipeline().surface_samples(),
+                config.to_yaml(names));
   const int total = int(variants.size()) * o.seeds;
   std::vector<run::PenaltyRun> runs;
   for (const mold::PenaltyVariant v : variants) {
@@ -183,13 +186,12 @@ int run_compare(const Options& o) {
       char head[160];
       std::snprintf(head, sizeof head, "[%d/%d] %s seed %d", index, total, mold::to_string(v).c_str(), seed);
       runs.push_back(run::run_with_penalty(session, variant_config, std::uint64_t(seed), ref, [&](int deciles) {
-        if (!o.quiet && tty) std::fprintf(stderr, "\r%s: %d%%\033[K", head, 10 * deciles);
+        if (progress && tty) std::fprintf(stderr, "\r%s: %d%%\033[K", head, 10 * deciles);
       }));
       const run::PenaltyRun& r = runs.back();
-      if (!o.quiet)
-        std::fprintf(stderr, "%s%s: HV %.6g (front %zu), %.0f%% of evaluations feasible, %.1f us/evaluation\n",
-                     tty ? "\r" : "", head, r.hypervolume, r.front_size, 100.0 * double(r.feasible) / double(r.evaluations),
-                     1e6 * r.seconds / double(r.evaluations));
+      if (progress && tty) std::fprintf(stderr, "\r");
+      spdlog::info("{}: HV {:.6g} (front {}), {:.0f}% of evaluations feasible, {:.1f} us/evaluation", head, r.hypervolume,
+                   r.front_size, 100.0 * double(r.feasible) / double(r.evaluations), 1e6 * r.seconds / double(r.evaluations));
     }
   }
   const fs::path out(o.out);
@@ -197,10 +199,9 @@ int run_compare(const Options& o) {
   write_summary(out, o, runs, ref, names, session.spec(), config.es.evaluations, config.es.mu);
   std::ostringstream plot_log;
   const bool plotted = render_plot("plot_penalties.py", {out.string()}, plot_log);
-  if (!o.quiet) {
-    std::cerr << plot_log.str() << "results in " << out.string() << "/: summary.md, runs.csv, feasible_share.csv, rank_tests.csv"
-              << (plotted ? ", penalties.png" : "") << "\n";
-  }
+  if (!plot_log.str().empty()) spdlog::info(plot_log.str().substr(0, plot_log.str().size() - 1));
+  spdlog::info("results in {}/: summary.md, runs.csv, feasible_share.csv, rank_tests.csv{}", out.string(),
+               plotted ? ", penalties.png" : "");
   return 0;
 }
 
@@ -241,7 +242,7 @@ Command add_compare_penalties_command(CLI::App& app) {
   sub->add_option("--out", o->out, "output folder")->capture_default_str();
   sub->add_option("--threads", o->threads, "worker threads (default: all cores); results do not depend on it")
       ->check(CLI::Range(0, 1024));
-  sub->add_flag("--quiet", o->quiet, "no progress output");
+  add_log_flags(sub);
   return {sub, [o] { return run_compare(*o); }};
 }
 

@@ -4,12 +4,14 @@
 #include <iostream>
 #include <string>
 
+#include "log.h"
 #include "mtcs/cli/commands.h"
 #include "mtcs/io/input_error.h"
 
 int main(int argc, char** argv) {
   // The benchmarks are their own program; every argument after "bench" is its.
   if (argc >= 2 && std::string(argv[1]) == "bench") return mtcs::cli::run_bench_program(argc - 2, argv + 2);
+  mtcs::cli::init_log();
   CLI::App app{
       "mtcs - cooling-bore design for permanent molds.\n"
       "Exact solid-cylinder distances, mold evaluation and optimisation.\n"

@@ -3,6 +3,7 @@
 // interruption), and writing the best layout for CAD and for re-scoring.
 
 #include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
 #include <tbb/global_control.h>
 #include <unistd.h>
 
@@ -16,6 +17,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "log.h"
 #include "mtcs/cli/commands.h"
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/io/atomic_file.h"
@@ -40,7 +42,6 @@ struct Options {
   std::optional<std::uint64_t> seed;
   std::optional<long> evaluations;
   int threads = 0;
-  bool quiet = false;
   int polish = 0;  // COBYLA evaluations after the ES (0: none)
   std::string problem;    // a built-in test problem instead of a mold
   std::string algorithm = "es";
@@ -95,8 +96,8 @@ int run_test_problem(const Options& o) {
 // One status line on a terminal, a log line every few generations otherwise.
 class Progress {
  public:
-  Progress(bool quiet, int log_every, long budget)
-      : quiet_(quiet), tty_(::isatty(2)), log_every_(log_every), budget_(budget) {}
+  Progress(int log_every, long budget)
+      : quiet_(!spdlog::should_log(spdlog::level::info)), tty_(::isatty(2)), log_every_(log_every), budget_(budget) {}
   void operator()(const opt::Generation& g, double seconds, long evals_this_session) {
     if (quiet_) return;
     const double rate = seconds > 0 ? double(evals_this_session) / seconds : 0;
@@ -109,7 +110,7 @@ class Progress {
                   g.population.front().score.feasible ? "" : " (infeasible)",
                   100.0 * feasible / double(g.population.size()), eta);
     if (tty_) std::fprintf(stderr, "\r%s\033[K", line);
-    else if (g.index % log_every_ == 0) std::fprintf(stderr, "%s\n", line);
+    else if (g.index % log_every_ == 0) spdlog::info(line);
   }
   void done() const {
     if (!quiet_ && tty_) std::fprintf(stderr, "\n");
@@ -157,7 +158,9 @@ int run_optimize(const Options& o) {
   const run::MoldProblem& problem = session.problem();
   const run::MoldOptimizer optimizer(problem, scene, config);
   const bool pareto = optimizer.pareto();
-  Progress progress(o.quiet, config.log_every, config.es.evaluations);
+  spdlog::debug("mold {}: {} surface samples; run config:\n{}", mold_path, session.pipeline().surface_samples(),
+                config.to_yaml(names));
+  Progress progress(config.log_every, config.es.evaluations);
   const run::StoredRun stored = run::run_stored(optimizer, problem, *db, progress);
   const opt::Generation& last = stored.last;
   const double seconds = stored.seconds;
@@ -172,9 +175,8 @@ int run_optimize(const Options& o) {
     polish_json = {{"evaluations", p.evaluations}, {"improved", p.improved}, {"before", best.score.value},
                    {"after", p.score.value}};
     if (p.improved) genome = p.genome, best.score = p.score;
-    if (!o.quiet)
-      std::cerr << "polish (COBYLA, " << p.evaluations << " evaluations): objective " << best.score.value
-                << (p.improved ? "" : " (no improvement)") << "\n";
+    spdlog::info("polish (COBYLA, {} evaluations): objective {:.6g}{}", p.evaluations, best.score.value,
+                 p.improved ? "" : " (no improvement)");
   }
   const mold::Layout layout = mold::decode(scene, genome);
   mold::save_layout((fs::path(out_dir) / "best.layout.yaml").string(), genome);
@@ -211,13 +213,12 @@ int run_optimize(const Options& o) {
   io::AtomicFile file((fs::path(out_dir) / "summary.json").string());
   file.stream() << summary.dump(2) << "\n";
   file.commit();
-  if (!o.quiet) {
-    std::cerr << (best.score.feasible ? "feasible" : "INFEASIBLE") << " best layout: " << layout.bores.size()
-              << " bores in " << genome.circuits.size() << " circuits, objective " << best.score.value << ", "
-              << last.evaluations << " evaluations in " << seconds << " s\n"
-              << "results in " << out_dir << "/: best.layout.yaml (mtcs evaluate " << mold_path << " --layout "
-              << out_dir << "/best.layout.yaml), bores.csv, bores.stl, summary.json, run.sqlite\n";
-  }
+  spdlog::info("{} best layout: {} bores in {} circuits, objective {:.6g}, {} evaluations in {:.6g} s",
+               best.score.feasible ? "feasible" : "INFEASIBLE", layout.bores.size(), genome.circuits.size(),
+               best.score.value, last.evaluations, seconds);
+  spdlog::info("results in {}/: best.layout.yaml (mtcs evaluate {} --layout {}/best.layout.yaml), bores.csv, bores.stl, "
+               "summary.json, run.sqlite",
+               out_dir, mold_path, out_dir);
   return 0;
 }
 
@@ -240,7 +241,7 @@ Command add_optimize_command(CLI::App& app) {
   sub->add_option("--evaluations", o->evaluations, "evaluation budget (overrides the config)")->check(CLI::PositiveNumber);
   sub->add_option("--threads", o->threads, "worker threads (default: all cores); results do not depend on it")
       ->check(CLI::Range(0, 1024));
-  sub->add_flag("--quiet", o->quiet, "no progress output");
+  add_log_flags(sub);
   sub->add_option("--resume", o->resume, "continue the run stored in this folder");
   sub->add_option("--polish", o->polish,
                   "then refine the best layout's hole coordinates with NLopt's COBYLA for this many evaluations")
