@@ -5,11 +5,11 @@
 // thread), so that their times compare.
 
 #include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
 #include <tbb/global_control.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -17,13 +17,13 @@
 #include <memory>
 #include <sstream>
 
-#include "mold_run.h"
+#include "log.h"
 #include "mtcs/cli/commands.h"
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/io/atomic_file.h"
 #include "mtcs/io/input_error.h"
-#include "mtcs/opt/hypervolume.h"
 #include "mtcs/opt/rank_sum_test.h"
+#include "mtcs/run/penalty_run.h"
 #include "python_plot.h"
 
 namespace mtcs::cli {
@@ -38,23 +38,6 @@ struct Options {
   std::optional<long> evaluations;
   std::vector<double> ref;
   int threads = 0;
-  bool quiet = false;
-};
-
-constexpr int kDeciles = 10;
-
-// The evaluations of one tenth of the budget (for the ES rounded up to whole generations).
-struct Window {
-  long from = 0, to = 0, evaluated = 0, feasible = 0;
-};
-
-struct RunResult {
-  std::string variant;
-  std::uint64_t seed = 0;
-  long evaluations = 0, feasible = 0;
-  double hypervolume = 0, seconds = 0;
-  std::size_t front_size = 0;
-  std::vector<Window> windows;
 };
 
 std::string fmt(double v, int digits = 6) {
@@ -91,44 +74,6 @@ std::vector<mold::PenaltyVariant> parse_variants(const std::vector<std::string>&
   return out;
 }
 
-// One run: the optimiser on the mold with this variant and seed; the feasible share is counted
-// at the first generation at or past each decile of the budget (one evaluation for SMS-EMOA).
-RunResult run_once(const mold::Scene& scene, const eval::Pipeline& pipeline, RunConfig config, std::uint64_t seed,
-                   const std::vector<double>& scaled_ref, const std::function<void(int)>& on_decile) {
-  config.es.seed = seed;
-  const MoldProblem problem(pipeline, config.weights, config.mutation);
-  const MoldOptimizer optimizer(problem, scene, config);
-  const long budget = config.es.evaluations;
-  RunResult r;
-  r.variant = mold::to_string(scene.spec().penalty.variant);
-  r.seed = seed;
-  Window open;
-  auto close_window = [&](long at) {
-    open.to = at;
-    open.evaluated = problem.evaluated() - r.evaluations;
-    open.feasible = problem.feasible_evaluated() - r.feasible;
-    r.evaluations = problem.evaluated();
-    r.feasible = problem.feasible_evaluated();
-    r.windows.push_back(open);
-    open = Window{at, at, 0, 0};
-    on_decile(int(r.windows.size()));
-  };
-  auto decile_end = [&](std::size_t d) { return (budget * long(d + 1) + kDeciles - 1) / kDeciles; };
-  const auto t0 = std::chrono::steady_clock::now();
-  const opt::Generation last = optimizer.run(nullptr, [&](const opt::Generation& g) {
-    while (r.windows.size() < kDeciles && g.evaluations >= decile_end(r.windows.size())) close_window(g.evaluations);
-  });
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  while (r.windows.size() < kDeciles) close_window(last.evaluations);  // a budget the last generation fell short of
-  std::vector<opt::Point> front = opt::SmsEmoa::front(last);
-  const auto& obj = scene.spec().objectives;
-  for (auto& p : front)
-    for (std::size_t k = 0; k < p.size(); ++k) p[k] /= obj.scale(obj.use[k]);
-  r.front_size = front.size();
-  r.hypervolume = opt::hypervolume(front, scaled_ref);
-  return r;
-}
-
 std::string command_line(const Options& o, const std::vector<double>& ref, long evaluations) {
   std::string s = "mtcs compare-penalties " + o.mold + " --variants ";
   for (std::size_t i = 0; i < o.variants.size(); ++i) s += (i ? "," : "") + o.variants[i];
@@ -138,7 +83,7 @@ std::string command_line(const Options& o, const std::vector<double>& ref, long 
   return s;
 }
 
-void write_csvs(const fs::path& out, const std::vector<RunResult>& runs, const std::vector<double>& ref) {
+void write_csvs(const fs::path& out, const std::vector<run::PenaltyRun>& runs, const std::vector<double>& ref) {
   io::AtomicFile csv((out / "runs.csv").string());
   csv.stream() << "variant,seed,evaluations,hypervolume,front_size,feasible_share,seconds,us_per_evaluation,reference_point\n";
   for (const auto& r : runs)
@@ -151,7 +96,7 @@ void write_csvs(const fs::path& out, const std::vector<RunResult>& runs, const s
   share.stream() << "variant,seed,decile,from,to,evaluated,feasible,share\n";
   for (const auto& r : runs)
     for (std::size_t d = 0; d < r.windows.size(); ++d) {
-      const Window& w = r.windows[d];
+      const run::Window& w = r.windows[d];
       share.stream() << r.variant << ',' << r.seed << ',' << d + 1 << ',' << w.from << ',' << w.to << ',' << w.evaluated
                      << ',' << w.feasible << ','
                      << fmt(w.evaluated ? double(w.feasible) / double(w.evaluated) : std::nan(""), 17) << '\n';
@@ -159,7 +104,7 @@ void write_csvs(const fs::path& out, const std::vector<RunResult>& runs, const s
   share.commit();
 }
 
-void write_summary(const fs::path& out, const Options& o, const std::vector<RunResult>& runs, const std::vector<double>& ref,
+void write_summary(const fs::path& out, const Options& o, const std::vector<run::PenaltyRun>& runs, const std::vector<double>& ref,
                    const std::vector<std::string>& names, const mold::MoldSpec& spec, long evaluations, int mu) {
   std::ostringstream md;
   md << "# Penalty variants on " << fs::path(o.mold).filename().string() << "\n\n`" << command_line(o, ref, evaluations)
@@ -178,7 +123,7 @@ void write_summary(const fs::path& out, const Options& o, const std::vector<RunR
   std::vector<std::vector<double>> hv_of;
   for (const auto& variant : o.variants) {
     std::vector<double> hv, us;
-    std::vector<std::vector<double>> share(kDeciles);
+    std::vector<std::vector<double>> share(run::kDeciles);
     int with_front = 0, with_volume = 0;
     for (const auto& r : runs) {
       if (r.variant != variant) continue;
@@ -219,49 +164,44 @@ void write_summary(const fs::path& out, const Options& o, const std::vector<RunR
 
 int run_compare(const Options& o) {
   const std::vector<mold::PenaltyVariant> variants = parse_variants(o.variants);
-  const mold::MoldSpec spec = mold::load_mold_spec(o.mold);
-  std::vector<std::string> names;
-  {
-    const mold::Scene scene(spec);
-    names = eval::Pipeline(scene).objective_names();
-  }
-  const RunConfig config = resolve_run_config({o.config, o.algorithm, o.ref, std::nullopt, o.evaluations}, names);
-  const std::vector<double> ref = scaled_reference(config, names.size());
+  // One Scene for every variant: the variant is part of each run's config, not of the mold.
+  const run::Session session(o.mold, {o.config, o.algorithm, o.ref, std::nullopt, o.evaluations});
+  const run::RunConfig& config = session.config();
+  const std::vector<std::string>& names = session.objective_names();
+  const std::vector<double> ref = run::scaled_reference(config, names.size());
   std::optional<tbb::global_control> limit;
   if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
   fs::create_directories(o.out);
 
-  const bool tty = ::isatty(2);
+  const bool tty = ::isatty(2), progress = spdlog::should_log(spdlog::level::info);
+  spdlog::debug("mold {}: {} surface samples; run config:\n{}", o.mold, session.pipeline().surface_samples(),
+                config.to_yaml(names));
   const int total = int(variants.size()) * o.seeds;
-  std::vector<RunResult> runs;
+  std::vector<run::PenaltyRun> runs;
   for (const mold::PenaltyVariant v : variants) {
-    mold::MoldSpec variant_spec = spec;
-    variant_spec.penalty.variant = v;
-    const mold::Scene scene(std::move(variant_spec));
-    const eval::Pipeline pipeline(scene);
+    run::RunConfig variant_config = config;
+    variant_config.penalty = v;
     for (int seed = 1; seed <= o.seeds; ++seed) {
       const int index = int(runs.size()) + 1;
       char head[160];
       std::snprintf(head, sizeof head, "[%d/%d] %s seed %d", index, total, mold::to_string(v).c_str(), seed);
-      runs.push_back(run_once(scene, pipeline, config, std::uint64_t(seed), ref, [&](int deciles) {
-        if (!o.quiet && tty) std::fprintf(stderr, "\r%s: %d%%\033[K", head, 10 * deciles);
+      runs.push_back(run::run_with_penalty(session, variant_config, std::uint64_t(seed), ref, [&](int deciles) {
+        if (progress && tty) std::fprintf(stderr, "\r%s: %d%%\033[K", head, 10 * deciles);
       }));
-      const RunResult& r = runs.back();
-      if (!o.quiet)
-        std::fprintf(stderr, "%s%s: HV %.6g (front %zu), %.0f%% of evaluations feasible, %.1f us/evaluation\n",
-                     tty ? "\r" : "", head, r.hypervolume, r.front_size, 100.0 * double(r.feasible) / double(r.evaluations),
-                     1e6 * r.seconds / double(r.evaluations));
+      const run::PenaltyRun& r = runs.back();
+      if (progress && tty) std::fprintf(stderr, "\r");
+      spdlog::info("{}: HV {:.6g} (front {}), {:.0f}% of evaluations feasible, {:.1f} us/evaluation", head, r.hypervolume,
+                   r.front_size, 100.0 * double(r.feasible) / double(r.evaluations), 1e6 * r.seconds / double(r.evaluations));
     }
   }
   const fs::path out(o.out);
   write_csvs(out, runs, ref);
-  write_summary(out, o, runs, ref, names, spec, config.es.evaluations, config.es.mu);
+  write_summary(out, o, runs, ref, names, session.spec(), config.es.evaluations, config.es.mu);
   std::ostringstream plot_log;
   const bool plotted = render_plot("plot_penalties.py", {out.string()}, plot_log);
-  if (!o.quiet) {
-    std::cerr << plot_log.str() << "results in " << out.string() << "/: summary.md, runs.csv, feasible_share.csv, rank_tests.csv"
-              << (plotted ? ", penalties.png" : "") << "\n";
-  }
+  if (!plot_log.str().empty()) spdlog::info(plot_log.str().substr(0, plot_log.str().size() - 1));
+  spdlog::info("results in {}/: summary.md, runs.csv, feasible_share.csv, rank_tests.csv{}", out.string(),
+               plotted ? ", penalties.png" : "");
   return 0;
 }
 
@@ -302,7 +242,7 @@ Command add_compare_penalties_command(CLI::App& app) {
   sub->add_option("--out", o->out, "output folder")->capture_default_str();
   sub->add_option("--threads", o->threads, "worker threads (default: all cores); results do not depend on it")
       ->check(CLI::Range(0, 1024));
-  sub->add_flag("--quiet", o->quiet, "no progress output");
+  add_log_flags(sub);
   return {sub, [o] { return run_compare(*o); }};
 }
 

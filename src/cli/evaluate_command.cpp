@@ -11,6 +11,7 @@
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
+#include "mtcs/run/session.h"
 
 namespace mtcs::cli {
 
@@ -76,13 +77,11 @@ Command add_evaluate_command(CLI::App& app) {
                 "one JSON object on stdout: {feasible, objectives, violation, violations[{kind, elements, "
                 "distance, margin, where}], stages[{name, seconds}]}");
   return {sub, [opt] {
-            const mold::Scene scene(mold::load_mold_spec(opt->mold));
-            const mold::Genome genome = mold::load_layout(opt->layout, scene.spec());
-            const eval::Pipeline pipeline(scene);
-            const mold::Layout layout = mold::decode(scene, genome);
-            const eval::Evaluation e = pipeline.evaluate(genome, true);
-            if (opt->json) std::cout << to_json(e, pipeline).dump(2) << "\n";
-            else print_text(e, pipeline, layout);
+            const run::Session session(opt->mold);
+            const mold::Genome genome = mold::load_layout(opt->layout, session.spec());
+            const eval::Evaluation e = session.pipeline().evaluate(genome, true);
+            if (opt->json) std::cout << to_json(e, session.pipeline()).dump(2) << "\n";
+            else print_text(e, session.pipeline(), mold::decode(session.scene(), genome));
             return 0;
           }};
 }

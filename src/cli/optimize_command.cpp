@@ -3,6 +3,7 @@
 // interruption), and writing the best layout for CAD and for re-scoring.
 
 #include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
 #include <tbb/global_control.h>
 #include <unistd.h>
 
@@ -16,8 +17,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "mold_problem.h"
-#include "polish.h"
+#include "log.h"
 #include "mtcs/cli/commands.h"
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/io/atomic_file.h"
@@ -27,36 +27,21 @@
 #include "mtcs/opt/benchmark_problems.h"
 #include "mtcs/opt/sms_emoa.h"
 #include "mtcs/store/run_store.h"
-#include "mold_run.h"
+#include "mtcs/run/polish.h"
+#include "mtcs/run/run_record.h"
+#include "mtcs/run/session.h"
+#include "mtcs/run/stored_run.h"
 
 namespace mtcs::cli {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw io::InputError(path, 0, 0, "", "cannot open file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-// FNV-1a, 64 bits: identifies the mold spec a run was made with.
-std::string fnv1a(const std::string& bytes) {
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (const unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ULL;
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
-}
-
 struct Options {
   std::string mold, config, out = "mtcs-run", resume;
   std::optional<std::uint64_t> seed;
   std::optional<long> evaluations;
   int threads = 0;
-  bool quiet = false;
   int polish = 0;  // COBYLA evaluations after the ES (0: none)
   std::string problem;    // a built-in test problem instead of a mold
   std::string algorithm = "es";
@@ -111,8 +96,8 @@ int run_test_problem(const Options& o) {
 // One status line on a terminal, a log line every few generations otherwise.
 class Progress {
  public:
-  Progress(bool quiet, int log_every, long budget)
-      : quiet_(quiet), tty_(::isatty(2)), log_every_(log_every), budget_(budget) {}
+  Progress(int log_every, long budget)
+      : quiet_(!spdlog::should_log(spdlog::level::info)), tty_(::isatty(2)), log_every_(log_every), budget_(budget) {}
   void operator()(const opt::Generation& g, double seconds, long evals_this_session) {
     if (quiet_) return;
     const double rate = seconds > 0 ? double(evals_this_session) / seconds : 0;
@@ -125,7 +110,7 @@ class Progress {
                   g.population.front().score.feasible ? "" : " (infeasible)",
                   100.0 * feasible / double(g.population.size()), eta);
     if (tty_) std::fprintf(stderr, "\r%s\033[K", line);
-    else if (g.index % log_every_ == 0) std::fprintf(stderr, "%s\n", line);
+    else if (g.index % log_every_ == 0) spdlog::info(line);
   }
   void done() const {
     if (!quiet_ && tty_) std::fprintf(stderr, "\n");
@@ -150,65 +135,48 @@ int run_optimize(const Options& o) {
     mold_path = meta.at("mold");
     config_text = meta.at("config");
   }
-  const mold::Scene scene(mold::load_mold_spec(mold_path));
-  const eval::Pipeline pipeline(scene);
-  const auto names = pipeline.objective_names();
-  RunConfig config;
-  if (!o.resume.empty()) {
-    if (fnv1a(read_file(mold_path)) != meta.at("mold_hash"))
-      throw io::InputError(mold_path, 0, 0, "", "the mold spec changed since the run started; start a new run");
-    config = parse_run_config(config_text, db_path + ":config", names);
-  } else {
-    config = resolve_run_config({o.config, o.algorithm == "es" ? "" : o.algorithm, o.ref, o.seed, o.evaluations}, names);
+  if (!o.resume.empty() && run::content_hash(run::read_file_text(mold_path)) != meta.at("mold_hash"))
+    throw io::InputError(mold_path, 0, 0, "", "the mold spec changed since the run started; start a new run");
+  // A resumed run keeps its stored config; a new one resolves RUN.yaml and the command line.
+  const run::RunOverrides overrides{o.config, o.algorithm == "es" ? "" : o.algorithm, o.ref, o.seed, o.evaluations};
+  const run::Session session = o.resume.empty()
+                                   ? run::Session(mold::load_mold_spec(mold_path), overrides)
+                                   : run::Session(mold::load_mold_spec(mold_path), config_text, db_path + ":config");
+  const mold::Scene& scene = session.scene();
+  const std::vector<std::string>& names = session.objective_names();
+  const run::RunConfig& config = session.config();
+  if (o.resume.empty()) {
     fs::create_directories(out_dir);
     if (fs::exists(db_path))
       throw io::InputError(db_path, 0, 0, "", "a run exists here: resume it with --resume " + out_dir + " or choose --out");
-    meta = {{"mold", fs::absolute(mold_path).string()}, {"mold_hash", fnv1a(read_file(mold_path))},
-            {"config", config.to_yaml(names)}, {"seed", std::to_string(config.es.seed)},
-            {"objectives", [&] { std::string s; for (const auto& n : names) s += (s.empty() ? "" : ",") + n; return s; }()},
-            {"program", "mtcs 0.1.0"}};
+    meta = run::mold_run_meta(mold_path, session);
     db = store::RunStore::create(db_path, meta);
   }
 
   std::optional<tbb::global_control> limit;
   if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
-  const MoldProblem problem(pipeline, config.weights, config.mutation);
-  const MoldOptimizer optimizer(problem, scene, config);
+  const run::MoldProblem& problem = session.problem();
+  const run::MoldOptimizer optimizer(problem, scene, config);
   const bool pareto = optimizer.pareto();
-  const auto previous = db->last();
-  const double seconds_before = previous ? db->summaries().back().seconds : 0;
-  const long evals_before = previous ? previous->evaluations : 0;
-  Progress progress(o.quiet, config.log_every, config.es.evaluations);
-  const auto t0 = std::chrono::steady_clock::now();
-  auto on_generation = [&](const opt::Generation& g) {
-    // SMS-EMOA steps one offspring at a time: store (and report) every mu steps.
-    if (pareto && g.index % optimizer.mu() != 0) return;
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    db->save(g, seconds_before + s);
-    progress(g, s, g.evaluations - evals_before);
-  };
-  opt::Generation last = optimizer.run(previous ? &*previous : nullptr, on_generation);
-  if (pareto) {
-    if (last.index % optimizer.mu() != 0)  // the last steps, unless just stored
-      db->save(last, seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-    std::stable_sort(last.population.begin(), last.population.end(),
-                     [&](const opt::Individual& a, const opt::Individual& b) { return problem.better(a.score, b.score); });
-  }
+  spdlog::debug("mold {}: {} surface samples; run config:\n{}", mold_path, session.pipeline().surface_samples(),
+                config.to_yaml(names));
+  Progress progress(config.log_every, config.es.evaluations);
+  const run::StoredRun stored = run::run_stored(optimizer, problem, *db, progress);
+  const opt::Generation& last = stored.last;
+  const double seconds = stored.seconds;
   progress.done();
-  const double seconds = seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   // The best layout, for CAD and for re-scoring with mtcs evaluate; optionally polished.
   opt::Individual best = last.population.front();
   mold::Genome genome = problem.genome(best.x);
   nlohmann::ordered_json polish_json;
   if (o.polish > 0) {
-    const Polished p = polish(problem, scene, genome, o.polish);
+    const run::Polished p = run::polish(problem, scene, genome, o.polish);
     polish_json = {{"evaluations", p.evaluations}, {"improved", p.improved}, {"before", best.score.value},
                    {"after", p.score.value}};
     if (p.improved) genome = p.genome, best.score = p.score;
-    if (!o.quiet)
-      std::cerr << "polish (COBYLA, " << p.evaluations << " evaluations): objective " << best.score.value
-                << (p.improved ? "" : " (no improvement)") << "\n";
+    spdlog::info("polish (COBYLA, {} evaluations): objective {:.6g}{}", p.evaluations, best.score.value,
+                 p.improved ? "" : " (no improvement)");
   }
   const mold::Layout layout = mold::decode(scene, genome);
   mold::save_layout((fs::path(out_dir) / "best.layout.yaml").string(), genome);
@@ -245,13 +213,12 @@ int run_optimize(const Options& o) {
   io::AtomicFile file((fs::path(out_dir) / "summary.json").string());
   file.stream() << summary.dump(2) << "\n";
   file.commit();
-  if (!o.quiet) {
-    std::cerr << (best.score.feasible ? "feasible" : "INFEASIBLE") << " best layout: " << layout.bores.size()
-              << " bores in " << genome.circuits.size() << " circuits, objective " << best.score.value << ", "
-              << last.evaluations << " evaluations in " << seconds << " s\n"
-              << "results in " << out_dir << "/: best.layout.yaml (mtcs evaluate " << mold_path << " --layout "
-              << out_dir << "/best.layout.yaml), bores.csv, bores.stl, summary.json, run.sqlite\n";
-  }
+  spdlog::info("{} best layout: {} bores in {} circuits, objective {:.6g}, {} evaluations in {:.6g} s",
+               best.score.feasible ? "feasible" : "INFEASIBLE", layout.bores.size(), genome.circuits.size(),
+               best.score.value, last.evaluations, seconds);
+  spdlog::info("results in {}/: best.layout.yaml (mtcs evaluate {} --layout {}/best.layout.yaml), bores.csv, bores.stl, "
+               "summary.json, run.sqlite",
+               out_dir, mold_path, out_dir);
   return 0;
 }
 
@@ -274,7 +241,7 @@ Command add_optimize_command(CLI::App& app) {
   sub->add_option("--evaluations", o->evaluations, "evaluation budget (overrides the config)")->check(CLI::PositiveNumber);
   sub->add_option("--threads", o->threads, "worker threads (default: all cores); results do not depend on it")
       ->check(CLI::Range(0, 1024));
-  sub->add_flag("--quiet", o->quiet, "no progress output");
+  add_log_flags(sub);
   sub->add_option("--resume", o->resume, "continue the run stored in this folder");
   sub->add_option("--polish", o->polish,
                   "then refine the best layout's hole coordinates with NLopt's COBYLA for this many evaluations")

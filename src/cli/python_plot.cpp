@@ -33,7 +33,22 @@ int run_python(const std::vector<std::string>& args, bool quiet) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-std::string script_path(const std::string& script) { return (std::filesystem::path(MTCS_SCRIPTS_DIR) / script).string(); }
+// The scripts travel with the binary: PREFIX/share/mtcs beside PREFIX/bin/mtcs once installed,
+// BUILD/share/mtcs beside BUILD/mtcs in the build tree (CMake copies them there).
+std::vector<std::filesystem::path> script_dirs() {
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) return {};
+  const std::filesystem::path bin = exe.parent_path();
+  return {bin / ".." / "share" / "mtcs", bin / "share" / "mtcs"};
+}
+
+std::string script_path(const std::string& script) {
+  const auto dirs = script_dirs();
+  for (const auto& d : dirs)
+    if (std::filesystem::exists(d / script)) return (d / script).lexically_normal().string();
+  return dirs.empty() ? script : (dirs.front() / script).lexically_normal().string();
+}
 
 }  // namespace
 
@@ -51,7 +66,8 @@ bool render_plot(const std::string& script, const std::vector<std::string>& args
     return false;
   }
   if (!std::filesystem::exists(script_path(script))) {
-    log << "no plot: " << script_path(script) << " is missing (mtcs looks for the scripts of the checkout it was built from)\n";
+    log << "no plot: " << script_path(script) << " is missing (mtcs looks for its plotting scripts in share/mtcs "
+        << "beside or above its own folder; cmake --install puts them there)\n";
     return false;
   }
   std::vector<std::string> full{script_path(script)};

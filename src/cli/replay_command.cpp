@@ -4,6 +4,7 @@
 // it fails unless every re-evaluated objective equals the stored one bit for bit.
 
 #include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -11,7 +12,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "mold_problem.h"
+#include "log.h"
 #include "mtcs/cli/commands.h"
 #include "mtcs/io/atomic_file.h"
 #include "mtcs/io/input_error.h"
@@ -20,7 +21,8 @@
 #include "mtcs/opt/sms_emoa.h"
 #include "mtcs/store/run_store.h"
 #include "python_plot.h"
-#include "run_config.h"
+#include "mtcs/run/run_record.h"
+#include "mtcs/run/session.h"
 
 namespace mtcs::cli {
 namespace {
@@ -28,7 +30,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct Options {
-  std::string dir;
+  std::string dir, mold;
   std::optional<int> generation;
   bool verify = false;
   bool plots = true;
@@ -54,11 +56,12 @@ int run_replay(const Options& o) {
   const store::RunStore db = store::RunStore::open(db_path);
   const auto meta = db.meta();
   if (!meta.count("mold")) throw io::InputError(db_path, 0, 0, "", "a test-problem run: nothing to replay against a mold");
-  const mold::Scene scene(mold::load_mold_spec(meta.at("mold")));
-  const eval::Pipeline pipeline(scene);
-  const auto names = pipeline.objective_names();
-  const RunConfig config = parse_run_config(meta.at("config"), db_path + ":config", names);
-  const MoldProblem problem(pipeline, config.weights, config.mutation);
+  std::string mold_note;
+  const run::Session session(run::stored_mold_spec(meta, o.mold, &mold_note), meta.at("config"), db_path + ":config");
+  if (!mold_note.empty()) spdlog::warn(mold_note);
+  const mold::Scene& scene = session.scene();
+  const std::vector<std::string>& names = session.objective_names();
+  const run::MoldProblem& problem = session.problem();
 
   std::vector<int> indices;
   const auto summaries = db.summaries();
@@ -125,17 +128,18 @@ int run_replay(const Options& o) {
   io::AtomicFile frames_file((out / "frames.json").string());
   frames_file.stream() << frames.dump(1) << '\n';
   frames_file.commit();
-  std::cerr << "replayed " << indices.size() << " generation(s), " << checked << " individuals: " << mismatches
-            << " objective mismatch(es); fronts in " << out.string() << "/\n";
+  spdlog::info("replayed {} generation(s), {} individuals: {} objective mismatch(es); fronts in {}/", indices.size(), checked,
+               mismatches, out.string());
   std::ostringstream plot_log;
   if (!o.plots)
-    std::cerr << "no front plots (--no-plots); render them with: "
-              << plot_command("plot_fronts.py", {(out / "frames.json").string()}) << "\n";
+    spdlog::info("no front plots (--no-plots); render them with: {}",
+                 plot_command("plot_fronts.py", {(out / "frames.json").string()}));
   else if (render_plot("plot_fronts.py", {(out / "frames.json").string()}, plot_log))
-    std::cerr << "front plots: " << out.string() << "/front_*.png (an animation: ffmpeg -framerate 10 -pattern_type glob -i '"
-              << out.string() << "/front_*.png' front.mp4)\n";
+    spdlog::info("front plots: {0}/front_*.png (an animation: ffmpeg -framerate 10 -pattern_type glob -i '{0}/front_*.png' "
+                 "front.mp4)",
+                 out.string());
   else
-    std::cerr << plot_log.str();
+    spdlog::info(plot_log.str().substr(0, plot_log.str().empty() ? 0 : plot_log.str().size() - 1));
   return o.verify && mismatches > 0 ? 1 : 0;
 }
 
@@ -154,6 +158,10 @@ Command add_replay_command(CLI::App& app) {
       "Example: mtcs replay runs/demo-plate --verify");
   sub->add_option("dir", o->dir, "run folder (with run.sqlite)")->required();
   sub->add_option("--generation", o->generation, "only this stored generation");
+  sub->add_option("--mold", o->mold,
+                  "the run's mold at a new place (default: the spec text stored in the run, or for a mold with\n"
+                  "mesh files the stored path); a mold that differs from the run's is named with what changed");
+  add_log_flags(sub);
   sub->add_flag("--verify", o->verify, "fail unless the replay reproduces every objective exactly");
   sub->add_flag("!--no-plots", o->plots, "no PNGs (about 0.1 s per generation); frames.json is still written");
   return {sub, [o] { return run_replay(*o); }};

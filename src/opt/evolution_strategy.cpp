@@ -15,12 +15,6 @@ Genotype Problem::recombine(const Genotype& a, const Genotype&, Rng&) const { re
 EvolutionStrategy::EvolutionStrategy(const Problem& problem, EsConfig config)
     : problem_(problem), config_(config) {}
 
-std::vector<Score> EvolutionStrategy::evaluate_all(const Problem& problem, const std::vector<Genotype>& xs) {
-  std::vector<Score> scores(xs.size());
-  tbb::parallel_for(std::size_t(0), xs.size(), [&](std::size_t i) { scores[i] = problem.evaluate(xs[i]); });
-  return scores;
-}
-
 namespace {
 
 // Best first; ties keep their order (stable), so the result does not depend on threads.
@@ -30,19 +24,6 @@ void sort_population(const Problem& problem, std::vector<Individual>& pop) {
 }
 
 }  // namespace
-
-Generation EvolutionStrategy::sample_population(const Problem& problem, std::uint64_t seed, int count) {
-  Generation g;
-  std::vector<Genotype> xs;
-  for (int i = 0; i < count; ++i) {
-    Rng rng = Rng::for_individual(seed, 0, std::uint64_t(i));
-    xs.push_back(problem.sample(rng));
-  }
-  const auto scores = evaluate_all(problem, xs);
-  for (std::size_t i = 0; i < xs.size(); ++i) g.population.push_back({xs[i], problem.initial_steps(xs[i]), scores[i]});
-  g.evaluations = count;
-  return g;
-}
 
 Generation EvolutionStrategy::initial() const {
   Generation g = sample_population(problem_, config_.seed, config_.mu);

@@ -48,7 +48,7 @@ std::vector<std::size_t> worst_front(const std::vector<Score>& scores, bool* is_
 SmsEmoa::SmsEmoa(const Problem& problem, SmsConfig config) : problem_(problem), config_(std::move(config)) {}
 
 Generation SmsEmoa::initial() const {
-  return EvolutionStrategy::sample_population(problem_, config_.seed, config_.mu);
+  return sample_population(problem_, config_.seed, config_.mu);
 }
 
 Generation SmsEmoa::step(const Generation& prev) const {

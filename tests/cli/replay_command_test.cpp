@@ -74,3 +74,48 @@ TEST_CASE("mtcs replay writes a front plot per generation and an STL per final f
     CHECK(fs::exists(replay / (stem + ".layout.yaml")));
   }
 }
+
+TEST_CASE("mtcs replay: the run keeps its mold; moved, deleted or edited molds are named", "[cli][replay]") {
+  using mtcs_test::run_mtcs_err;
+  const fs::path dir = scratch("moved");
+  fs::remove_all(dir);
+  fs::create_directories(dir / "a" / "meshes");
+  // A primitive mold (plate) and a mold with a mesh file (cup), each in a folder of its own.
+  fs::copy_file(MTCS_SOURCE_DIR "/molds/plate.yaml", dir / "a" / "plate.yaml");
+  fs::copy_file(MTCS_SOURCE_DIR "/molds/cup.yaml", dir / "a" / "cup.yaml");
+  fs::copy_file(MTCS_SOURCE_DIR "/molds/meshes/cup.off", dir / "a" / "meshes" / "cup.off");
+  for (const std::string mold : {"plate", "cup"})
+    REQUIRE(run_mtcs("optimize " + (dir / "a" / (mold + ".yaml")).string() + " --algorithm sms-emoa --evaluations 120 --quiet --out " +
+                     (dir / ("run_" + mold)).string()) == 0);
+  const std::string plate_run = (dir / "run_plate").string() + " --verify --no-plots";
+  const std::string cup_run = (dir / "run_cup").string() + " --verify --no-plots";
+  REQUIRE(run_mtcs("replay " + plate_run) == 0);
+
+  fs::rename(dir / "a", dir / "b");
+  // The plate's spec text is in the run: the replay reproduces every objective and says why.
+  auto r = run_mtcs_err("replay_moved", "replay " + plate_run);
+  CHECK(r.code == 0);
+  CHECK(r.err.find("is gone (moved or deleted): replayed with the spec text stored in the run") != std::string::npos);
+  // The cup loads a mesh: its new place is needed, and then it is recognised as the same.
+  r = run_mtcs_err("replay_moved", "replay " + cup_run);
+  CHECK(r.code == 2);
+  CHECK(r.err.find("--mold") != std::string::npos);
+  r = run_mtcs_err("replay_moved", "replay " + cup_run + " --mold " + (dir / "b" / "cup.yaml").string());
+  CHECK(r.code == 0);
+  CHECK(r.err.find("the same spec and meshes as the run's") != std::string::npos);
+  // An edited mesh is named.
+  { std::ofstream(dir / "b" / "meshes" / "cup.off", std::ios::app) << "# edited\n"; }
+  r = run_mtcs_err("replay_moved", "replay " + (dir / "run_cup").string() + " --no-plots --mold " + (dir / "b" / "cup.yaml").string());
+  CHECK(r.err.find("differs from the run's mold (mesh meshes/cup.off)") != std::string::npos);
+  // An edited spec that changes the scores, in place: named, and --verify fails.
+  fs::rename(dir / "b", dir / "a");
+  std::string plate = mtcs_test::read_text(dir / "a" / "plate.yaml");
+  const auto at = plate.find("sample_spacing:");
+  REQUIRE(at != std::string::npos);
+  plate.replace(at, plate.find('\n', at) - at, "sample_spacing: 2.0");
+  { std::ofstream(dir / "a" / "plate.yaml") << plate; }
+  r = run_mtcs_err("replay_moved", "replay " + plate_run);
+  CHECK(r.code == 1);
+  CHECK(r.err.find("differs from the run's mold (the spec text)") != std::string::npos);
+  fs::remove_all(dir);
+}

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "cli/fcl_peer.h"
+#include "bench/fcl_peer.h"
 #include "mtcs/geometry/cylinder_distance.h"
 
 using namespace mtcs::geometry;
@@ -137,7 +137,7 @@ TEST_CASE("random pairs: agree with the naive baseline and with FCL", "[geometry
     const double s = std::max(1.0, pair_scale(a, b));
     if (std::abs(distance_naive(a, b).distance - ours.distance) > 1e-9 * s) ++naive_bad;
     // GJK converges to ~1e-6 on these curved shapes: a coarse but independent check.
-    const double fcl = mtcs::cli::FclPair(a, b).distance();
+    const double fcl = mtcs::bench::FclPair(a, b).distance();
     if (std::abs(fcl - ours.distance) > 1e-3 * s) ++fcl_bad;
   }
   CHECK(naive_bad == 0);

@@ -8,7 +8,7 @@
 #include <random>
 #include <sstream>
 
-#include "cli/fcl_mesh_peer.h"
+#include "bench/fcl_mesh_peer.h"
 #include "mtcs/mesh/bvh.h"
 #include "mtcs/mesh/mesh_io.h"
 
@@ -120,7 +120,7 @@ TEST_CASE("mesh clearance agrees with FCL on separated cylinders", "[mesh][clear
   for (const std::string name : {"turbine", "openscad_example006"}) {
     const auto m = mesh::read_mesh(MTCS_TEST_DATA "/meshes/" + name + ".off");
     const mesh::TriangleBvh bvh(m);
-    const cli::FclMesh fcl(m);
+    const bench::FclMesh fcl(m);
     for (const Case& c : read_cases(MTCS_TEST_DATA "/mesh_clearance/" + name + ".csv")) {
       if (c.category != "near" && c.category != "end_cap") continue;
       const double s = scale_of(c, m);

@@ -163,14 +163,14 @@ TEST_CASE("hypervolume: 3-D contributions on a large front full of ties equal le
   }
 }
 
-#include "cli/pagmo_peer.h"
+#include "bench/pagmo_peer.h"
 
 TEST_CASE("hypervolume: pagmo agrees on every certified front; 2-D contributions identical", "[opt][hypervolume]") {
   for (const char* name : {"linear_d2_n1000", "random_d3_n1000", "sphere_d4_n100", "random_d5_n100", "sphere_d2_n100"}) {
     const Front f = read(std::string(MTCS_TEST_DATA "/hv_fronts/") + name + ".txt");
-    const double ours = hypervolume(f.points, f.ref), theirs = mtcs::cli::pagmo_hypervolume(f.points, f.ref);
+    const double ours = hypervolume(f.points, f.ref), theirs = mtcs::bench::pagmo_hypervolume(f.points, f.ref);
     INFO(name);
     CHECK(std::abs(ours - theirs) <= 1e-12 * ours);
-    if (f.ref.size() == 2) CHECK(contributions(f.points, f.ref) == mtcs::cli::pagmo_contributions(f.points, f.ref));
+    if (f.ref.size() == 2) CHECK(contributions(f.points, f.ref) == mtcs::bench::pagmo_contributions(f.points, f.ref));
   }
 }

@@ -4,6 +4,7 @@
 // (InputError -> 2).
 
 #include <functional>
+#include <string>
 
 namespace CLI {
 class App;
@@ -17,7 +18,6 @@ struct Command {
 };
 
 Command add_distance_command(CLI::App& app);
-Command add_bench_command(CLI::App& app);
 Command add_evaluate_command(CLI::App& app);
 Command add_optimize_command(CLI::App& app);
 Command add_hypervolume_command(CLI::App& app);
@@ -25,5 +25,10 @@ Command add_replay_command(CLI::App& app);
 Command add_compare_penalties_command(CLI::App& app);
 Command add_clearance_command(CLI::App& app);
 Command add_interfere_command(CLI::App& app);
+
+// `mtcs bench ARGS`: runs the mtcs-bench found beside this binary with ARGS (argv without the
+// program and "bench"); returns only when it cannot (127: not found).
+int run_bench_program(int argc, char** argv);
+std::string bench_program_path();
 
 }  // namespace mtcs::cli

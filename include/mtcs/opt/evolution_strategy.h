@@ -9,6 +9,7 @@
 #include <functional>
 #include <vector>
 
+#include "mtcs/opt/population.h"
 #include "mtcs/opt/problem.h"
 
 namespace mtcs::opt {
@@ -26,18 +27,6 @@ struct EsConfig {
   bool random_search = false;
 };
 
-struct Individual {
-  Genotype x;
-  std::vector<double> steps;
-  Score score;
-};
-
-struct Generation {
-  int index = 0;          // 0: the initial population
-  long evaluations = 0;   // spent so far
-  std::vector<Individual> population;  // after selection, best first
-};
-
 class EvolutionStrategy {
  public:
   EvolutionStrategy(const Problem& problem, EsConfig config);
@@ -46,12 +35,6 @@ class EvolutionStrategy {
   Generation step(const Generation& previous) const;
   bool done(const Generation& g) const { return g.evaluations + config_.lambda > config_.evaluations; }
   const EsConfig& config() const { return config_; }
-
-  // Evaluates in parallel (TBB); results in input order.
-  static std::vector<Score> evaluate_all(const Problem& problem, const std::vector<Genotype>& xs);
-  // The initial population of every optimiser here: `count` samples drawn from the
-  // generators of generation 0, evaluated in parallel, in sampling order.
-  static Generation sample_population(const Problem& problem, std::uint64_t seed, int count);
 
  private:
   const Problem& problem_;

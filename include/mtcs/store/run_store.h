@@ -1,9 +1,10 @@
 #pragma once
-// The run store (SQLite): what a run was (resolved config, mold spec and its hash, seed, program
-// version) and every generation's population — genotype, strategy parameters, objectives,
-// total violation, the violated constraints in words, feasibility — with a summary. One transaction per generation, so a run killed at
-// any moment (kill -9 included) keeps every complete generation and resumes from the last.
-// Numbers are stored as their exact bits: a resumed run continues bit for bit.
+// The run store (SQLite): what a run was (the run record of run/run_record.h: resolved config,
+// the mold spec's path, text and hash, its meshes' hashes, seed, program version) and every
+// generation's population — genotype, strategy parameters, objectives, total violation, the
+// violated constraints in words, feasibility — with a summary. One transaction per generation,
+// so a run killed at any moment (kill -9 included) keeps every complete generation and resumes
+// from the last. Numbers are stored as their exact bits: a resumed run continues bit for bit.
 
 #include <map>
 #include <memory>
@@ -11,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "mtcs/opt/evolution_strategy.h"
+#include "mtcs/opt/population.h"
 
 struct sqlite3;
 

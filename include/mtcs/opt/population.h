@@ -1,0 +1,30 @@
+#pragma once
+// What every optimiser here evolves and stores: individuals (genotype, step sizes, score) and
+// generations of them, and the initial population they all start from.
+
+#include <cstdint>
+#include <vector>
+
+#include "mtcs/opt/problem.h"
+
+namespace mtcs::opt {
+
+struct Individual {
+  Genotype x;
+  std::vector<double> steps;
+  Score score;
+};
+
+struct Generation {
+  int index = 0;          // 0: the initial population
+  long evaluations = 0;   // spent so far
+  std::vector<Individual> population;  // after selection, best first
+};
+
+// Evaluates in parallel (TBB); results in input order, whatever the thread count.
+std::vector<Score> evaluate_all(const Problem& problem, const std::vector<Genotype>& xs);
+// `count` samples drawn from the generators of generation 0, evaluated in parallel, in
+// sampling order (unsorted).
+Generation sample_population(const Problem& problem, std::uint64_t seed, int count);
+
+}  // namespace mtcs::opt

@@ -1,0 +1,68 @@
+#pragma once
+// A mold as an optimisation problem (DESIGN.md: Problem = Decoder + Pipeline): the genotype
+// encodes circuits of waypoints, the mutations are the structural moves a bore set needs
+// (shared/notes/mtcs_literature.md 7.3), the score comes from the evaluation pipeline.
+//
+// Genotype layout: [K, then per circuit: diameter index, n, x0, y0, z0, ..., x(n-1), y, z].
+
+#include <atomic>
+#include <optional>
+
+#include "mtcs/eval/pipeline.h"
+#include "mtcs/mold/genome.h"
+#include "mtcs/opt/problem.h"
+
+namespace mtcs::run {
+
+struct MutationRates {
+  double insert = 0.1, remove = 0.1, snap = 0.05, diameter = 0.05, circuit = 0.02;
+};
+
+class MoldProblem final : public opt::Problem {
+ public:
+  // `penalty`: the constraint-handling variant the layouts are ranked by (default: the spec's).
+  MoldProblem(const eval::Pipeline& pipeline, std::vector<double> weights, MutationRates rates,
+              std::optional<mold::PenaltyVariant> penalty = std::nullopt);
+
+  std::string name() const override { return "mold"; }
+  opt::Genotype sample(opt::Rng& rng) const override;
+  std::size_t step_sizes(const opt::Genotype&) const override { return 1; }
+  // The waypoint coordinates (the genotype minus its structure counts).
+  std::size_t dimension(const opt::Genotype& g) const override;
+  std::vector<double> initial_steps(const opt::Genotype&) const override { return {initial_step_}; }
+  void mutate(opt::Genotype& g, const std::vector<double>& steps, opt::Rng& rng) const override;
+  opt::Genotype recombine(const opt::Genotype& a, const opt::Genotype& b, opt::Rng& rng) const override;
+  opt::Score evaluate(const opt::Genotype& g) const override;
+  bool better(const opt::Score& a, const opt::Score& b) const override;
+  // Constrained domination as it is; the penalty variants rank every layout as feasible, by each
+  // objective plus the variant's penalty term (in scaled units: the same term on each).
+  opt::Score ranking(const opt::Score& s) const override;
+
+  mold::PenaltyVariant penalty_variant() const { return ranking_.penalty.variant; }
+
+  // Layouts evaluated so far, and how many of them were feasible.
+  long evaluated() const { return evaluated_; }
+  long feasible_evaluated() const { return feasible_; }
+
+  mold::Genome genome(const opt::Genotype& g) const;
+  opt::Genotype encode(const mold::Genome& genome) const;
+
+ private:
+  mold::Circuit random_circuit(opt::Rng& rng) const;
+  // Puts a port back on its face (nearest allowed one) and interior points inside the block.
+  void repair(mold::Circuit& c) const;
+
+  const eval::Pipeline& pipeline_;
+  const mold::MoldSpec& spec_;
+  // The spec's objectives and penalty with this problem's variant: what the ranking reads
+  // (no geometry: a variant costs no copy of the meshes).
+  mold::MoldSpec ranking_;
+  geometry::Box block_;
+  geometry::Box region_;  // where new circuits' waypoints are drawn: around the part
+  std::vector<double> weights_;
+  MutationRates rates_;
+  double initial_step_;
+  mutable std::atomic<long> evaluated_{0}, feasible_{0};
+};
+
+}  // namespace mtcs::run

@@ -1,0 +1,33 @@
+#pragma once
+// RUN.yaml: how to optimise (configs/*.yaml document every field). The resolved config is
+// stored with the run, so that a resumed run uses exactly the same settings.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mtcs/mold/mold_spec.h"
+#include "mtcs/run/mold_problem.h"
+#include "mtcs/opt/evolution_strategy.h"
+
+namespace mtcs::run {
+
+struct RunConfig {
+  std::string algorithm = "es";  // or sms-emoa: a Pareto front over the mold's objectives
+  opt::EsConfig es;              // es.mu, es.evaluations and es.seed serve SMS-EMOA too
+  std::vector<double> ref;       // SMS-EMOA: reference point in scaled objectives (default 4 each)
+  std::vector<double> weights;  // per objective, in the spec's order; empty: all 1
+  MutationRates mutation;
+  int log_every = 10;           // generations between log lines when not on a terminal
+  // The constraint handling the layouts are ranked by; unset: the mold spec's penalty.variant.
+  std::optional<mold::PenaltyVariant> penalty;
+
+  std::string to_yaml(const std::vector<std::string>& objective_names) const;
+};
+
+// Throws io::InputError with file, line, column and field.
+RunConfig load_run_config(const std::string& path, const std::vector<std::string>& objective_names);
+RunConfig parse_run_config(const std::string& yaml_text, const std::string& origin,
+                           const std::vector<std::string>& objective_names);
+
+}  // namespace mtcs::run

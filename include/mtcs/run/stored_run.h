@@ -1,0 +1,21 @@
+#pragma once
+// An optimisation run kept in a run store: from the store's last generation (resume) or a fresh
+// population to the budget, every ES generation stored, SMS-EMOA's every mu steps and its last.
+
+#include <functional>
+
+#include "mtcs/run/mold_run.h"
+#include "mtcs/store/run_store.h"
+
+namespace mtcs::run {
+
+struct StoredRun {
+  opt::Generation last;  // population best first (SMS-EMOA's too: by the problem's ranking)
+  double seconds = 0;    // wall time of the whole run, earlier sessions included
+};
+
+// on_stored sees each stored generation with the seconds and evaluations of this session.
+StoredRun run_stored(const MoldOptimizer& optimizer, const MoldProblem& problem, store::RunStore& db,
+                     const std::function<void(const opt::Generation&, double seconds, long evaluations)>& on_stored);
+
+}  // namespace mtcs::run

@@ -1,0 +1,227 @@
+#include "mtcs/run/mold_problem.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "holes.h"
+
+namespace mtcs::run {
+
+using geometry::Vec3;
+
+namespace {
+
+int axis_of(mold::Face f) {
+  int k = 0;
+  mold::normal_of(f).cwiseAbs().maxCoeff(&k);
+  return k;
+}
+
+double face_plane(const geometry::Box& b, mold::Face f) {
+  const int k = axis_of(f);
+  return mold::normal_of(f)[k] > 0 ? b.max[k] : b.min[k];
+}
+
+}  // namespace
+
+MoldProblem::MoldProblem(const eval::Pipeline& pipeline, std::vector<double> weights, MutationRates rates,
+                         std::optional<mold::PenaltyVariant> penalty)
+    : pipeline_(pipeline), spec_(pipeline.scene().spec()), block_(pipeline.scene().block_bounds()),
+      weights_(std::move(weights)), rates_(rates), initial_step_(0.1 * block_.size().minCoeff()) {
+  ranking_.objectives = spec_.objectives;
+  ranking_.penalty = spec_.penalty;
+  if (penalty) ranking_.penalty.variant = *penalty;
+  region_ = block_;
+  if (spec_.cavity) {
+    const geometry::Box part = spec_.cavity->box ? *spec_.cavity->box : spec_.cavity->mesh->mesh.bounds();
+    const double reach = 4 * *std::max_element(spec_.drilling.diameters.begin(), spec_.drilling.diameters.end());
+    region_ = {(part.min - Vec3::Constant(reach)).cwiseMax(block_.min), (part.max + Vec3::Constant(reach)).cwiseMin(block_.max)};
+  }
+}
+
+mold::Genome MoldProblem::genome(const opt::Genotype& g) const {
+  mold::Genome out;
+  std::size_t i = 0;
+  const int circuits = int(g[i++]);
+  const auto& diameters = spec_.drilling.diameters;
+  for (int c = 0; c < circuits; ++c) {
+    mold::Circuit circuit;
+    circuit.diameter = diameters[std::size_t(std::clamp(int(g[i++]), 0, int(diameters.size()) - 1))];
+    const int n = int(g[i++]);
+    for (int p = 0; p < n; ++p, i += 3) circuit.waypoints.emplace_back(g[i], g[i + 1], g[i + 2]);
+    out.circuits.push_back(std::move(circuit));
+  }
+  return out;
+}
+
+std::size_t MoldProblem::dimension(const opt::Genotype& g) const {
+  const std::size_t circuits = std::size_t(g[0]);
+  return g.size() - 1 - 2 * circuits;
+}
+
+opt::Genotype MoldProblem::encode(const mold::Genome& genome) const {
+  opt::Genotype g{double(genome.circuits.size())};
+  const auto& diameters = spec_.drilling.diameters;
+  for (const auto& c : genome.circuits) {
+    const auto it = std::min_element(diameters.begin(), diameters.end(),
+                                     [&](double a, double b) { return std::abs(a - c.diameter) < std::abs(b - c.diameter); });
+    g.push_back(double(it - diameters.begin()));
+    g.push_back(double(c.waypoints.size()));
+    for (const Vec3& p : c.waypoints) g.insert(g.end(), {p.x(), p.y(), p.z()});
+  }
+  return g;
+}
+
+mold::Circuit MoldProblem::random_circuit(opt::Rng& rng) const {
+  // A U (or an L between different faces): in from the inlet face, across, out to the outlet
+  // face, in one plane, around the part (within a few diameters of its box). The shape every
+  // drilled circuit is made of, and free of self-crossings.
+  const geometry::Box& r = region_;
+  auto within = [&](int k) { return r.min[k] + rng.uniform() * r.size()[k]; };
+  const mold::Face in = spec_.circuits.inlet_faces[std::size_t(rng.below(int(spec_.circuits.inlet_faces.size())))];
+  const mold::Face out = spec_.circuits.outlet_faces[std::size_t(rng.below(int(spec_.circuits.outlet_faces.size())))];
+  const int ki = axis_of(in), ko = axis_of(out);
+  Vec3 p(within(0), within(1), within(2));
+  mold::Circuit c;
+  c.diameter = spec_.drilling.diameters[std::size_t(rng.below(int(spec_.drilling.diameters.size())))];
+  Vec3 inlet = p;
+  inlet[ki] = face_plane(block_, in);
+  c.waypoints.push_back(inlet);
+  c.waypoints.push_back(p);  // straight in
+  if (ki == ko) {
+    // Across along another drillable axis, then straight out through the same face.
+    std::vector<int> axes;
+    for (const mold::Face f : spec_.drilling.allowed_faces)
+      if (axis_of(f) != ki && std::find(axes.begin(), axes.end(), axis_of(f)) == axes.end()) axes.push_back(axis_of(f));
+    const int across = axes.empty() ? (ki + 1) % 3 : axes[std::size_t(rng.below(int(axes.size())))];
+    Vec3 q = p;
+    q[across] = within(across);
+    c.waypoints.push_back(q);
+    q[ko] = face_plane(block_, out);
+    c.waypoints.push_back(q);
+  } else {
+    Vec3 q = p;
+    q[ko] = face_plane(block_, out);
+    c.waypoints.push_back(q);
+  }
+  return c;
+}
+
+opt::Genotype MoldProblem::sample(opt::Rng& rng) const {
+  mold::Genome g;
+  const int k = spec_.circuits.min + rng.below(spec_.circuits.max - spec_.circuits.min + 1);
+  for (int c = 0; c < k; ++c) g.circuits.push_back(random_circuit(rng));
+  return encode(g);
+}
+
+void MoldProblem::repair(mold::Circuit& c) const {
+  for (Vec3& p : c.waypoints) p = p.cwiseMax(block_.min).cwiseMin(block_.max);
+  auto snap = [&](Vec3& p, const std::vector<mold::Face>& faces) {
+    mold::Face best = faces.front();
+    for (const mold::Face f : faces)
+      if (std::abs(p[axis_of(f)] - face_plane(block_, f)) < std::abs(p[axis_of(best)] - face_plane(block_, best))) best = f;
+    p[axis_of(best)] = face_plane(block_, best);
+  };
+  snap(c.waypoints.front(), spec_.circuits.inlet_faces);
+  snap(c.waypoints.back(), spec_.circuits.outlet_faces);
+}
+
+void MoldProblem::mutate(opt::Genotype& x, const std::vector<double>& steps, opt::Rng& rng) const {
+  mold::Genome g = genome(x);
+  const double sigma = steps.front();
+  const auto& lim = spec_.circuits;
+  // Structural moves.
+  if (rng.uniform() < rates_.circuit) {
+    if (int(g.circuits.size()) < lim.max && (rng.uniform() < 0.5 || int(g.circuits.size()) <= lim.min))
+      g.circuits.push_back(random_circuit(rng));
+    else if (int(g.circuits.size()) > lim.min)
+      g.circuits.erase(g.circuits.begin() + rng.below(int(g.circuits.size())));
+  }
+  for (auto& c : g.circuits) {
+    auto& w = c.waypoints;
+    if (rng.uniform() < rates_.insert && int(w.size()) < lim.max_waypoints) {
+      const int seg = rng.below(int(w.size()) - 1);
+      const Vec3 p = w[std::size_t(seg)] + rng.uniform() * (w[std::size_t(seg + 1)] - w[std::size_t(seg)]);
+      w.insert(w.begin() + seg + 1, p);
+    }
+    if (rng.uniform() < rates_.remove && int(w.size()) > std::max(2, lim.min_waypoints) && w.size() > 2)
+      w.erase(w.begin() + 1 + rng.below(int(w.size()) - 2));
+    if (rng.uniform() < rates_.snap && w.size() > 2) {
+      const int i = 1 + rng.below(int(w.size()) - 2);
+      const int k = rng.below(3);
+      w[std::size_t(i)][k] = w[std::size_t(i - 1)][k];
+    }
+    if (rng.uniform() < rates_.diameter) {
+      const auto& d = spec_.drilling.diameters;
+      int idx = int(std::find(d.begin(), d.end(), c.diameter) - d.begin());
+      idx = std::clamp(idx + (rng.uniform() < 0.5 ? -1 : 1), 0, int(d.size()) - 1);
+      c.diameter = d[std::size_t(idx)];
+    }
+    if (spec_.drilling.axis_parallel) {
+      // Move holes, not points: along each axis, consecutive waypoints that share the
+      // coordinate (the ends of a hole across it) shift together, so aligned holes stay
+      // aligned instead of breaking into zig-zags.
+      for (int k = 0; k < 3; ++k)
+        for (const auto& [first, last] : aligned_runs(w, k)) {
+          const double shift = sigma * rng.normal();
+          for (std::size_t m = first; m < last; ++m) w[m][k] += shift;
+        }
+    } else {
+      for (Vec3& p : w) p += sigma * Vec3(rng.normal(), rng.normal(), rng.normal());
+    }
+    repair(c);  // the ports back on their faces, everything inside the block
+  }
+  x = encode(g);
+}
+
+opt::Genotype MoldProblem::recombine(const opt::Genotype& a, const opt::Genotype& b, opt::Rng& rng) const {
+  // Whole-circuit crossover: a's circuits, each swapped with probability 1/2 for b's circuit
+  // whose inlet is nearest.
+  mold::Genome ga = genome(a);
+  const mold::Genome gb = genome(b);
+  if (gb.circuits.empty()) return a;
+  for (auto& c : ga.circuits) {
+    if (rng.uniform() >= 0.5) continue;
+    const auto it = std::min_element(gb.circuits.begin(), gb.circuits.end(), [&](const auto& p, const auto& q) {
+      return (p.waypoints.front() - c.waypoints.front()).squaredNorm() < (q.waypoints.front() - c.waypoints.front()).squaredNorm();
+    });
+    c = *it;
+  }
+  return encode(ga);
+}
+
+opt::Score MoldProblem::evaluate(const opt::Genotype& g) const {
+  const eval::Evaluation e = pipeline_.evaluate(genome(g));
+  const eval::Fitness f = eval::fitness(e, ranking_, weights_);
+  // "kind element element distance/margin; ..." for the run store.
+  std::string detail;
+  for (const auto& v : e.violations) {
+    if (!detail.empty()) detail += "; ";
+    detail += v.kind;
+    for (const auto& el : v.elements) detail += ' ' + el;
+    char num[64];
+    std::snprintf(num, sizeof num, " %.6g/%.6g", v.distance, v.margin);
+    detail += num;
+  }
+  ++evaluated_;
+  if (e.feasible()) ++feasible_;
+  return {e.objectives, e.violation, e.feasible(), f.value, std::move(detail)};
+}
+
+opt::Score MoldProblem::ranking(const opt::Score& s) const {
+  if (ranking_.penalty.variant == mold::PenaltyVariant::ConstrainedDomination) return s;
+  const double term = eval::penalty_term(s.feasible, s.violation, ranking_.penalty);
+  opt::Score r = s;
+  for (std::size_t k = 0; k < r.objectives.size(); ++k)
+    r.objectives[k] += term * spec_.objectives.scale(spec_.objectives.use[k]);
+  r.feasible = true;
+  r.violation = 0;
+  return r;
+}
+
+bool MoldProblem::better(const opt::Score& a, const opt::Score& b) const {
+  return eval::better({a.feasible, a.violation, a.value}, {b.feasible, b.violation, b.value}, ranking_.penalty.variant);
+}
+
+}  // namespace mtcs::run

@@ -1,0 +1,104 @@
+#include "mtcs/run/polish.h"
+
+#include <nlopt.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "holes.h"
+
+namespace mtcs::run {
+namespace {
+
+using geometry::Vec3;
+
+// Groups of (circuit, waypoint) sharing one coordinate along one axis.
+struct Variable {
+  std::size_t circuit;
+  int axis;
+  std::vector<std::size_t> points;
+};
+
+std::vector<Variable> variables_of(const mold::Genome& g, const mold::Scene& scene) {
+  const geometry::Box& b = scene.block_bounds();
+  const bool aligned = scene.spec().drilling.axis_parallel;
+  std::vector<Variable> vars;
+  for (std::size_t c = 0; c < g.circuits.size(); ++c) {
+    const auto& w = g.circuits[c].waypoints;
+    auto on_face = [&](std::size_t p, int k) {
+      return (p == 0 || p + 1 == w.size()) && (std::abs(w[p][k] - b.min[k]) < 1e-9 || std::abs(w[p][k] - b.max[k]) < 1e-9);
+    };
+    for (int k = 0; k < 3; ++k) {
+      // Without axis-parallel drilling every waypoint moves on its own.
+      std::vector<std::pair<std::size_t, std::size_t>> runs;
+      if (aligned) runs = aligned_runs(w, k);
+      else
+        for (std::size_t i = 0; i < w.size(); ++i) runs.emplace_back(i, i + 1);
+      for (const auto& [first, last] : runs) {
+        Variable v{c, k, {}};
+        bool fixed = false;
+        for (std::size_t m = first; m < last; ++m) v.points.push_back(m), fixed = fixed || on_face(m, k);
+        if (!fixed) vars.push_back(std::move(v));
+      }
+    }
+  }
+  return vars;
+}
+
+}  // namespace
+
+Polished polish(const MoldProblem& problem, const mold::Scene& scene, const mold::Genome& start, int max_evaluations) {
+  const auto vars = variables_of(start, scene);
+  Polished best{start, problem.evaluate(problem.encode(start)), 1, false};
+  if (vars.empty() || max_evaluations < 2) return best;
+  std::vector<double> x, lo, hi;
+  for (const auto& v : vars) {
+    x.push_back(start.circuits[v.circuit].waypoints[v.points.front()][v.axis]);
+    lo.push_back(scene.block_bounds().min[v.axis]);
+    hi.push_back(scene.block_bounds().max[v.axis]);
+  }
+  auto apply = [&](const std::vector<double>& v) {
+    mold::Genome g = start;
+    for (std::size_t i = 0; i < vars.size(); ++i)
+      for (const std::size_t p : vars[i].points) g.circuits[vars[i].circuit].waypoints[p][vars[i].axis] = v[i];
+    return g;
+  };
+  // One evaluation serves the objective and the constraint at the same point.
+  struct Ctx {
+    std::function<opt::Score(const std::vector<double>&)> score;
+  } ctx;
+  std::vector<double> last_x;
+  opt::Score last;
+  ctx.score = [&](const std::vector<double>& v) {
+    if (v != last_x) {
+      last_x = v;
+      const mold::Genome g = apply(v);
+      last = problem.evaluate(problem.encode(g));
+      ++best.evaluations;
+      if (problem.better(last, best.score)) best.genome = g, best.score = last, best.improved = true;
+    }
+    return last;
+  };
+  nlopt::opt solver(nlopt::LN_COBYLA, unsigned(x.size()));
+  solver.set_lower_bounds(lo);
+  solver.set_upper_bounds(hi);
+  solver.set_min_objective(
+      [](const std::vector<double>& v, std::vector<double>&, void* d) { return static_cast<Ctx*>(d)->score(v).value; },
+      &ctx);
+  solver.add_inequality_constraint(
+      [](const std::vector<double>& v, std::vector<double>&, void* d) { return static_cast<Ctx*>(d)->score(v).violation; },
+      &ctx, 0.0);
+  const double smallest = *std::min_element(scene.spec().drilling.diameters.begin(), scene.spec().drilling.diameters.end());
+  solver.set_initial_step(smallest / 2);
+  solver.set_xtol_abs(1e-3);
+  solver.set_maxeval(max_evaluations);
+  double f = 0;
+  try {
+    solver.optimize(x, f);
+  } catch (const std::exception&) {
+    // Round-off or budget: the best point seen is kept either way.
+  }
+  return best;
+}
+
+}  // namespace mtcs::run

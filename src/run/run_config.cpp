@@ -1,0 +1,117 @@
+#include "mtcs/run/run_config.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "mtcs/io/yaml_reader.h"
+
+namespace mtcs::run {
+
+RunConfig parse_run_config(const std::string& text, const std::string& origin,
+                           const std::vector<std::string>& objective_names) {
+  const io::YamlReader r(origin);
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw io::InputError(origin, e.mark.line + 1, e.mark.column + 1, "", "YAML syntax: " + e.msg);
+  }
+  RunConfig c;
+  if (root.IsNull()) return c;
+  r.expect_map(root, "", {"algorithm", "es", "evaluations", "seed", "weights", "mutation", "log_every", "ref", "penalty"});
+  if (root["algorithm"]) {
+    c.algorithm = r.text(root["algorithm"], "algorithm");
+    if (c.algorithm != "es" && c.algorithm != "sms-emoa") r.fail(root["algorithm"], "algorithm", "expected es or sms-emoa");
+  }
+  if (root["ref"]) {
+    r.expect_sequence(root["ref"], "ref");
+    for (std::size_t i = 0; i < root["ref"].size(); ++i)
+      c.ref.push_back(r.number(root["ref"][i], io::indexed("ref", i), 1e-12, 1e12));
+    if (c.ref.size() != objective_names.size())
+      r.fail(root["ref"], "ref", "needs one value per objective (" + std::to_string(objective_names.size()) + ")");
+  }
+  if (root["es"]) {
+    const YAML::Node& es = root["es"];
+    r.expect_map(es, "es", {"mu", "lambda", "rho", "plus", "recombination"});
+    if (es["mu"]) c.es.mu = r.integer(es["mu"], "es.mu", 1, 100000);
+    if (es["lambda"]) c.es.lambda = r.integer(es["lambda"], "es.lambda", 1, 1000000);
+    if (es["rho"]) c.es.rho = r.integer(es["rho"], "es.rho", 1, 2);
+    if (es["plus"]) c.es.plus = r.boolean(es["plus"], "es.plus");
+    if (es["recombination"]) c.es.recombination = r.boolean(es["recombination"], "es.recombination");
+    if (!c.es.plus && c.es.lambda < c.es.mu) r.fail(es, "es.lambda", "a comma strategy needs lambda >= mu");
+  }
+  if (root["evaluations"]) c.es.evaluations = r.integer(root["evaluations"], "evaluations", 1, 2000000000);
+  if (root["seed"]) c.es.seed = std::uint64_t(r.number(root["seed"], "seed", 0, 9.007199254740992e15));
+  if (root["penalty"]) {
+    c.penalty = mold::penalty_variant(r.text(root["penalty"], "penalty"));
+    if (!c.penalty) r.fail(root["penalty"], "penalty", "expected one of " + mold::kPenaltyVariantNames);
+  }
+  if (root["log_every"]) c.log_every = r.integer(root["log_every"], "log_every", 1, 1000000);
+  if (root["weights"]) {
+    const YAML::Node& w = root["weights"];
+    if (!w.IsMap()) r.fail(w, "weights", "expected a mapping objective: weight");
+    c.weights.assign(objective_names.size(), 1.0);
+    for (auto it = w.begin(); it != w.end(); ++it) {
+      const std::string key = it->first.Scalar();
+      const auto pos = std::find(objective_names.begin(), objective_names.end(), key);
+      if (pos == objective_names.end()) r.fail(it->first, "weights." + key, "not an objective of this mold");
+      c.weights[std::size_t(pos - objective_names.begin())] = r.number(it->second, "weights." + key, 0, 1e12);
+    }
+  }
+  if (root["mutation"]) {
+    const YAML::Node& m = root["mutation"];
+    r.expect_map(m, "mutation", {"insert", "remove", "snap", "diameter", "circuit"});
+    if (m["insert"]) c.mutation.insert = r.number(m["insert"], "mutation.insert", 0, 1);
+    if (m["remove"]) c.mutation.remove = r.number(m["remove"], "mutation.remove", 0, 1);
+    if (m["snap"]) c.mutation.snap = r.number(m["snap"], "mutation.snap", 0, 1);
+    if (m["diameter"]) c.mutation.diameter = r.number(m["diameter"], "mutation.diameter", 0, 1);
+    if (m["circuit"]) c.mutation.circuit = r.number(m["circuit"], "mutation.circuit", 0, 1);
+  }
+  return c;
+}
+
+RunConfig load_run_config(const std::string& path, const std::vector<std::string>& objective_names) {
+  std::ifstream in(path);
+  if (!in) throw io::InputError(path, 0, 0, "", "cannot open file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parse_run_config(ss.str(), path, objective_names);
+}
+
+std::string RunConfig::to_yaml(const std::vector<std::string>& objective_names) const {
+  YAML::Emitter out;
+  out.SetDoublePrecision(17);
+  out << YAML::BeginMap;
+  out << YAML::Key << "algorithm" << YAML::Value << algorithm;
+  if (!ref.empty()) {
+    out << YAML::Key << "ref" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+    for (const double v : ref) out << v;
+    out << YAML::EndSeq;
+  }
+  out << YAML::Key << "es" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "mu" << YAML::Value << es.mu
+      << YAML::Key << "lambda" << YAML::Value << es.lambda << YAML::Key << "rho" << YAML::Value << es.rho << YAML::Key
+      << "plus" << YAML::Value << es.plus << YAML::Key << "recombination" << YAML::Value << es.recombination
+      << YAML::EndMap;
+  out << YAML::Key << "evaluations" << YAML::Value << es.evaluations;
+  out << YAML::Key << "seed" << YAML::Value << es.seed;
+  out << YAML::Key << "log_every" << YAML::Value << log_every;
+  if (penalty) out << YAML::Key << "penalty" << YAML::Value << mold::to_string(*penalty);
+  if (!weights.empty()) {
+    out << YAML::Key << "weights" << YAML::Value << YAML::Flow << YAML::BeginMap;
+    for (std::size_t k = 0; k < weights.size() && k < objective_names.size(); ++k)
+      out << YAML::Key << objective_names[k] << YAML::Value << weights[k];
+    out << YAML::EndMap;
+  }
+  out << YAML::Key << "mutation" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "insert" << YAML::Value
+      << mutation.insert << YAML::Key << "remove" << YAML::Value << mutation.remove << YAML::Key << "snap"
+      << YAML::Value << mutation.snap << YAML::Key << "diameter" << YAML::Value << mutation.diameter << YAML::Key
+      << "circuit" << YAML::Value << mutation.circuit << YAML::EndMap;
+  out << YAML::EndMap;
+  std::string s = out.c_str();
+  return s + "\n";
+}
+
+}  // namespace mtcs::run

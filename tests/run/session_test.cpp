@@ -1,0 +1,106 @@
+// The run module's Session: one Scene per command run (compare-penalties included, however many
+// variants it compares), and the penalty variant as part of the run config, ranking exactly as a
+// mold spec with that variant ranks.
+
+#include <catch2/catch.hpp>
+
+#include <CLI/CLI.hpp>
+#include <tbb/global_control.h>
+#include <filesystem>
+
+#include "mtcs/cli/commands.h"
+#include "mtcs/io/input_error.h"
+#include "mtcs/opt/rng.h"
+#include "mtcs/run/session.h"
+
+using namespace mtcs;
+
+namespace {
+
+const std::string kMold = MTCS_SOURCE_DIR "/molds/plate.yaml";
+
+// mtcs ARGS in this process, through the cli library (the command's own code path).
+int run_in_process(std::vector<std::string> args) {
+  CLI::App app{"mtcs"};
+  const cli::Command command = cli::add_compare_penalties_command(app);
+  std::vector<char*> argv{const_cast<char*>("mtcs")};
+  for (auto& a : args) argv.push_back(a.data());
+  app.parse(int(argv.size()), argv.data());
+  return command.run();
+}
+
+}  // namespace
+
+TEST_CASE("compare-penalties builds the Scene once for all its variants", "[run][session]") {
+  const auto out = std::filesystem::temp_directory_path() / ("mtcs_session_" + std::to_string(::getpid()));
+  const long before = run::Session::scenes_built();
+  REQUIRE(run_in_process({"compare-penalties", kMold, "--variants", "constrained_domination,static_linear,death",
+                          "--seeds", "2", "--evaluations", "150", "--algorithm", "es", "--quiet", "--out",
+                          out.string()}) == 0);
+  CHECK(run::Session::scenes_built() - before == 1);
+  CHECK(std::filesystem::exists(out / "runs.csv"));
+  std::filesystem::remove_all(out);
+}
+
+TEST_CASE("the run config's penalty variant ranks as the spec's would", "[run][session][penalty]") {
+  // Reference: the mold spec edited to the variant, its problem built on its own Scene.
+  mold::MoldSpec edited = mold::load_mold_spec(kMold);
+  const mold::PenaltyVariant spec_default = edited.penalty.variant;
+  for (const auto variant : {mold::PenaltyVariant::StaticLinear, mold::PenaltyVariant::StaticQuadratic,
+                             mold::PenaltyVariant::Death}) {
+    REQUIRE(variant != spec_default);
+    edited.penalty.variant = variant;
+    const run::Session by_spec(edited, run::RunOverrides{});
+    const run::Session by_config(mold::load_mold_spec(kMold), "penalty: " + mold::to_string(variant) + "\n", "test");
+    REQUIRE(by_config.config().penalty == variant);
+    CHECK(by_config.problem().penalty_variant() == variant);
+    opt::Rng rng(7);
+    for (int i = 0; i < 20; ++i) {
+      const opt::Genotype g = by_spec.problem().sample(rng);
+      const opt::Score a = by_spec.problem().evaluate(g), b = by_config.problem().evaluate(g);
+      CHECK(a.value == b.value);  // NaN never: death's +inf compares equal
+      const opt::Score ra = by_spec.problem().ranking(a), rb = by_config.problem().ranking(b);
+      CHECK(ra.objectives == rb.objectives);
+      CHECK(ra.feasible == rb.feasible);
+    }
+  }
+}
+
+TEST_CASE("run config: penalty is read, written back, and checked", "[run][session][penalty]") {
+  const std::vector<std::string> names{"a", "b"};
+  const run::RunConfig c = run::parse_run_config("penalty: static_quadratic\n", "cfg.yaml", names);
+  REQUIRE(c.penalty == mold::PenaltyVariant::StaticQuadratic);
+  CHECK(run::parse_run_config(c.to_yaml(names), "again", names).penalty == c.penalty);
+  CHECK_FALSE(run::parse_run_config("seed: 3\n", "cfg.yaml", names).penalty.has_value());
+  try {
+    run::parse_run_config("seed: 3\npenalty: gentle\n", "cfg.yaml", names);
+    FAIL("no error");
+  } catch (const io::InputError& e) {
+    const std::string what = e.what();
+    CHECK(what.find("cfg.yaml:2:") != std::string::npos);
+    CHECK(what.find("penalty") != std::string::npos);
+  }
+}
+
+TEST_CASE("SMS-EMOA on the mold: same seed, same populations, with 1 thread or 2", "[run][sms-emoa][determinism]") {
+  run::RunOverrides o;
+  o.algorithm = "sms-emoa";
+  o.seed = 4;
+  o.evaluations = 160;
+  const run::Session session(kMold, o);
+  const run::MoldOptimizer optimizer(session.problem(), session.scene(), session.config());
+  REQUIRE(optimizer.pareto());
+  auto record = [&](int threads) {
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    std::vector<std::vector<double>> log;
+    optimizer.run(nullptr, [&](const opt::Generation& g) {
+      for (const auto& ind : g.population) {
+        log.push_back(ind.x);
+        log.push_back(ind.score.objectives);
+        log.push_back({ind.score.violation});
+      }
+    });
+    return log;
+  };
+  CHECK(record(1) == record(2));
+}
