@@ -13,6 +13,7 @@
 #include "bench_interfere.h"
 #include "bench_optimize.h"
 #include "bench_sms.h"
+#include "bench_thermal.h"
 #include "mtcs/io/input_error.h"
 
 namespace mtcs::bench {
@@ -159,6 +160,26 @@ int run(int argc, char** argv) {
   interfere->add_option("--meshes", io_opt->meshes, "folder of the meshes (NAME.off)")->required()->check(CLI::ExistingDirectory);
   interfere->add_option("--repeat", io_opt->repeat, "timed repetitions (median)")->capture_default_str();
 
+  auto to = std::make_shared<ThermalBenchOptions>();
+  CLI::App* thermal = app.add_subcommand(
+      "thermal",
+      "Error against run time of the thermal tiers (t0 wall distance, t1, t2, t2d line sinks with M\n"
+      "elements per bore, fd finite volumes at a cell size) on random layouts, against the finite\n"
+      "volumes at --reference-cell: ms per evaluation (full; incremental = one bore moved, warm\n"
+      "cache), RMS and max error at the samples (K), Kendall tau of the samples' std and mean,\n"
+      "tau among the better half, top-10 overlap. CSV on stdout, or --json:\n"
+      "  {default_tier, tiers: [{tier, ms_full, ms_incremental, rms_k, tau_std, ...}]}\n"
+      "--case block: the reference block of shared/cases/thermal with 2-5 through-bores along x;\n"
+      "--case MOLD.yaml: a mold's cavity with random layouts (3 circuits of 4 legs).\n"
+      "Example: mtcs bench thermal --case block --layouts 60 --reference-cell 1");
+  thermal->add_option("--case", to->scene, "block or a mold spec")->capture_default_str();
+  thermal->add_option("--layouts", to->layouts, "random layouts")->capture_default_str()->check(CLI::Range(3, 100000));
+  thermal->add_option("--reference-cell", to->reference_cell, "mm, the finite-volume reference's cell")
+      ->capture_default_str()->check(CLI::Range(0.25, 50.0));
+  thermal->add_option("--seed", to->seed, "seed of the layouts")->capture_default_str();
+  thermal->add_option("--repeat", to->repeat, "timed solves per layout (median)")->capture_default_str()->check(CLI::Range(1, 1000));
+  thermal->add_flag("--json", to->json, "one JSON object instead of CSV");
+
   for (CLI::App* s : {dist, sweep, stiff}) {
     s->add_option("--pairs", opt->pairs, "CSV of cylinder pairs with dist_lo, dist_hi")->required()->check(CLI::ExistingFile);
     s->add_option("--repeat", opt->repeat, "queries per timed batch")->capture_default_str()->check(CLI::Range(1, 1000000));
@@ -173,6 +194,7 @@ int run(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
+  if (thermal->parsed()) return bench_thermal(*to);
   if (clearance->parsed()) return bench_clearance(co->meshes, co->cases, co->repeat, co->builds, co->bound_fraction);
   if (interfere->parsed()) return bench_interfere(io_opt->cases, io_opt->meshes, io_opt->repeat);
   if (hv->parsed()) return bench_hypervolume(ho->fronts, ho->repeat, ho->max_contribution_n);
