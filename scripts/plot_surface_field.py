@@ -11,6 +11,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.tri  # noqa: E402
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
 
@@ -41,12 +42,28 @@ def main(path, out, title=""):
     lo, hi = min(values), max(values)
     cmap = plt.get_cmap("viridis")
     norm = matplotlib.colors.Normalize(lo, hi if hi > lo else lo + 1)
+    xs, ys, zs = zip(*verts)
+    extents = [max(c) - min(c) for c in (xs, ys, zs)]
+    flat = [k for k in range(3) if extents[k] <= 1e-9 * max(extents)]
+    if flat:  # a patch on a face: a plan view says more than a perspective
+        a, b = [k for k in range(3) if k != flat[0]]
+        coords = (xs, ys, zs)
+        fig, ax = plt.subplots(figsize=(8, 6))
+        tri = matplotlib.tri.Triangulation(coords[a], coords[b], faces)
+        shaded = ax.tripcolor(tri, values, cmap=cmap, norm=norm, shading="gouraud")
+        ax.set_aspect("equal")
+        ax.set_xlabel("xyz"[a] + " (mm)")
+        ax.set_ylabel("xyz"[b] + " (mm)")
+        fig.colorbar(shaded, ax=ax, shrink=0.8).set_label(label)
+        ax.set_title(title or f"{label}: {lo:.2f} to {hi:.2f}")
+        fig.tight_layout()
+        fig.savefig(out, dpi=110)
+        return
     polys = [[verts[i] for i in f] for f in faces]
     colours = [cmap(norm(sum(values[i] for i in f) / 3)) for f in faces]
     fig = plt.figure(figsize=(8, 6))
     ax = fig.add_subplot(projection="3d")
     ax.add_collection3d(Poly3DCollection(polys, facecolors=colours, edgecolors="none"))
-    xs, ys, zs = zip(*verts)
     span = max(max(xs) - min(xs), max(ys) - min(ys), max(zs) - min(zs)) / 2 or 1
     for axis, c in (("x", xs), ("y", ys), ("z", zs)):
         mid = (max(c) + min(c)) / 2

@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   const std::vector<mtcs::cli::Command> commands{
       mtcs::cli::add_optimize_command(app),
       mtcs::cli::add_evaluate_command(app),
+      mtcs::cli::add_thermal_command(app),
       mtcs::cli::add_replay_command(app),
       mtcs::cli::add_compare_penalties_command(app),
       mtcs::cli::add_distance_command(app),

@@ -1,0 +1,125 @@
+// mtcs thermal: the cavity-surface temperature of one layout, by any tier: the summary, the heat
+// balance, a field for ParaView / MeshLab or a picture, or temperatures at the user's points.
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "mtcs/cli/commands.h"
+#include "mtcs/eval/cavity_temperature.h"
+#include "mtcs/io/atomic_file.h"
+#include "mtcs/io/points_csv.h"
+#include "mtcs/mold/decoder.h"
+#include "mtcs/mold/layout_io.h"
+#include "mtcs/run/session.h"
+#include "python_plot.h"
+
+namespace mtcs::cli {
+namespace {
+
+struct Options {
+  std::string mold, layout, tier, samples, out;
+  double cell = 0;
+  int elements = 0;
+  bool json = false;
+};
+
+std::string extension(const std::string& path) { return std::filesystem::path(path).extension().string(); }
+
+void print_text(const eval::CavityTemperature& r, std::size_t samples) {
+  const auto& s = r.summary;
+  std::cout << std::fixed << std::setprecision(3) << "cavity temperature (tier " << r.tier << ", " << samples
+            << " samples, area-weighted)\n"
+            << "  mean " << s.mean << " degC, std " << s.std << " K, max " << s.max << " degC at (" << std::setprecision(1)
+            << r.hottest.x() << ", " << r.hottest.y() << ", " << r.hottest.z() << ") mm\n"
+            << std::setprecision(3) << "heat balance\n  in " << r.balance.in << " W = bores " << r.balance.to_channels
+            << " W + outer faces " << r.balance.to_faces << " W (residual " << std::scientific << std::setprecision(1)
+            << r.balance.residual() << " W)\n"
+            << std::fixed << std::setprecision(3) << "seconds " << r.seconds << "\n";
+}
+
+}  // namespace
+
+Command add_thermal_command(CLI::App& app) {
+  auto opt = std::make_shared<Options>();
+  CLI::App* sub = app.add_subcommand(
+      "thermal",
+      "The cycle-averaged temperature of the cavity surface for one layout: mean, std and max\n"
+      "(degC / K, area-weighted over the cavity samples), the hottest place, the heat balance (W).\n"
+      "Tiers: t1, t2, t2d (line sinks; M elements per bore), fd (finite volumes at a cell size, the\n"
+      "reference; seconds per solve). Default: the spec's thermal.tier (docs/mold-spec.md).\n"
+      "  --out field.vtp | field.ply | field.png   the temperature on the cavity surface (ParaView,\n"
+      "                                            MeshLab, a picture)\n"
+      "  --samples POINTS.csv --out T.csv          x,y,z,T at the points of a CSV with columns x,y,z\n"
+      "Example: mtcs thermal molds/thermal_block.yaml --layout molds/thermal_block.layout.yaml --tier fd --cell 1");
+  sub->add_option("mold", opt->mold, "mold spec (YAML)")->required();
+  sub->add_option("--layout", opt->layout, "layout (YAML: circuits of waypoints)")->required();
+  sub->add_option("--tier", opt->tier, "t1, t2, t2d or fd (default: the spec's)")->check(CLI::IsMember({"t1", "t2", "t2d", "fd"}));
+  sub->add_option("--cell", opt->cell, "mm, the finite volumes' cell (default: the spec's cell_size)")->check(CLI::Range(0.1, 100.0));
+  sub->add_option("--elements", opt->elements, "line-sink elements per bore (default: the spec's)")->check(CLI::Range(1, 64));
+  sub->add_option("--samples", opt->samples, "CSV of points (columns x,y,z, mm): their temperatures go to --out");
+  sub->add_option("--out", opt->out, "field.vtp, field.ply, field.png, or with --samples a CSV");
+  sub->add_flag("--json", opt->json, "one JSON object on stdout: {tier, mean, std, max, hottest, heat_in, heat_to_bores, heat_to_faces, seconds}");
+  return {sub, [opt] {
+            const std::string ext = extension(opt->out);
+            if (!opt->out.empty() && opt->samples.empty() && ext != ".vtp" && ext != ".ply" && ext != ".png") {
+              std::cerr << "mtcs thermal: --out " << opt->out << ": a field is written as .vtp, .ply or .png (or give --samples for a CSV)\n";
+              return 2;
+            }
+            if (!opt->samples.empty() && opt->out.empty()) {
+              std::cerr << "mtcs thermal: --samples needs --out T.csv for the temperatures\n";
+              return 2;
+            }
+            const run::Session session(opt->mold);
+            const mold::Layout layout = mold::decode(session.scene(), mold::load_layout(opt->layout, session.spec()));
+            eval::ThermalQuery query = eval::thermal_query(session.spec());
+            if (!opt->tier.empty())
+              query.tier = opt->tier == "t1" ? mold::ThermalTier::T1 : opt->tier == "t2" ? mold::ThermalTier::T2
+                         : opt->tier == "fd" ? mold::ThermalTier::Fd : mold::ThermalTier::T2d;
+            if (opt->cell > 0) query.cell = opt->cell;
+            if (opt->elements > 0) query.elements = opt->elements;
+            const std::vector<geometry::Vec3> points = opt->samples.empty() ? std::vector<geometry::Vec3>{} : io::read_points_csv(opt->samples);
+            const double edge = opt->samples.empty() && !opt->out.empty() ? session.spec().cavity->sample_spacing / 2 : 0;
+            const eval::CavityTemperature r = eval::cavity_temperature(session.scene(), layout, query, points, edge);
+
+            if (!opt->samples.empty()) {
+              io::AtomicFile file(opt->out);
+              file.stream() << "x,y,z,T\n" << std::setprecision(17);
+              for (std::size_t i = 0; i < points.size(); ++i)
+                file.stream() << points[i].x() << ',' << points[i].y() << ',' << points[i].z() << ',' << r.at_points[i] << '\n';
+              file.commit();
+            } else if (!opt->out.empty()) {
+              const bool png = ext == ".png";
+              const std::string field_path = png ? opt->out + ".ply" : opt->out;
+              io::AtomicFile file(field_path);
+              if (ext == ".vtp") mesh::write_vtp(file.stream(), r.field);
+              else mesh::write_ply(file.stream(), r.field, r.summary.mean - 3 * r.summary.std - 1e-9, r.summary.max);
+              file.commit();
+              if (png) {
+                const std::string title = "cavity temperature, tier " + r.tier;
+                if (render_plot("plot_surface_field.py", {field_path, opt->out, title}, std::cerr)) std::filesystem::remove(field_path);
+              }
+            }
+            if (opt->json) {
+              nlohmann::ordered_json j{{"tier", r.tier},
+                                       {"mean", r.summary.mean},
+                                       {"std", r.summary.std},
+                                       {"max", r.summary.max},
+                                       {"hottest", {r.hottest.x(), r.hottest.y(), r.hottest.z()}},
+                                       {"samples", r.at_samples.size()},
+                                       {"heat_in", r.balance.in},
+                                       {"heat_to_bores", r.balance.to_channels},
+                                       {"heat_to_faces", r.balance.to_faces},
+                                       {"seconds", r.seconds}};
+              std::cout << j.dump(2) << "\n";
+            } else {
+              print_text(r, r.at_samples.size());
+            }
+            return 0;
+          }};
+}
+
+}  // namespace mtcs::cli
