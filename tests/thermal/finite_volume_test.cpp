@@ -355,6 +355,25 @@ TEST_CASE("finite volume: stiff and extreme inputs stay finite and meet their li
       CHECK(std::isnan(base.field.temperature_at(p)));
     CHECK(std::isfinite(base.field.temperature_at(Vec3(60, 40, 61))));  // within a cell: extrapolated
   }
+  SECTION("cell centres on a bore wall and a hair off it") {
+    // At 2 mm four cell centres lie exactly on B1's wall; moved off by 1e-12 ... 1e-6 mm they
+    // become steel with a conductance to the wall up to 1e9 times the others'. The field must
+    // not notice (it did, by 10 K, while those rows dominated the CG tolerance).
+    const FvResult& on = block_solution(2.0);
+    for (double shift : {1e-12, 1e-9, -1e-9, 1e-6}) {
+      Model m = block_case();
+      m.channels[0].axis.p0.z() += shift;
+      m.channels[0].axis.p1.z() += shift;
+      const FvResult off = solve_finite_volume(m, ref.samples, {2.0});
+      REQUIRE(all_finite(off));
+      CHECK(balance_error(off) < 1e-6);
+      double worst = 0;
+      for (std::size_t i = 0; i < off.temperature.size(); ++i)
+        worst = std::max(worst, std::abs(off.temperature[i] - on.temperature[i]));
+      INFO("shift " << shift << ": max difference " << worst);
+      CHECK(worst < 0.02);
+    }
+  }
   SECTION("film -> infinity is the Dirichlet limit") {
     Model m = block_case();
     for (auto& ch : m.channels) ch.film = 1e9;
