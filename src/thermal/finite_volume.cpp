@@ -33,14 +33,14 @@ struct Sink {
 
 template <class Preconditioner>
 Eigen::VectorXd conjugate_gradient(const Eigen::SparseMatrix<double>& matrix, const Eigen::VectorXd& rhs,
-                                   const Eigen::VectorXd& guess, const FvOptions& options, FvResult& result) {
+                                   const FvOptions& options, FvResult& result) {
   const auto start = std::chrono::steady_clock::now();
   Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper, Preconditioner> solver;
   solver.setTolerance(options.tolerance);
   solver.setMaxIterations(options.max_iterations);
   solver.compute(matrix);
   if (solver.info() != Eigen::Success) throw std::runtime_error("finite volume: the preconditioner failed");
-  Eigen::VectorXd x = solver.solveWithGuess(rhs, guess);
+  Eigen::VectorXd x = solver.solve(rhs);
   result.iterations = int(solver.iterations());
   result.residual = solver.error();
   result.converged = solver.info() == Eigen::Success;
@@ -72,7 +72,7 @@ void record_wall_flux(const fv::Grid& grid, const std::vector<double>& source, F
 struct System {
   std::vector<int> row;  // per cell, -1 when not steel
   Eigen::SparseMatrix<double> matrix;
-  Eigen::VectorXd rhs;
+  Eigen::VectorXd heat;  // W per row from heat_in; the sinks' g T terms stay in `sinks`
   std::vector<Sink> sinks;
 };
 
@@ -83,7 +83,7 @@ System assemble(const Model& model, const fv::Grid& grid, const FvField& field,
   const std::size_t n_cells = source.size();
   System system;
   std::vector<int>& row = system.row;
-  Eigen::VectorXd& rhs = system.rhs;
+  Eigen::VectorXd& heat = system.heat;
   std::vector<Sink>& sinks = system.sinks;
   row.assign(n_cells, -1);
   // Number the steel cells.
@@ -96,7 +96,7 @@ System assemble(const Model& model, const fv::Grid& grid, const FvField& field,
 
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(std::size_t(n) * 7);
-  rhs = Eigen::VectorXd::Zero(n);
+  heat = Eigen::VectorXd::Zero(n);
   for (int kk = 0; kk < field.cells[2]; ++kk)
     for (int j = 0; j < field.cells[1]; ++j)
       for (int i = 0; i < field.cells[0]; ++i) {
@@ -105,7 +105,7 @@ System assemble(const Model& model, const fv::Grid& grid, const FvField& field,
         if (r < 0) continue;
         const std::array<int, 3> ijk{i, j, kk};
         double diagonal = 0;
-        rhs[r] += source[cell];
+        heat[r] += source[cell];
         for (int dir = 0; dir < 6; ++dir) {
           const int a = dir / 2, step = dir % 2 ? 1 : -1;
           const double area = field.spacing[(a + 1) % 3] * field.spacing[(a + 2) % 3];
@@ -122,8 +122,8 @@ System assemble(const Model& model, const fv::Grid& grid, const FvField& field,
           }
           if (boundary) {  // the heat entering there, even where a bore cuts the link
             const auto [ab, ac] = face_plane_axes(dir);
-            rhs[r] += field.face_heat[std::size_t(dir)][std::size_t(ijk[ab]) +
-                                                        std::size_t(field.cells[ab]) * std::size_t(ijk[ac])];
+            heat[r] += field.face_heat[std::size_t(dir)][std::size_t(ijk[ab]) +
+                                                         std::size_t(field.cells[ab]) * std::size_t(ijk[ac])];
           }
           if (cut) {
             const Channel& ch = model.channels[std::size_t(cut->channel)];
@@ -135,7 +135,6 @@ System assemble(const Model& model, const fv::Grid& grid, const FvField& field,
                                                     : -1;
             const double g = film < 0 ? 0.0 : area / (distance / k + film);
             diagonal += g;
-            rhs[r] += g * ch.coolant;
             sinks.push_back({r, g, ch.coolant, cut->channel});
           } else if (boundary) {
             const auto [ab, ac] = face_plane_axes(dir);
@@ -144,7 +143,6 @@ System assemble(const Model& model, const fv::Grid& grid, const FvField& field,
             const double open = std::max(0.0, area - field.face_covered[std::size_t(dir)][f]);
             const double g = fc.film > 0 ? open / (0.5 * h / k + 1 / fc.film) : 0.0;
             diagonal += g;
-            rhs[r] += g * fc.ambient;
             if (g > 0) sinks.push_back({r, g, fc.ambient, -1});
           } else if (grid.kind(nb[0], nb[1], nb[2]) == kSteel) {
             const double g = k * area / h;
@@ -187,19 +185,48 @@ FvResult solve_finite_volume(const Model& model, const Samples& samples, const F
   record_wall_flux(grid, source, field);
   System system = assemble(model, grid, field, source);
   const std::vector<int>& row = system.row;
-  const int n = int(system.rhs.size());
+  const int n = int(system.heat.size());
 
-  // Start from the conductance-weighted mean of the fixed temperatures: the field is near them.
-  double guess = 0, weight = 0;
-  for (const Sink& s : system.sinks) guess += s.conductance * s.temperature, weight += s.conductance;
-  const Eigen::VectorXd x0 = Eigen::VectorXd::Constant(n, weight > 0 ? guess / weight : 0.0);
-  Eigen::VectorXd x;
+  // A cell whose centre is a hair from a bore wall has a conductance to it many orders above
+  // the others. Measured against the raw right-hand side, which such rows dominate, the CG
+  // tolerance would mean nothing for the rest; and the heat through such a link is a tiny
+  // temperature difference times a huge conductance, lost if T is rounded near 40 degrees.
+  // So each cell with sinks starts at its dominant sink's temperature `base` plus `offset`
+  // (the conductance-weighted pull of the others); we solve for the correction to that guess,
+  // whose right-hand side is of the scale of the ordinary rows, and keep T - base unrounded.
+  Eigen::VectorXd base = Eigen::VectorXd::Zero(n), offset = Eigen::VectorXd::Zero(n);
+  {
+    Eigen::VectorXd strongest = Eigen::VectorXd::Zero(n), total = Eigen::VectorXd::Zero(n);
+    double sum = 0, weight = 0;
+    for (const Sink& s : system.sinks) {
+      if (s.conductance > strongest[s.row]) strongest[s.row] = s.conductance, base[s.row] = s.temperature;
+      sum += s.conductance * s.temperature, weight += s.conductance;
+    }
+    const double mean = weight > 0 ? sum / weight : 0.0;
+    for (int r = 0; r < n; ++r)
+      if (strongest[r] == 0) base[r] = mean;
+    for (const Sink& s : system.sinks) {
+      offset[s.row] += s.conductance * (s.temperature - base[s.row]);
+      total[s.row] += s.conductance;
+    }
+    for (int r = 0; r < n; ++r)
+      if (total[r] > 0) offset[r] /= total[r];
+  }
+  // The guess's residual, each term a difference of nearby temperatures (no g T - g T).
+  Eigen::VectorXd residual = system.heat;
+  for (const Sink& s : system.sinks)
+    residual[s.row] += s.conductance * ((s.temperature - base[s.row]) - offset[s.row]);
+  for (int col = 0; col < n; ++col)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(system.matrix, col); it; ++it)
+      if (it.row() != col)
+        residual[it.row()] += it.value() * ((base[it.row()] - base[col]) + (offset[it.row()] - offset[col]));
   if (options.preconditioner == FvPreconditioner::IncompleteCholesky)
-    x = conjugate_gradient<Eigen::IncompleteCholesky<double, Eigen::Lower, Eigen::NaturalOrdering<int>>>(
-        system.matrix, system.rhs, x0, options, result);
+    offset +=
+        conjugate_gradient<Eigen::IncompleteCholesky<double, Eigen::Lower, Eigen::NaturalOrdering<int>>>(
+            system.matrix, residual, options, result);
   else
-    x = conjugate_gradient<Eigen::DiagonalPreconditioner<double>>(system.matrix, system.rhs, x0, options,
-                                                                  result);
+    offset +=
+        conjugate_gradient<Eigen::DiagonalPreconditioner<double>>(system.matrix, residual, options, result);
   result.steel_cells = std::size_t(n);
 
   field.kind.resize(n_cells);
@@ -211,7 +238,7 @@ FvResult solve_finite_volume(const Model& model, const Samples& samples, const F
         const int kind = grid.kind(i, j, kk);
         field.kind[cell] = kind;
         if (kind == kSteel)
-          field.temperature[cell] = x[row[cell]];
+          field.temperature[cell] = base[row[cell]] + offset[row[cell]];
         else if (kind >= 0)
           field.temperature[cell] = model.channels[std::size_t(kind)].coolant;
       }
@@ -219,7 +246,7 @@ FvResult solve_finite_volume(const Model& model, const Samples& samples, const F
   result.heat_in = heat.total();
   result.heat_to_channel.assign(model.channels.size(), 0.0);
   for (const Sink& s : system.sinks) {
-    const double q = s.conductance * (x[s.row] - s.temperature);
+    const double q = s.conductance * ((base[s.row] - s.temperature) + offset[s.row]);
     if (s.channel >= 0)
       result.heat_to_channel[std::size_t(s.channel)] += q;
     else

@@ -65,16 +65,19 @@ std::optional<Entry> enter_cylinder(const Vec3& p, const Vec3& e, double length,
   if (both.empty() || both.hi < 0 || both.lo > length) return std::nullopt;
   // A line that only touches the wall (a tangent) does not enter.
   if (both.hi - both.lo <= 1e-9 * length) return std::nullopt;
-  const double t = std::max(both.lo, 0.0);
-  double cosine;
-  if (lateral.lo >= axial.lo) {  // through the side wall: the normal is radial
+  // |n . e| where the line crosses the wall at t: radial on the side wall, axial on an end disk.
+  const auto cosine = [&](double t, bool side) {
+    if (!side) return std::abs(eu);
     const Vec3 radial = w_perp + t * e_perp;
     const double r = radial.norm();
-    cosine = r > 0 ? std::abs(radial.dot(e)) / r : 1.0;
-  } else {  // through an end disk
-    cosine = std::abs(eu);
-  }
-  return Entry{t, cosine};
+    return r > 0 ? std::abs(radial.dot(e)) / r : 1.0;
+  };
+  Entry entry;
+  entry.t = std::max(both.lo, 0.0);
+  entry.cosine = cosine(entry.t, lateral.lo >= axial.lo);
+  entry.exit = both.hi;
+  entry.exit_cosine = cosine(both.hi, lateral.hi <= axial.hi);
+  return entry;
 }
 
 double triangle_rectangle_overlap(const double a[2], const double b[2], const double c[2], double x0,

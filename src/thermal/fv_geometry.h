@@ -14,10 +14,14 @@ using geometry::Vec3;
 bool inside_cylinder(const Vec3& p, const geometry::Cylinder& cylinder);
 
 // Where the ray p + t e (e a unit vector, p outside) first enters the solid cylinder, for
-// 0 <= t <= length, and |n . e| there (n the wall's normal): the cosine the film needs.
+// 0 <= t <= length, and |n . e| there (n the wall's normal): the cosine the film needs. Also
+// where it leaves (possibly beyond length) and the cosine there: the entry seen from the
+// other end of the link. A tangent (a chord shorter than 1e-9 length) does not enter.
 struct Entry {
   double t;
   double cosine;
+  double exit;
+  double exit_cosine;
 };
 std::optional<Entry> enter_cylinder(const Vec3& p, const Vec3& e, double length,
                                     const geometry::Cylinder& cylinder);

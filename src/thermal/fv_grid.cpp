@@ -98,6 +98,11 @@ void Grid::mark_channels() {
 // Every link from a steel centre (to the neighbour's centre, or to the block face) that
 // enters a bore: the nearest wall over all channels.
 void Grid::cut_links() {
+  const auto keep = [&](std::size_t cell, int dir, double t, double cosine, int c) {
+    const std::size_t key = cell * 6 + std::size_t(dir);
+    const auto it = cuts_.find(key);
+    if (it == cuts_.end() || t < it->second.t) cuts_[key] = Cut{t, cosine, c};
+  };
   for (int c = 0; c < int(model_.channels.size()); ++c) {
     const geometry::Cylinder cyl = cylinder(c);
     for_cells(channel_range(c, 2), [&](int i, int j, int k) {
@@ -108,14 +113,20 @@ void Grid::cut_links() {
         const int a = dir / 2, step = dir % 2 ? 1 : -1;
         std::array<int, 3> n = ijk;
         n[a] += step;
-        const double length = (inside(n[0], n[1], n[2]) ? 1.0 : 0.5) * field_.spacing[a];
+        const bool in_grid = inside(n[0], n[1], n[2]);
+        const bool steel_neighbour = in_grid && kind(n[0], n[1], n[2]) == kSteel;
+        // A link between two steel cells is decided once, from its lower end, for both ends:
+        // rounding could otherwise cut it at one end only, and the matrix would lose symmetry.
+        if (steel_neighbour && step < 0) continue;
+        const double length = (in_grid ? 1.0 : 0.5) * field_.spacing[a];
         Vec3 e = Vec3::Zero();
         e[a] = step;
         const auto entry = enter_cylinder(p, e, length, cyl);
         if (!entry) continue;
-        const std::size_t key = field_.index(i, j, k) * 6 + std::size_t(dir);
-        const auto it = cuts_.find(key);
-        if (it == cuts_.end() || entry->t < it->second.t) cuts_[key] = Cut{entry->t, entry->cosine, c};
+        keep(field_.index(i, j, k), dir, entry->t, entry->cosine, c);
+        if (steel_neighbour)
+          keep(field_.index(n[0], n[1], n[2]), dir - 1, std::max(length - entry->exit, 0.0),
+               entry->exit_cosine, c);
       }
     });
   }

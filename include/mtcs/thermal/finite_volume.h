@@ -28,9 +28,9 @@
 
 namespace mtcs::thermal {
 
-// Incomplete Cholesky in natural order (AMD order measured 5-9x slower), or Jacobi: 2.8x the
-// iterations at a third of the cost each, no faster on the reference block
-// (experiments/thermal/fv.md); kept to compare.
+// Incomplete Cholesky in natural order (AMD order measured 5-9x slower), or Jacobi: 2.7x the
+// iterations at a third to a half of the cost each; on the reference block the two are too
+// close to call on a loaded 2-core machine (experiments/thermal/fv.md).
 enum class FvPreconditioner { IncompleteCholesky, Jacobi };
 
 struct FvOptions {
