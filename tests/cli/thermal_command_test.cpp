@@ -1,0 +1,97 @@
+// mtcs thermal and mtcs bench thermal as a user runs them: the reference block's cavity
+// temperature against FreeFem++, temperatures at a CSV's points, field files, bad input.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "run_mtcs.h"
+
+using namespace mtcs_test;
+
+namespace {
+
+const std::string kMold = std::string(MTCS_SOURCE_DIR) + "/molds/thermal_block.yaml";
+const std::string kLayout = std::string(MTCS_SOURCE_DIR) + "/molds/thermal_block.layout.yaml";
+const std::string kSamples = std::string(MTCS_TEST_DATA) + "/thermal/patch_samples.csv";
+
+// x,y,z,T rows of a CSV with a header.
+std::vector<std::array<double, 4>> read_xyzt(const fs::path& p) {
+  std::ifstream in(p);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::array<double, 4>> rows;
+  std::array<double, 4> r;
+  char c;
+  while (in >> r[0] >> c >> r[1] >> c >> r[2] >> c >> r[3]) rows.push_back(r);
+  return rows;
+}
+
+}  // namespace
+
+TEST_CASE("mtcs thermal --json: the reference block as FreeFem++ has it", "[cli][thermal]") {
+  const fs::path out = scratch("thermal", "summary.json");
+  REQUIRE(run_mtcs("thermal " + kMold + " --layout " + kLayout + " --json >" + out.string()) == 0);
+  const auto j = nlohmann::json::parse(read_text(out));
+  // shared/cases/thermal/README.md: sample mean 55.6609 degC, std 2.5612 K, max 59.004 degC;
+  // the physical-proxy bars.
+  CHECK(j["tier"] == "t2d");
+  CHECK(j["mean"].get<double>() == Approx(55.6609).margin(0.25));
+  CHECK(j["std"].get<double>() == Approx(2.5612).margin(0.15));
+  CHECK(j["max"].get<double>() == Approx(59.004).margin(0.35));
+  CHECK(j["heat_in"].get<double>() == Approx(144).epsilon(1e-9));
+  CHECK(j["seconds"].get<double>() > 0);
+}
+
+TEST_CASE("mtcs thermal --samples: temperatures at the user's points", "[cli][thermal]") {
+  const fs::path out = scratch("thermal", "T.csv");
+  REQUIRE(run_mtcs("thermal " + kMold + " --layout " + kLayout + " --tier fd --cell 2 --samples " + kSamples +
+                   " --out " + out.string() + " >/dev/null") == 0);
+  const auto ours = read_xyzt(out), reference = read_xyzt(kSamples);
+  REQUIRE(ours.size() == 720);
+  double sq = 0;
+  for (std::size_t i = 0; i < ours.size(); ++i) {
+    CHECK(ours[i][0] == reference[i][0]);
+    sq += (ours[i][3] - reference[i][3]) * (ours[i][3] - reference[i][3]);
+  }
+  CHECK(std::sqrt(sq / 720) < 0.25);  // finite volumes at 2 mm: 0.18 K (experiments/thermal/fv.md)
+}
+
+TEST_CASE("mtcs thermal --out: a field ParaView opens, and bad input refused", "[cli][thermal]") {
+  const fs::path vtp = scratch("thermal", "field.vtp");
+  REQUIRE(run_mtcs("thermal " + kMold + " --layout " + kLayout + " --tier t2 --out " + vtp.string() + " >/dev/null") == 0);
+  const std::string text = read_text(vtp);
+  CHECK(text.find("<VTKFile type=\"PolyData\"") != std::string::npos);
+  CHECK(text.find("temperature [degC]") != std::string::npos);
+  // A field in a format we do not write, --samples without --out: exit 2, nothing written.
+  const auto bad = run_mtcs_err("thermal", "thermal " + kMold + " --layout " + kLayout + " --out " +
+                                               scratch("thermal", "field.txt").string());
+  CHECK(bad.code == 2);
+  CHECK(bad.err.find(".vtp, .ply or .png") != std::string::npos);
+  CHECK_FALSE(fs::exists(scratch("thermal", "field.txt")));
+  CHECK(run_mtcs("thermal " + kMold + " --layout " + kLayout + " --samples " + kSamples) == 2);
+  // A malformed points CSV: file, line and field.
+  const fs::path points = scratch("thermal", "points.csv");
+  std::ofstream(points) << "x,y,z\n1,2,3\n4,five,6\n";
+  const auto malformed = run_mtcs_err("thermal", "thermal " + kMold + " --layout " + kLayout + " --samples " +
+                                                     points.string() + " --out " + scratch("thermal", "t.csv").string());
+  CHECK(malformed.code == 2);
+  CHECK(malformed.err.find("points.csv:3:") != std::string::npos);
+  CHECK(malformed.err.find("'y'") != std::string::npos);
+  CHECK_FALSE(fs::exists(scratch("thermal", "t.csv")));
+}
+
+TEST_CASE("mtcs bench thermal --json: every tier judged against the finite volumes", "[cli][thermal]") {
+  const fs::path out = scratch("thermal", "bench.json");
+  REQUIRE(run_mtcs("bench thermal --case block --layouts 6 --reference-cell 4 --repeat 1 --json >" + out.string()) == 0);
+  const auto j = nlohmann::json::parse(read_text(out));
+  CHECK(j["default_tier"] == "t2d M=4");
+  REQUIRE(j["tiers"].size() >= 5);
+  bool fd_self = false;
+  for (const auto& t : j["tiers"]) {
+    for (const char* key : {"tier", "ms_full", "ms_incremental", "rms_k", "tau_std"}) CHECK(t.contains(key));
+    // The reference tier judged against itself: exact.
+    if (t["tier"] == "fd h=4 mm") fd_self = t["rms_k"].get<double>() == 0 && t["tau_std"].get<double>() == 1;
+  }
+  CHECK(fd_self);
+}
