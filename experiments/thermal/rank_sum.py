@@ -1,0 +1,33 @@
+"""Median T3 std per objective and the exact two-sided Mann-Whitney rank-sum test (continuous
+values: no ties), from es_physics_vs_distance.csv."""
+import csv
+import statistics
+import sys
+from functools import lru_cache
+
+rows = list(csv.DictReader(open(sys.argv[1])))
+by = {}
+for r in rows:
+    by.setdefault(r["objective"], []).append(float(r["t3_std_k"]))
+a, b = by["temperature_std"], by["uniformity"]
+n, m = len(a), len(b)
+u = sum(x < y for x in a for y in b)  # pairs in which the physics run's layout is cooler-even
+
+
+@lru_cache(maxsize=None)
+def ways(n, m, u):
+    """Orderings of n + m distinct values in which U (pairs with the first sample lower) is u."""
+    if u < 0:
+        return 0
+    if n == 0 or m == 0:
+        return int(u == 0)
+    # The largest value is from the second sample (every first-sample value is below it) or not.
+    return ways(n, m - 1, u - n) + ways(n - 1, m, u)
+
+
+total = sum(ways(n, m, k) for k in range(n * m + 1))
+centre = n * m / 2
+p = sum(ways(n, m, k) for k in range(n * m + 1) if abs(k - centre) >= abs(u - centre)) / total
+print(f"T3 patch std, median over {n} seeds: physics (temperature_std) {statistics.median(a):.4f} K, "
+      f"wall distance (uniformity) {statistics.median(b):.4f} K")
+print(f"U = {u} of {n * m} pairs have the physics run's layout more uniform; exact two-sided p = {p:.2e}")
