@@ -1,0 +1,55 @@
+#pragma once
+// Inaccessible cone angles (Chen et al., ICPP 2019, section 3): a sphere of radius rho whose
+// centre lies at distance D from the pivot meets the tool (rotationally symmetric about d) for
+// a set of angles theta between d and the centre that depends only on D and rho. In the
+// meridian half-plane the sphere centre is P = D (cos theta, sin theta) and the tool is the
+// union of rectangles [a, b] x [0, r]: the sphere meets cylinder i iff P lies within rho of
+// rectangle i.
+//
+// The paper summarises that set by one angle (ICA). It need not start at theta = 0 (a sphere just
+// beyond the tool's end is missed head-on and met at a small angle), so here a node keeps, in
+// u = cos theta, an inner interval where its inscribed sphere certainly meets the tool and the
+// outer hull of the directions where its circumscribed sphere may meet it; everything else is
+// the corner case.
+
+#include <vector>
+
+#include "mtcs/voxel/tool.h"
+
+namespace mtcs::voxel::detail {
+
+// Margin (mm) by which inscribed spheres are shrunk and circumscribed ones grown, so that the
+// rounding of the double computations below (~1e-13 mm at part scale) never turns a verdict.
+constexpr double kSphereMargin = 1e-9;
+
+enum class SphereVerdict : unsigned char { hit, miss, corner };
+
+// Direct test for one direction: x = axial coordinate of the centre, y = its distance from the
+// axis; hit when the sphere of squared radius in2 meets the tool, miss when the one of squared
+// radius out2 does not.
+inline SphereVerdict sphere_verdict(const Tool& tool, double x, double y, double in2, double out2) {
+  bool maybe = false;
+  for (const ToolCylinder& c : tool) {
+    const double dx = std::max({c.a - x, x - c.b, 0.0}), dy = std::max(y - c.r, 0.0);
+    const double d2 = dx * dx + dy * dy;
+    if (d2 <= in2) return SphereVerdict::hit;
+    maybe = maybe || d2 < out2;
+  }
+  return maybe ? SphereVerdict::corner : SphereVerdict::miss;
+}
+
+// Intervals of u = cos theta; empty when lo > hi.
+struct ConeInterval {
+  double lo = 1;
+  double hi = -1;
+  bool contains(double u) const { return lo <= u && u <= hi; }
+};
+
+struct NodeCone {
+  ConeInterval hit;      // inscribed sphere (radius rho_in - margin) meets the tool for every u in it
+  ConeInterval reach;    // circumscribed sphere (radius rho_out + margin) misses the tool outside it
+};
+
+NodeCone node_cone(const Tool& tool, double distance, double rho_in, double rho_out);
+
+}  // namespace mtcs::voxel::detail
