@@ -7,7 +7,9 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <array>
+#include <optional>
 #include <cmath>
 #include <stdexcept>
 
@@ -20,12 +22,14 @@ namespace {
 using detail::NodeCone;
 using detail::SphereVerdict;
 
-// A cube on the traversal stack: a stored node, or an octant of a full node (node = kVirtual).
+// A cube on the traversal stack: a stored node, or an octant of a full node or of a voxel
+// (node = kVirtual), kept as its closed box (octants split at the midpoint, so they cover
+// their parent exactly).
 struct Cube {
   static constexpr std::uint32_t kVirtual = 0xffffffffu;
+  Box box;
   std::uint32_t node;
-  std::array<std::uint16_t, 3> corner;
-  std::uint8_t level;
+  std::uint8_t level;  // may exceed the octree depth for octants of voxels
   std::uint8_t full;
 };
 
@@ -33,34 +37,35 @@ struct Counters {
   std::uint64_t node_tests = 0, checkbox_calls = 0, quad = 0, undecided = 0;
 };
 
-// Everything about the octree that does not depend on the direction.
+// Everything that does not depend on the direction.
 struct Prepared {
   const Octree& tree;
   const Tool& tool;
   Vec3 pivot;
   AmMethod method;
-  std::vector<Vec3> offset;          // node centre - pivot
-  std::vector<double> distance;      // |offset|
+  int last_level = 0;                // deepest level a corner case is expanded to (aica)
   std::vector<NodeCone> cone;        // for nodes [0, memo_end)
   std::vector<char> use_cone;        // cone valid (centre not too near the pivot)
   std::uint32_t memo_end = 0;
   std::vector<double> in2, out2;     // per level: squared test radii of the spheres
 
-  SphereVerdict direct(const Vec3& w, const Vec3& d, int level) const {
-    const double x = w.dot(d), y = (w - x * d).norm();
-    return detail::sphere_verdict(tool, x, y, in2[std::size_t(level)], out2[std::size_t(level)]);
-  }
-
   SphereVerdict check_ica(const Cube& c, const Vec3& d) const {
-    if (c.node != Cube::kVirtual && c.node < memo_end && use_cone[c.node]) {
-      const double u = offset[c.node].dot(d) / distance[c.node];
+    const Vec3 w = (c.node != Cube::kVirtual ? tree.node_centre(c.node) : Vec3((c.box.min + c.box.max) / 2)) - pivot;
+    const double x = w.dot(d);
+    SphereVerdict v;
+    if (c.node < memo_end && use_cone[c.node]) {
+      const double u = x / w.norm();
       const NodeCone& k = cone[c.node];
-      if (k.hit.contains(u)) return SphereVerdict::hit;
-      if (!k.reach.contains(u)) return SphereVerdict::miss;
-      return SphereVerdict::corner;
+      v = k.hit.contains(u) ? SphereVerdict::hit : (k.reach.contains(u) ? SphereVerdict::corner : SphereVerdict::miss);
+      if (v != SphereVerdict::corner) return v;
     }
-    const Vec3 w = c.node != Cube::kVirtual ? offset[c.node] : tree.centre(c.corner, c.level) - pivot;
-    return direct(w, d, c.level);
+    const Vec3 radial = w - x * d;
+    const double y = radial.norm();
+    if (!(c.node < memo_end && use_cone[c.node])) {
+      v = detail::sphere_verdict(tool, x, y, in2[c.level], out2[c.level]);
+      if (v != SphereVerdict::corner) return v;
+    }
+    return detail::refine_corner(tool, c.box.max - c.box.min, d, radial, x, y, c.full != 0);
   }
 };
 
@@ -68,7 +73,14 @@ class Traversal {
  public:
   // d: the unit direction of the sphere tests; raw: the direction as the sphere grid gives it,
   // which CheckBox normalises with a certified error.
-  Traversal(const Prepared& p, const Vec3& d, const Vec3& raw) : p_(p), d_(d), box_test_(p.pivot, raw, p.tool) {}
+  Traversal(const Prepared& p, const Vec3& d, const Vec3& raw) : p_(p), d_(d), raw_(raw) {
+    // Children are pushed so that the octant nearest the pivot along d is tested first: a
+    // colliding direction usually meets the part there.
+    for (int o = 0; o < 8; ++o) order_[o] = o;
+    double key[8];
+    for (int o = 0; o < 8; ++o) key[o] = ((o & 1) ? d.x() : -d.x()) + ((o & 2) ? d.y() : -d.y()) + ((o & 4) ? d.z() : -d.z());
+    std::sort(order_, order_ + 8, [&](int a, int b) { return key[a] > key[b]; });
+  }
 
   bool collides(Counters& n) {
     if (p_.tree.nodes().empty()) return false;
@@ -89,8 +101,9 @@ class Traversal {
         push_children(c);
         continue;
       }
-      // Corner case.
-      if (p_.method == AmMethod::ica || (c.full && c.level == p_.tree.depth())) {
+      // Corner case: ICA asks CheckBox; AICA opens the cube (full ones into octants) until the
+      // last level, where CheckBox decides.
+      if (p_.method == AmMethod::ica || (c.full && c.level >= p_.last_level)) {
         if (!box(c, n)) continue;
         if (c.full) return true;
         push_children(c);
@@ -105,34 +118,41 @@ class Traversal {
 
  private:
   bool box(const Cube& c, Counters& n) {
+    if (!box_test_) box_test_.emplace(p_.pivot, raw_, p_.tool);
     ++n.checkbox_calls;
-    const BoxVerdict v = box_test_(p_.tree.box(c.corner, c.level));
+    const BoxVerdict v = (*box_test_)(c.box);
     n.quad += v.precision == Precision::quad_precision;
     n.undecided += v.precision == Precision::undecided;
     return v.collision;
   }
   void push_node(std::uint32_t i) {
     const OctreeNode& o = p_.tree.nodes()[i];
-    stack_[top_++] = {i, o.corner, o.level, o.full};
+    stack_[top_++] = {p_.tree.node_box(i), i, o.level, o.full};
   }
   void push_children(const Cube& c) {
     const OctreeNode& o = p_.tree.nodes()[c.node];
-    for (std::uint32_t k = 0; k < o.child_count; ++k) push_node(o.first_child + k);
+    for (int k = 0; k < 8; ++k) {
+      const int oct = order_[k];
+      if (!(o.child_mask >> oct & 1)) continue;
+      push_node(o.first_child + std::uint32_t(__builtin_popcount(o.child_mask & ((1u << oct) - 1))));
+    }
   }
   void push_octants(const Cube& c) {
-    const int w = p_.tree.voxels_across(c.level + 1);
+    const Vec3 mid = (c.box.min + c.box.max) / 2;
     for (int k = 0; k < 8; ++k) {
-      Cube o{Cube::kVirtual, c.corner, std::uint8_t(c.level + 1), 1};
-      for (int a = 0; a < 3; ++a) o.corner[std::size_t(a)] = std::uint16_t(o.corner[std::size_t(a)] + ((k >> a) & 1) * w);
+      const int oct = order_[k];
+      Cube o{c.box, Cube::kVirtual, std::uint8_t(c.level + 1), 1};
+      for (int a = 0; a < 3; ++a) (oct >> a & 1 ? o.box.min[a] : o.box.max[a]) = mid[a];
       stack_[top_++] = o;
     }
   }
 
   const Prepared& p_;
-  Vec3 d_;
-  CheckBox box_test_;
+  Vec3 d_, raw_;
+  std::optional<CheckBox> box_test_;  // built at the first corner case
+  int order_[8];
   // Depth-first: at most 8 pending cubes per level.
-  std::array<Cube, 8 * 17> stack_;
+  std::array<Cube, 8 * 24> stack_;
   int top_ = 0;
 };
 
@@ -183,16 +203,12 @@ AccessMap compute_access_map(const Octree& tree, const Vec3& pivot, const Tool& 
   if (tree.touches_solid(pivot)) throw std::invalid_argument("access map: the pivot lies inside the part (in a solid voxel)");
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
 
-  Prepared p{tree, tool, pivot, options.method, {}, {}, {}, {}, 0, {}, {}};
+  Prepared p{tree, tool, pivot, options.method, 0, {}, {}, 0, {}, {}};
   const auto& nodes = tree.nodes();
-  p.offset.resize(nodes.size());
-  p.distance.resize(nodes.size());
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
-    p.offset[i] = tree.centre(nodes[i]) - pivot;
-    p.distance[i] = p.offset[i].norm();
-  }
-  for (int level = 0; level <= tree.depth(); ++level) {
-    const double in = tree.edge(level) / 2 - detail::kSphereMargin, out = tree.edge(level) * std::sqrt(3.0) / 2 + detail::kSphereMargin;
+  p.last_level = tree.depth() + std::clamp(options.subvoxel_levels, 0, 6);
+  for (int level = 0; level <= p.last_level; ++level) {
+    const double edge = std::ldexp(tree.spec().voxel_size, tree.depth() - level);
+    const double in = edge / 2 - detail::kSphereMargin, out = edge * std::sqrt(3.0) / 2 + detail::kSphereMargin;
     p.in2.push_back(in > 0 ? in * in : -1.0);
     p.out2.push_back(out * out);
   }
@@ -204,9 +220,10 @@ AccessMap compute_access_map(const Octree& tree, const Vec3& pivot, const Tool& 
       tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, p.memo_end, 16), [&](const auto& range) {
         for (std::uint32_t i = range.begin(); i != range.end(); ++i) {
           const double edge = tree.edge(nodes[i].level), rho_out = edge * std::sqrt(3.0) / 2;
+          const double distance = (tree.node_centre(i) - pivot).norm();
           // Near the pivot the cone reading of u loses accuracy: test those nodes directly.
-          if (p.distance[i] <= 2 * rho_out) continue;
-          p.cone[i] = detail::node_cone(tool, p.distance[i], edge / 2, rho_out);
+          if (distance <= 2 * rho_out) continue;
+          p.cone[i] = detail::node_cone(tool, distance, edge / 2, rho_out);
           p.use_cone[i] = 1;
         }
       });

@@ -12,7 +12,11 @@
 // outer hull of the directions where its circumscribed sphere may meet it; everything else is
 // the corner case.
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
+
+#include "mtcs/geometry/primitives.h"
 
 #include "mtcs/voxel/tool.h"
 
@@ -36,6 +40,35 @@ inline SphereVerdict sphere_verdict(const Tool& tool, double x, double y, double
     maybe = maybe || d2 < out2;
   }
   return maybe ? SphereVerdict::corner : SphereVerdict::miss;
+}
+
+// A corner case (the circumscribed sphere may meet the tool, the inscribed one does not) seen
+// through the cube itself rather than its spheres: the cube spans x +- (size/2).|d| along the
+// axis and lies at least y - (size/2).|e| from it (e = radial unit vector of the centre), so a
+// cylinder it misses on either count cannot touch it; and for a full cube, its corner nearest
+// the axis lying inside a cylinder is a collision. Anything else stays a corner case.
+inline SphereVerdict refine_corner(const Tool& tool, const Vec3& size, const Vec3& d, const Vec3& radial, double x, double y,
+                                   bool full) {
+  const double half_axial = 0.5 * (size.x() * std::abs(d.x()) + size.y() * std::abs(d.y()) + size.z() * std::abs(d.z()));
+  double half_radial = 0;
+  if (y > 0)
+    half_radial = 0.5 * (size.x() * std::abs(radial.x()) + size.y() * std::abs(radial.y()) + size.z() * std::abs(radial.z())) / y;
+  bool maybe = false;
+  for (const ToolCylinder& c : tool)
+    maybe = maybe || (x - half_axial <= c.b + kSphereMargin && x + half_axial >= c.a - kSphereMargin &&
+                      (y == 0 || y - half_radial <= c.r + kSphereMargin));
+  if (!maybe) return SphereVerdict::miss;
+  if (full && y > 0) {
+    // The corner towards the axis: centre - (size/2) sign(e), in axial / radial coordinates.
+    Vec3 q;
+    for (int k = 0; k < 3; ++k) q[k] = radial[k] > 0 ? -0.5 * size[k] : 0.5 * size[k];
+    const double qx = x + q.dot(d);
+    const Vec3 qr = radial + q - q.dot(d) * d;
+    const double qy = qr.norm();
+    for (const ToolCylinder& c : tool)
+      if (qx >= c.a + kSphereMargin && qx <= c.b - kSphereMargin && qy <= c.r - kSphereMargin) return SphereVerdict::hit;
+  }
+  return SphereVerdict::corner;
 }
 
 // Intervals of u = cos theta; empty when lo > hi.

@@ -66,9 +66,16 @@ Octree::Octree(const VoxelGrid& grid) : spec_(grid.spec) {
         child.full = solid == std::int64_t(w) * w * w;
         nodes_.push_back(child);
         ++nodes_[n].child_count;
+        nodes_[n].child_mask = std::uint8_t(nodes_[n].child_mask | (1u << c));
       }
     }
     begin = end;
+  }
+  centres_.reserve(nodes_.size());
+  boxes_.reserve(nodes_.size());
+  for (const OctreeNode& n : nodes_) {
+    centres_.push_back(centre(n));
+    boxes_.push_back(box(n));
   }
 }
 

@@ -6,8 +6,9 @@
 //   checkbox  exact CheckBox on every node (the baseline);
 //   ica       CheckICA (inscribed / circumscribed spheres, memoised cone intervals for the top
 //             levels), CheckBox on corner cases (the paper's MICA);
-//   aica      CheckICA, corner cases expanded into children (full nodes into their eight
-//             octants) down to single voxels, where CheckBox decides (the paper's AICA).
+//   aica      CheckICA, corner cases expanded into children (full nodes and voxels into their
+//             eight octants, which cover them exactly) down to `subvoxel_levels` below single
+//             voxels, where CheckBox decides (the paper's AICA, one step further).
 // All three give the exact map; directions run in parallel (TBB), each writing its own cell, so
 // the map and the counters are the same for any thread count.
 
@@ -29,6 +30,7 @@ struct AmOptions {
   AmMethod method = AmMethod::aica;
   int threads = 0;       // 0: TBB's default
   int memo_levels = 4;   // octree levels whose cone intervals are precomputed (ica, aica)
+  int subvoxel_levels = 1;  // aica: corner-case voxels are split this many times before CheckBox
 };
 
 struct AmStats {

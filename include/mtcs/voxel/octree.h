@@ -1,6 +1,7 @@
 #pragma once
 // A pointer-free occupancy octree over a voxel grid: nodes in level order in one array, the
-// non-empty children of a mixed node stored contiguously. Full nodes (every voxel solid) are
+// non-empty children of a mixed node stored contiguously, in octant order (octant o is offset by
+// half the node along axis a iff bit a of o is set). Full nodes (every voxel solid) are
 // leaves; empty nodes are not stored. The root covers the smallest power-of-two cube of voxels
 // holding the grid (voxels outside the grid count as empty).
 
@@ -16,6 +17,7 @@ struct OctreeNode {
   std::uint8_t level = 0;                 // 0 = root; `depth` = a single voxel
   std::uint8_t full = 0;                  // 1: every voxel solid (a leaf); 0: mixed
   std::uint8_t child_count = 0;           // non-empty children (mixed nodes only)
+  std::uint8_t child_mask = 0;            // bit o: octant o non-empty; children stored by octant
   std::uint32_t first_child = 0;
 };
 
@@ -24,6 +26,9 @@ class Octree {
   explicit Octree(const VoxelGrid& grid);
 
   const std::vector<OctreeNode>& nodes() const { return nodes_; }
+  // Centre and closed box of node i (precomputed).
+  const Vec3& node_centre(std::uint32_t i) const { return centres_[i]; }
+  const Box& node_box(std::uint32_t i) const { return boxes_[i]; }
   const GridSpec& spec() const { return spec_; }
   int depth() const { return depth_; }
   std::size_t solid_voxels() const { return solid_voxels_; }
@@ -47,6 +52,8 @@ class Octree {
   int depth_ = 0;
   std::size_t solid_voxels_ = 0;
   std::vector<OctreeNode> nodes_;
+  std::vector<Vec3> centres_;
+  std::vector<Box> boxes_;
   std::vector<std::uint32_t> level_end_;
 };
 
