@@ -33,6 +33,13 @@ struct Cube {
   std::uint8_t full;
 };
 
+// Number of set bits of a byte (no popcount instruction in the baseline x86-64 target).
+constexpr std::array<std::uint8_t, 256> kBitCount = [] {
+  std::array<std::uint8_t, 256> t{};
+  for (int i = 0; i < 256; ++i) t[std::size_t(i)] = std::uint8_t((i & 1) + t[std::size_t(i / 2)]);
+  return t;
+}();
+
 struct Counters {
   std::uint64_t node_tests = 0, checkbox_calls = 0, quad = 0, undecided = 0;
 };
@@ -134,7 +141,7 @@ class Traversal {
     for (int k = 0; k < 8; ++k) {
       const int oct = order_[k];
       if (!(o.child_mask >> oct & 1)) continue;
-      push_node(o.first_child + std::uint32_t(__builtin_popcount(o.child_mask & ((1u << oct) - 1))));
+      push_node(o.first_child + kBitCount[o.child_mask & ((1u << oct) - 1)]);
     }
   }
   void push_octants(const Cube& c) {

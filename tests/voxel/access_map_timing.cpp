@@ -128,7 +128,7 @@ TEST_CASE("access-map profile loop", "[.am_profile]") {
       o.threads = 1;
       if (const char* v = std::getenv("MTCS_AM_SUBVOXEL_LEVELS")) o.subvoxel_levels = std::atoi(v);
       if (const char* v = std::getenv("MTCS_AM_MEMO_LEVELS")) o.memo_levels = std::atoi(v);
-      const AccessMap map = compute_access_map(testing::case_octree(c), c.pivot, c.tool, SphereGrid{64, 64}, o);
+      const AccessMap map = compute_access_map(testing::case_octree(c), c.pivot, c.tool, SphereGrid{std::getenv("MTCS_AM_N") ? std::atoi(std::getenv("MTCS_AM_N")) : 64, std::getenv("MTCS_AM_N") ? std::atoi(std::getenv("MTCS_AM_N")) : 64}, o);
       tests += map.stats.node_tests;
       boxes += map.stats.checkbox_calls;
     }
