@@ -118,6 +118,7 @@ AccessCase read_access_case(const std::string& path) {
       (key == "solid_voxels" ? c.solid_voxels : c.octree_nodes) = p.integer(1, key, 0);
     } else if (key == "pivot") {
       c.pivot = p.vec3(key);
+      c.pivot_line = int(n) + 1;
       have_pivot = true;
     } else if (key == "tool_cylinders") {
       p.expect_count(2, key);

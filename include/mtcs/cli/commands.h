@@ -25,5 +25,6 @@ Command add_replay_command(CLI::App& app);
 Command add_compare_penalties_command(CLI::App& app);
 Command add_clearance_command(CLI::App& app);
 Command add_interfere_command(CLI::App& app);
+Command add_access_map_command(CLI::App& app);
 
 }  // namespace mtcs::cli

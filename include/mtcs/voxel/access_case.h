@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mtcs/mesh/triangle_mesh.h"
+#include "mtcs/voxel/accessibility_map.h"
 #include "mtcs/voxel/tool.h"
 #include "mtcs/voxel/voxel_grid.h"
 
@@ -23,6 +24,7 @@ struct AccessCase {
   long solid_voxels = -1;  // -1 when absent
   long octree_nodes = -1;
   Vec3 pivot = Vec3::Zero();
+  int pivot_line = 0;  // 1-based, for messages
   Tool tool;
   SphereGrid sphere;
   long collisions = -1;
@@ -40,5 +42,21 @@ mesh::TriangleMesh scale_case_mesh(const mesh::TriangleMesh& raw, const AccessCa
 // The case file with its `collisions` line and `am` block replaced by `map` (rows of '0'/'1');
 // appended when the file had none.
 void write_access_case(std::ostream& out, const AccessCase& c, const std::vector<std::string>& map);
+
+// The mesh a case names: `mesh_override` when given; else the case's `mesh` line, relative to
+// the folder holding the `shared/` folder the case file lies in (shared/cases/access_maps/X.txt),
+// else to the working directory.
+std::string resolve_case_mesh(const AccessCase& c, const std::string& mesh_override = "");
+
+struct CaseSolution {
+  AccessMap map;
+  std::size_t solid_voxels = 0;
+  std::size_t octree_nodes = 0;
+};
+
+// The case's map: the mesh read and scaled as the case says, voxelised on its grid, the map of
+// its pivot and tool. Throws io::InputError for an unreadable or open mesh and for a pivot
+// inside the part (naming the case's pivot line).
+CaseSolution solve_access_case(const AccessCase& c, const std::string& mesh_path, const AmOptions& options = {});
 
 }  // namespace mtcs::voxel
