@@ -23,11 +23,10 @@ using detail::NodeCone;
 using detail::SphereVerdict;
 
 // A cube on the traversal stack: a stored node, or an octant of a full node or of a voxel
-// (node = kVirtual), kept as its closed box (octants split at the midpoint, so they cover
-// their parent exactly).
+// (node = kVirtual), whose closed box the traversal keeps beside the stack (octants split at the
+// midpoint, so they cover their parent exactly).
 struct Cube {
   static constexpr std::uint32_t kVirtual = 0xffffffffu;
-  Box box;
   std::uint32_t node;
   std::uint8_t level;  // may exceed the octree depth for octants of voxels
   std::uint8_t full;
@@ -56,23 +55,26 @@ struct Prepared {
   std::uint32_t memo_end = 0;
   std::vector<double> in2, out2;     // per level: squared test radii of the spheres
 
-  SphereVerdict check_ica(const Cube& c, const Vec3& d) const {
-    const Vec3 w = (c.node != Cube::kVirtual ? tree.node_centre(c.node) : Vec3((c.box.min + c.box.max) / 2)) - pivot;
+  // `box` is read only for virtual cubes.
+  SphereVerdict check_ica(const Cube& c, const Box& box, const Vec3& d) const {
+    const bool stored = c.node != Cube::kVirtual;
+    const Vec3 w = (stored ? tree.node_centre(c.node) : Vec3((box.min + box.max) / 2)) - pivot;
     const double x = w.dot(d);
-    SphereVerdict v;
-    if (c.node < memo_end && use_cone[c.node]) {
+    const bool memo = stored && c.node < memo_end && use_cone[c.node];
+    if (memo) {
       const double u = x / w.norm();
       const NodeCone& k = cone[c.node];
-      v = k.hit.contains(u) ? SphereVerdict::hit : (k.reach.contains(u) ? SphereVerdict::corner : SphereVerdict::miss);
-      if (v != SphereVerdict::corner) return v;
+      if (k.hit.contains(u)) return SphereVerdict::hit;
+      if (!k.reach.contains(u)) return SphereVerdict::miss;
     }
     const Vec3 radial = w - x * d;
     const double y = radial.norm();
-    if (!(c.node < memo_end && use_cone[c.node])) {
-      v = detail::sphere_verdict(tool, x, y, in2[c.level], out2[c.level]);
+    if (!memo) {
+      const SphereVerdict v = detail::sphere_verdict(tool, x, y, in2[c.level], out2[c.level]);
       if (v != SphereVerdict::corner) return v;
     }
-    return detail::refine_corner(tool, c.box.max - c.box.min, d, radial, x, y, c.full != 0);
+    const Vec3 size = stored ? Vec3::Constant(tree.edge(c.level)) : Vec3(box.max - box.min);
+    return detail::refine_corner(tool, size, d, radial, x, y, c.full != 0);
   }
 };
 
@@ -89,33 +91,50 @@ class Traversal {
     std::sort(order_, order_ + 8, [&](int a, int b) { return key[a] > key[b]; });
   }
 
-  bool collides(Counters& n) {
+  // `witness`: a full cube the previous direction of the same row collided with, or none
+  // (full == 0); tested first, since neighbouring directions usually hit the same part of the
+  // part; replaced by this direction's witness.
+  bool collides(Counters& n, Cube& witness, Box& witness_box) {
     if (p_.tree.nodes().empty()) return false;
+    if (witness.full) {
+      ++n.node_tests;
+      const bool hit = p_.method == AmMethod::checkbox ? box(witness_box, n) : p_.check_ica(witness, witness_box, d_) == SphereVerdict::hit;
+      if (hit) return true;
+    }
+    witness.full = 0;
     push_node(0);
     while (top_ > 0) {
-      const Cube c = stack_[--top_];
+      --top_;
+      const Cube c = stack_[top_];
+      const Box b = c.node == Cube::kVirtual ? boxes_[top_] : Box{};
+      const auto box_of = [&] { return c.node == Cube::kVirtual ? b : p_.tree.node_box(c.node); };
+      const auto found = [&] {
+        witness = c;
+        witness_box = box_of();
+        return true;
+      };
       ++n.node_tests;
       if (p_.method == AmMethod::checkbox) {
-        if (!box(c, n)) continue;
-        if (c.full) return true;
+        if (!box(box_of(), n)) continue;
+        if (c.full) return found();
         push_children(c);
         continue;
       }
-      const SphereVerdict v = p_.check_ica(c, d_);
+      const SphereVerdict v = p_.check_ica(c, b, d_);
       if (v == SphereVerdict::miss) continue;
       if (v == SphereVerdict::hit) {
-        if (c.full) return true;
+        if (c.full) return found();
         push_children(c);
         continue;
       }
       // Corner case: ICA asks CheckBox; AICA opens the cube (full ones into octants) until the
       // last level, where CheckBox decides.
       if (p_.method == AmMethod::ica || (c.full && c.level >= p_.last_level)) {
-        if (!box(c, n)) continue;
-        if (c.full) return true;
+        if (!box(box_of(), n)) continue;
+        if (c.full) return found();
         push_children(c);
       } else if (c.full) {
-        push_octants(c);
+        push_octants(c, box_of());
       } else {
         push_children(c);
       }
@@ -124,17 +143,17 @@ class Traversal {
   }
 
  private:
-  bool box(const Cube& c, Counters& n) {
+  bool box(const Box& b, Counters& n) {
     if (!box_test_) box_test_.emplace(p_.pivot, raw_, p_.tool);
     ++n.checkbox_calls;
-    const BoxVerdict v = (*box_test_)(c.box);
+    const BoxVerdict v = (*box_test_)(b);
     n.quad += v.precision == Precision::quad_precision;
     n.undecided += v.precision == Precision::undecided;
     return v.collision;
   }
   void push_node(std::uint32_t i) {
     const OctreeNode& o = p_.tree.nodes()[i];
-    stack_[top_++] = {p_.tree.node_box(i), i, o.level, o.full};
+    stack_[top_++] = {i, o.level, o.full};
   }
   void push_children(const Cube& c) {
     const OctreeNode& o = p_.tree.nodes()[c.node];
@@ -144,13 +163,14 @@ class Traversal {
       push_node(o.first_child + kBitCount[o.child_mask & ((1u << oct) - 1)]);
     }
   }
-  void push_octants(const Cube& c) {
-    const Vec3 mid = (c.box.min + c.box.max) / 2;
+  void push_octants(const Cube& c, const Box& parent) {
+    const Vec3 mid = (parent.min + parent.max) / 2;
     for (int k = 0; k < 8; ++k) {
       const int oct = order_[k];
-      Cube o{c.box, Cube::kVirtual, std::uint8_t(c.level + 1), 1};
-      for (int a = 0; a < 3; ++a) (oct >> a & 1 ? o.box.min[a] : o.box.max[a]) = mid[a];
-      stack_[top_++] = o;
+      Box& o = boxes_[top_];
+      o = parent;
+      for (int a = 0; a < 3; ++a) (oct >> a & 1 ? o.min[a] : o.max[a]) = mid[a];
+      stack_[top_++] = {Cube::kVirtual, std::uint8_t(c.level + 1), 1};
     }
   }
 
@@ -160,6 +180,7 @@ class Traversal {
   int order_[8];
   // Depth-first: at most 8 pending cubes per level.
   std::array<Cube, 8 * 24> stack_;
+  std::array<Box, 8 * 24> boxes_;  // of the virtual cubes on the stack
   int top_ = 0;
 };
 
@@ -240,11 +261,18 @@ AccessMap compute_access_map(const Octree& tree, const Vec3& pivot, const Tool& 
   AccessMap map{sphere, std::vector<std::uint8_t>(std::size_t(sphere.rows) * std::size_t(sphere.cols), 0), {}};
   std::vector<Counters> counters(map.cells.size());
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<int>(0, int(map.cells.size()), 4), [&](const auto& range) {
-      for (int cell = range.begin(); cell != range.end(); ++cell) {
-        const Vec3 raw = sphere.direction(cell / sphere.cols, cell % sphere.cols);
-        Traversal t(p, raw.normalized(), raw);
-        map.cells[std::size_t(cell)] = t.collides(counters[std::size_t(cell)]);
+    // One task per row, its columns in order: the witness passed along a row makes the
+    // counters, too, independent of the thread count.
+    tbb::parallel_for(tbb::blocked_range<int>(0, sphere.rows, 1), [&](const auto& range) {
+      for (int i = range.begin(); i != range.end(); ++i) {
+        Cube witness{};
+        Box witness_box;
+        for (int j = 0; j < sphere.cols; ++j) {
+          const std::size_t cell = std::size_t(i) * std::size_t(sphere.cols) + std::size_t(j);
+          const Vec3 raw = sphere.direction(i, j);
+          Traversal t(p, raw.normalized(), raw);
+          map.cells[cell] = t.collides(counters[cell], witness, witness_box);
+        }
       }
     });
   });

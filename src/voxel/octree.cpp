@@ -71,10 +71,9 @@ Octree::Octree(const VoxelGrid& grid) : spec_(grid.spec) {
     }
     begin = end;
   }
-  centres_.reserve(nodes_.size());
   boxes_.reserve(nodes_.size());
-  for (const OctreeNode& n : nodes_) {
-    centres_.push_back(centre(n));
+  for (OctreeNode& n : nodes_) {
+    n.centre = centre(n.corner, n.level);
     boxes_.push_back(box(n));
   }
 }

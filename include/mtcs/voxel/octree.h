@@ -13,6 +13,7 @@
 namespace mtcs::voxel {
 
 struct OctreeNode {
+  Vec3 centre = Vec3::Zero();              // kept with the node: traversals read both together
   std::array<std::uint16_t, 3> corner{};  // lowest voxel index covered
   std::uint8_t level = 0;                 // 0 = root; `depth` = a single voxel
   std::uint8_t full = 0;                  // 1: every voxel solid (a leaf); 0: mixed
@@ -27,7 +28,7 @@ class Octree {
 
   const std::vector<OctreeNode>& nodes() const { return nodes_; }
   // Centre and closed box of node i (precomputed).
-  const Vec3& node_centre(std::uint32_t i) const { return centres_[i]; }
+  const Vec3& node_centre(std::uint32_t i) const { return nodes_[i].centre; }
   const Box& node_box(std::uint32_t i) const { return boxes_[i]; }
   const GridSpec& spec() const { return spec_; }
   int depth() const { return depth_; }
@@ -52,7 +53,6 @@ class Octree {
   int depth_ = 0;
   std::size_t solid_voxels_ = 0;
   std::vector<OctreeNode> nodes_;
-  std::vector<Vec3> centres_;
   std::vector<Box> boxes_;
   std::vector<std::uint32_t> level_end_;
 };
