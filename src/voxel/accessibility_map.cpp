@@ -95,7 +95,7 @@ class Traversal {
   // (full == 0); tested first, since neighbouring directions usually hit the same part of the
   // part; replaced by this direction's witness.
   bool collides(Counters& n, Cube& witness, Box& witness_box) {
-    if (p_.tree.nodes().empty()) return false;
+    if (p_.tree.nodes().empty() || p_.tool.empty()) return false;
     if (witness.full) {
       ++n.node_tests;
       const bool hit = p_.method == AmMethod::checkbox ? box(witness_box, n) : p_.check_ica(witness, witness_box, d_) == SphereVerdict::hit;
@@ -229,10 +229,22 @@ AccessMap compute_access_map(const Octree& tree, const Vec3& pivot, const Tool& 
   if (!pivot.allFinite()) throw std::invalid_argument("access map: the pivot is not finite");
   if (sphere.rows < 1 || sphere.cols < 1) throw std::invalid_argument("access map: the sphere grid needs rows, cols >= 1");
   if (tree.touches_solid(pivot)) throw std::invalid_argument("access map: the pivot lies inside the part (in a solid voxel)");
-  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+  // One thread runs on the caller without an arena.
+  tbb::task_arena arena(options.threads > 1 ? options.threads : tbb::task_arena::automatic);
 
-  Prepared p{tree, tool, pivot, options.method, 0, {}, {}, 0, {}, {}};
   const auto& nodes = tree.nodes();
+  // Cylinders starting beyond the farthest corner of the octree's root cannot touch a voxel:
+  // every method leaves them out (a holder far from the part costs nothing).
+  Tool reach;
+  if (!nodes.empty()) {
+    const Box root = tree.node_box(0);
+    double far = 0;
+    for (int k = 0; k < 8; ++k)
+      far = std::max(far, (Vec3(k & 1 ? root.max.x() : root.min.x(), k & 2 ? root.max.y() : root.min.y(), k & 4 ? root.max.z() : root.min.z()) - pivot).norm());
+    for (const ToolCylinder& c : tool)
+      if (c.a <= far * (1 + 1e-12) + detail::kSphereMargin) reach.push_back(c);
+  }
+  Prepared p{tree, reach, pivot, options.method, 0, {}, {}, 0, {}, {}};
   p.last_level = tree.depth() + std::clamp(options.subvoxel_levels, 0, 6);
   for (int level = 0; level <= p.last_level; ++level) {
     const double edge = std::ldexp(tree.spec().voxel_size, tree.depth() - level);
@@ -244,38 +256,57 @@ AccessMap compute_access_map(const Octree& tree, const Vec3& pivot, const Tool& 
     p.memo_end = tree.level_end(std::min(options.memo_levels, tree.depth() + 1) - 1);
     p.cone.resize(p.memo_end);
     p.use_cone.assign(p.memo_end, 0);
-    arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, p.memo_end, 16), [&](const auto& range) {
-        for (std::uint32_t i = range.begin(); i != range.end(); ++i) {
-          const double edge = tree.edge(nodes[i].level), rho_out = edge * std::sqrt(3.0) / 2;
-          const double distance = (tree.node_centre(i) - pivot).norm();
-          // Near the pivot the cone reading of u loses accuracy: test those nodes directly.
-          if (distance <= 2 * rho_out) continue;
-          p.cone[i] = detail::node_cone(tool, distance, edge / 2, rho_out);
-          p.use_cone[i] = 1;
-        }
+    const auto memoise = [&](std::uint32_t i) {
+      const double edge = tree.edge(nodes[i].level), rho_out = edge * std::sqrt(3.0) / 2;
+      const double distance = (tree.node_centre(i) - pivot).norm();
+      // Near the pivot the cone reading of u loses accuracy: test those nodes directly.
+      if (distance <= 2 * rho_out) return;
+      p.cone[i] = detail::node_cone(reach, distance, edge / 2, rho_out);
+      p.use_cone[i] = 1;
+    };
+    if (options.threads == 1) {
+      for (std::uint32_t i = 0; i < p.memo_end; ++i) memoise(i);
+    } else {
+      arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, p.memo_end, 16), [&](const auto& range) {
+          for (std::uint32_t i = range.begin(); i != range.end(); ++i) memoise(i);
+        });
       });
-    });
+    }
   }
 
   AccessMap map{sphere, std::vector<std::uint8_t>(std::size_t(sphere.rows) * std::size_t(sphere.cols), 0), {}};
   std::vector<Counters> counters(map.cells.size());
-  arena.execute([&] {
-    // One task per row, its columns in order: the witness passed along a row makes the
-    // counters, too, independent of the thread count.
-    tbb::parallel_for(tbb::blocked_range<int>(0, sphere.rows, 1), [&](const auto& range) {
-      for (int i = range.begin(); i != range.end(); ++i) {
-        Cube witness{};
-        Box witness_box;
-        for (int j = 0; j < sphere.cols; ++j) {
-          const std::size_t cell = std::size_t(i) * std::size_t(sphere.cols) + std::size_t(j);
-          const Vec3 raw = sphere.direction(i, j);
-          Traversal t(p, raw.normalized(), raw);
-          map.cells[cell] = t.collides(counters[cell], witness, witness_box);
-        }
-      }
+  // One task per row, its columns in order: the witness passed along a row makes the counters,
+  // too, independent of the thread count.
+  // The sphere grid's directions, with SphereGrid::direction's arithmetic, from one sine and
+  // cosine per row and per column.
+  std::vector<double> sin_gamma(std::size_t(sphere.cols)), cos_gamma(std::size_t(sphere.cols));
+  for (int j = 0; j < sphere.cols; ++j) {
+    const double gamma = (j + 0.5) * 2 * M_PI / sphere.cols;
+    sin_gamma[std::size_t(j)] = std::sin(gamma);
+    cos_gamma[std::size_t(j)] = std::cos(gamma);
+  }
+  const auto row = [&](int i) {
+    const double phi = (i + 0.5) * M_PI / sphere.rows, sin_phi = std::sin(phi), cos_phi = std::cos(phi);
+    Cube witness{};
+    Box witness_box;
+    for (int j = 0; j < sphere.cols; ++j) {
+      const std::size_t cell = std::size_t(i) * std::size_t(sphere.cols) + std::size_t(j);
+      const Vec3 raw(sin_phi * cos_gamma[std::size_t(j)], sin_phi * sin_gamma[std::size_t(j)], cos_phi);
+      Traversal t(p, raw.normalized(), raw);
+      map.cells[cell] = t.collides(counters[cell], witness, witness_box);
+    }
+  };
+  if (options.threads == 1) {
+    for (int i = 0; i < sphere.rows; ++i) row(i);
+  } else {
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<int>(0, sphere.rows, 1), [&](const auto& range) {
+        for (int i = range.begin(); i != range.end(); ++i) row(i);
+      });
     });
-  });
+  }
   for (const Counters& c : counters) {
     map.stats.node_tests += c.node_tests;
     map.stats.checkbox_calls += c.checkbox_calls;

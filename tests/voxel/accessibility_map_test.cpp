@@ -180,3 +180,22 @@ TEST_CASE("the same map and counters on 1 and 2 threads", "[voxel][am]") {
     CHECK(one.stats.checkbox_calls == two.stats.checkbox_calls);
   }
 }
+
+TEST_CASE("directions are the sphere grid's, and out-of-reach cylinders change nothing", "[voxel][am]") {
+  const AccessCase c = read_access_case(std::string(MTCS_TEST_DATA) + "/access_maps/drilling_homer_p01.txt");
+  const Octree& tree = testing::case_octree(c);
+  // A holder starting 500 mm out cannot reach a 50 mm part; alone it leaves every cell free.
+  Tool with_holder = c.tool;
+  with_holder.push_back({500, 600, 100});
+  for (AmMethod m : kMethods) {
+    CHECK(compute_access_map(tree, c.pivot, with_holder, c.sphere, with(m)).rows() == c.am);
+    CHECK(compute_access_map(tree, c.pivot, Tool{{500, 600, 100}}, c.sphere, with(m)).collisions() == 0);
+  }
+  // A cell's verdict is CheckBox's over the full nodes (which cover the solid voxels exactly)
+  // for SphereGrid::direction (row 10, column 3 of a 32 x 32 map).
+  const AccessMap map = compute_access_map(tree, c.pivot, c.tool, c.sphere);
+  bool any = false;
+  for (std::uint32_t i = 0; i < tree.nodes().size(); ++i)
+    if (tree.nodes()[i].full) any = any || CheckBox(c.pivot, c.sphere.direction(10, 3), c.tool)(tree.node_box(i)).collision;
+  CHECK(map.collides(10, 3) == any);
+}

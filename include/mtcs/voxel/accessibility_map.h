@@ -29,7 +29,7 @@ std::string to_string(AmMethod m);
 struct AmOptions {
   AmMethod method = AmMethod::aica;
   int threads = 0;       // 0: TBB's default
-  int memo_levels = 4;   // octree levels whose cone intervals are precomputed (ica, aica)
+  int memo_levels = 2;   // octree levels whose cone intervals are precomputed (ica, aica)
   int subvoxel_levels = 1;  // aica: corner-case voxels are split this many times before CheckBox
 };
 
