@@ -85,10 +85,21 @@ class Traversal {
   Traversal(const Prepared& p, const Vec3& d, const Vec3& raw) : p_(p), d_(d), raw_(raw) {
     // Children are pushed so that the octant nearest the pivot along d is tested first: a
     // colliding direction usually meets the part there.
-    for (int o = 0; o < 8; ++o) order_[o] = o;
-    double key[8];
-    for (int o = 0; o < 8; ++o) key[o] = ((o & 1) ? d.x() : -d.x()) + ((o & 2) ? d.y() : -d.y()) + ((o & 4) ? d.z() : -d.z());
-    std::sort(order_, order_ + 8, [&](int a, int b) { return key[a] > key[b]; });
+    // Octant o lies at (sum over axes of +-|d_k|) along d from the parent's centre: the nearest
+    // one, `base`, has bit k set where d_k < 0; flipping bits moves away by 2 |d_k| each. With
+    // the axes sorted by |d_k| (s1 smallest), the order of the flip sets is fixed but for
+    // {s1, s2} against {s3}. order_ runs from the farthest octant to the nearest (pushed in
+    // that order, the nearest is tested first).
+    const int base = (d.x() < 0) | (d.y() < 0) << 1 | (d.z() < 0) << 2;
+    int axis[3] = {0, 1, 2};
+    const double m[3] = {std::abs(d.x()), std::abs(d.y()), std::abs(d.z())};
+    if (m[axis[1]] < m[axis[0]]) std::swap(axis[0], axis[1]);
+    if (m[axis[2]] < m[axis[1]]) std::swap(axis[1], axis[2]);
+    if (m[axis[1]] < m[axis[0]]) std::swap(axis[0], axis[1]);
+    const int s1 = 1 << axis[0], s2 = 1 << axis[1], s3 = 1 << axis[2];
+    const bool pair_first = m[axis[0]] + m[axis[1]] <= m[axis[2]];
+    const int near_to_far[8] = {0, s1, s2, pair_first ? s1 | s2 : s3, pair_first ? s3 : s1 | s2, s1 | s3, s2 | s3, 7};
+    for (int k = 0; k < 8; ++k) order_[k] = base ^ near_to_far[7 - k];
   }
 
   // `witness`: a full cube the previous direction of the same row collided with, or none
