@@ -103,7 +103,7 @@ AccessCase read_access_case(const std::string& path) {
       p.expect_count(4, key);
       for (int a = 0; a < 3; ++a) c.grid.size[std::size_t(a)] = int(p.integer(std::size_t(a) + 1, key, 1));
       for (int a = 0; a < 3; ++a)
-        if (c.grid.size[std::size_t(a)] > 4096) p.fail(std::size_t(a) + 1, key, "at most 4096 voxels across");
+        if (c.grid.size[std::size_t(a)] > 512) p.fail(std::size_t(a) + 1, key, "at most 512 voxels across");
       have_grid = true;
     } else if (key == "voxel_size") {
       p.expect_count(2, key);

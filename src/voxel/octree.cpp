@@ -18,8 +18,8 @@ class SummedVolume {
       for (int j = 1; j < n_; ++j)
         for (int i = 1; i < n_; ++i) {
           const bool solid = i <= s[0] && j <= s[1] && k <= s[2] && grid.at(i - 1, j - 1, k - 1);
-          at(i, j, k) = std::int64_t(solid) + at(i - 1, j, k) + at(i, j - 1, k) + at(i, j, k - 1) -
-                        at(i - 1, j - 1, k) - at(i - 1, j, k - 1) - at(i, j - 1, k - 1) + at(i - 1, j - 1, k - 1);
+          ref(i, j, k) = std::int32_t(std::int64_t(solid) + at(i - 1, j, k) + at(i, j - 1, k) + at(i, j, k - 1) -
+                                      at(i - 1, j - 1, k) - at(i - 1, j, k - 1) - at(i, j - 1, k - 1) + at(i - 1, j - 1, k - 1));
         }
   }
   std::int64_t count(int i, int j, int k, int w) const {
@@ -28,10 +28,10 @@ class SummedVolume {
   }
 
  private:
-  std::int64_t& at(int i, int j, int k) { return sum_[(std::size_t(k) * n_ + j) * n_ + i]; }
+  std::int32_t& ref(int i, int j, int k) { return sum_[(std::size_t(k) * n_ + j) * n_ + i]; }
   std::int64_t at(int i, int j, int k) const { return sum_[(std::size_t(k) * n_ + j) * n_ + i]; }
   int n_;
-  std::vector<std::int64_t> sum_;
+  std::vector<std::int32_t> sum_;  // counts < 2^31 up to 1024^3; sums taken in 64 bits
 };
 
 }  // namespace
@@ -39,7 +39,7 @@ class SummedVolume {
 Octree::Octree(const VoxelGrid& grid) : spec_(grid.spec) {
   const int largest = std::max({spec_.size[0], spec_.size[1], spec_.size[2], 1});
   while ((1 << depth_) < largest) ++depth_;
-  if (depth_ > 15) throw std::invalid_argument("octree: grid larger than 32768 voxels across");
+  if (depth_ > 10) throw std::invalid_argument("octree: grid larger than 1024 voxels across");
   const int side = 1 << depth_;
   const SummedVolume sat(grid, side);
   solid_voxels_ = std::size_t(sat.count(0, 0, 0, side));
