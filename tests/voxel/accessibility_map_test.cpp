@@ -199,3 +199,22 @@ TEST_CASE("directions are the sphere grid's, and out-of-reach cylinders change n
     if (tree.nodes()[i].full) any = any || CheckBox(c.pivot, c.sphere.direction(10, 3), c.tool)(tree.node_box(i)).collision;
   CHECK(map.collides(10, 3) == any);
 }
+
+TEST_CASE("memo levels and sub-voxel levels change the work, not the map", "[voxel][am]") {
+  for (const char* name : {"public_fandisk_large_N128_am32_p07.txt", "drilling_mcad_herringbone_gear_p06.txt",
+                           "public_homer_N128_am32_p02.txt", "drilling_homer_p08.txt"}) {
+    const AccessCase c = read_access_case(std::string(MTCS_TEST_DATA) + "/access_maps/" + name);
+    const Octree& tree = testing::case_octree(c);
+    for (AmMethod m : {AmMethod::ica, AmMethod::aica})
+      for (int memo : {0, 3, 6})
+        for (int sub : {0, 2}) {
+          AmOptions o = with(m);
+          o.memo_levels = memo;
+          o.subvoxel_levels = sub;
+          INFO(name << ' ' << to_string(m) << " memo " << memo << " sub " << sub);
+          const AccessMap map = compute_access_map(tree, c.pivot, c.tool, c.sphere, o);
+          CHECK(map.rows() == c.am);
+          CHECK(map.stats.memo_nodes == (memo == 0 ? 0u : tree.level_end(memo - 1)));
+        }
+  }
+}
