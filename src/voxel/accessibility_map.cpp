@@ -68,11 +68,12 @@ struct Prepared {
       if (!k.reach.contains(u)) return SphereVerdict::miss;
     }
     const Vec3 radial = w - x * d;
-    const double y = radial.norm();
+    const double y2 = radial.squaredNorm();
     if (!memo) {
-      const SphereVerdict v = detail::sphere_verdict(tool, x, y, in2[c.level], out2[c.level]);
+      const SphereVerdict v = detail::sphere_verdict(tool, x, y2, in2[c.level], out2[c.level]);
       if (v != SphereVerdict::corner) return v;
     }
+    const double y = std::sqrt(y2);
     const Vec3 size = stored ? Vec3::Constant(tree.edge(c.level)) : Vec3(box.max - box.min);
     return detail::refine_corner(tool, size, d, radial, x, y, c.full != 0);
   }

@@ -28,14 +28,22 @@ constexpr double kSphereMargin = 1e-9;
 
 enum class SphereVerdict : unsigned char { hit, miss, corner };
 
-// Direct test for one direction: x = axial coordinate of the centre, y = its distance from the
-// axis; hit when the sphere of squared radius in2 meets the tool, miss when the one of squared
-// radius out2 does not.
-inline SphereVerdict sphere_verdict(const Tool& tool, double x, double y, double in2, double out2) {
+// Direct test for one direction: x = axial coordinate of the centre, y2 = its squared distance
+// from the axis; hit when the sphere of squared radius in2 meets the tool, miss when the one of
+// squared radius out2 does not. The square root of y2 is taken only when the centre lies
+// outside a cylinder's radius but within reach of it.
+inline SphereVerdict sphere_verdict(const Tool& tool, double x, double y2, double in2, double out2) {
   bool maybe = false;
+  double y = -1;
   for (const ToolCylinder& c : tool) {
-    const double dx = std::max({c.a - x, x - c.b, 0.0}), dy = std::max(y - c.r, 0.0);
-    const double d2 = dx * dx + dy * dy;
+    const double dx = std::max({c.a - x, x - c.b, 0.0}), dx2 = dx * dx;
+    if (dx2 >= out2) continue;
+    double d2 = dx2;
+    if (y2 > c.r * c.r) {
+      if (y < 0) y = std::sqrt(y2);
+      const double dy = y - c.r;
+      d2 += dy * dy;
+    }
     if (d2 <= in2) return SphereVerdict::hit;
     maybe = maybe || d2 < out2;
   }
