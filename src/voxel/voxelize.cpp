@@ -33,7 +33,8 @@ int perturbed_side(double pu, double pv, double ru, double rv, double qu, double
 // let the exact tests decide), clamped to [-1, size].
 int index_below(const GridSpec& g, int axis, double x) {
   const double t = std::floor((x - g.origin[axis]) / g.voxel_size - 0.5);
-  return int(std::clamp(t, -1.0, double(g.size[axis])));
+  if (!(t >= -1)) return -1;  // also NaN
+  return t > g.size[axis] ? g.size[axis] : int(t);
 }
 
 }  // namespace
