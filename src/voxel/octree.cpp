@@ -53,7 +53,7 @@ Octree::Octree(const VoxelGrid& grid) : spec_(grid.spec) {
   for (int level = 0; level <= depth_; ++level) {
     const std::size_t end = nodes_.size();
     level_end_[std::size_t(level)] = std::uint32_t(end);
-    const int w = voxels_across(level + 1);
+    const int w = level < depth_ ? voxels_across(level + 1) : 0;  // child edge in voxels
     for (std::size_t n = begin; n < end && level < depth_; ++n) {
       if (nodes_[n].full) continue;
       nodes_[n].first_child = std::uint32_t(nodes_.size());
