@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
       mtcs::cli::add_distance_command(app),
       mtcs::cli::add_clearance_command(app),
       mtcs::cli::add_interfere_command(app),
+      mtcs::cli::add_access_map_command(app),
       mtcs::cli::add_hypervolume_command(app),
   };
   try {
