@@ -46,6 +46,8 @@ struct Channel {
 };
 
 // What does not change with the layout: the block, its faces, the heat input and the cavity.
+// Where heat_in covers a block face (a patch), that part of the face touches the melt, not the
+// air: it takes the flux and does not convect; the rest of the face has its FaceCondition.
 struct Setting {
   Box block;
   double conductivity = 0.03;             // W/(mm K): tool steel ~ 30 W/(m K)
