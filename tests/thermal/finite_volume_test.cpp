@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <catch2/catch.hpp>
+
+#include "rank_statistics.h"
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -73,30 +75,7 @@ struct Errors {
   double spearman = 0;                         // rank correlation with the reference
 };
 
-// Ranks 1..n, ties at their mean rank.
-std::vector<double> ranks(const std::vector<double>& v) {
-  std::vector<std::size_t> order(v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return v[a] < v[b]; });
-  std::vector<double> r(v.size());
-  for (std::size_t i = 0; i < order.size();) {
-    std::size_t j = i;
-    while (j + 1 < order.size() && v[order[j + 1]] == v[order[i]]) ++j;
-    for (std::size_t m = i; m <= j; ++m) r[order[m]] = 0.5 * double(i + j) + 1;
-    i = j + 1;
-  }
-  return r;
-}
 
-double pearson(const std::vector<double>& a, const std::vector<double>& b) {
-  const double n = double(a.size());
-  double ma = 0, mb = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) ma += a[i] / n, mb += b[i] / n;
-  double sab = 0, saa = 0, sbb = 0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    sab += (a[i] - ma) * (b[i] - mb), saa += (a[i] - ma) * (a[i] - ma), sbb += (b[i] - mb) * (b[i] - mb);
-  return sab / std::sqrt(saa * sbb);
-}
 
 Errors compare(const std::vector<double>& t, const Reference& ref) {
   Errors e;
@@ -109,7 +88,7 @@ Errors compare(const std::vector<double>& t, const Reference& ref) {
   const Summary a = summarize(t, ref.samples), b = summarize(ref.temperature, ref.samples);
   e.mean = a.mean - b.mean;
   e.std = a.std - b.std;
-  e.spearman = pearson(ranks(t), ranks(ref.temperature));
+  e.spearman = mtcs_test::spearman(t, ref.temperature);
   return e;
 }
 

@@ -3,6 +3,8 @@
 // 720 patch samples, and the limits of stiff and extreme inputs.
 #include <catch2/catch.hpp>
 
+#include "rank_statistics.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
@@ -73,32 +75,7 @@ struct Comparison {
   double rms = 0, max = 0, mean_diff = 0, std_diff = 0, spearman = 0;
 };
 
-std::vector<double> ranks(const std::vector<double>& v) {
-  std::vector<std::size_t> idx(v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) idx[i] = i;
-  std::sort(idx.begin(), idx.end(), [&](auto a, auto b) { return v[a] < v[b]; });
-  std::vector<double> r(v.size());
-  for (std::size_t i = 0; i < v.size();) {  // ties share their mean rank
-    std::size_t j = i;
-    while (j + 1 < v.size() && v[idx[j + 1]] == v[idx[i]]) ++j;
-    for (std::size_t k = i; k <= j; ++k) r[idx[k]] = 0.5 * double(i + j);
-    i = j + 1;
-  }
-  return r;
-}
 
-double pearson(const std::vector<double>& a, const std::vector<double>& b) {
-  const double n = double(a.size());
-  double ma = 0, mb = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) ma += a[i] / n, mb += b[i] / n;
-  double sab = 0, saa = 0, sbb = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    sab += (a[i] - ma) * (b[i] - mb);
-    saa += (a[i] - ma) * (a[i] - ma);
-    sbb += (b[i] - mb) * (b[i] - mb);
-  }
-  return sab / std::sqrt(saa * sbb);
-}
 
 double mean_of(const std::vector<double>& v) {
   double s = 0;
@@ -122,7 +99,7 @@ Comparison compare(const std::vector<double>& model, const std::vector<double>& 
   c.rms = std::sqrt(c.rms / double(ref.size()));
   c.mean_diff = mean_of(model) - mean_of(ref);
   c.std_diff = std_of(model) - std_of(ref);
-  c.spearman = pearson(ranks(model), ranks(ref));
+  c.spearman = mtcs_test::spearman(model, ref);
   return c;
 }
 
@@ -664,7 +641,7 @@ TEST_CASE("line sinks: ranking of 60 random layouts by patch std", "[.bench]") {
     for (std::size_t i = 0; i < s.size(); ++i) worst = std::max(worst, std::abs(s[i] - reference[i]));
     const char* tier = r.tier == Tier::T1 ? "T1" : r.tier == Tier::T2 ? "T2" : "T2d";
     std::printf("%s,%d,%d,%d,%.4f,%.4f,%.4f,%.3f\n", tier, r.elements, r.images, r.sample_images,
-                kendall_tau(s, reference), pearson(ranks(s), ranks(reference)), worst, ms);
+                kendall_tau(s, reference), mtcs_test::spearman(s, reference), worst, ms);
   }
 }
 // The best of many calls (the machine is shared: the best is the cost, the mean the load),
