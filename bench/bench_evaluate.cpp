@@ -21,11 +21,7 @@ namespace {
 
 using geometry::Vec3;
 
-int axis_of(mold::Face f) {
-  int k = 0;
-  mold::normal_of(f).cwiseAbs().maxCoeff(&k);
-  return k;
-}
+using mold::axis_of;
 
 // A circuit of `bores` axis-parallel legs from an inlet face to an outlet face; coordinates
 // uniform in the block's inner 80%.
@@ -36,8 +32,7 @@ mold::Circuit random_circuit(const mold::Scene& scene, opt::Rng& rng, int bores,
   auto inside = [&](int k) { return lo[k] + rng.uniform() * (hi[k] - lo[k]); };
   auto on_face = [&](mold::Face f) {
     Vec3 p(inside(0), inside(1), inside(2));
-    const int k = axis_of(f);
-    p[k] = mold::normal_of(f)[k] > 0 ? b.max[k] : b.min[k];
+    p[axis_of(f)] = mold::face_plane(b, f);
     return p;
   };
   const mold::Face in = spec.circuits.inlet_faces[std::size_t(rng.below(int(spec.circuits.inlet_faces.size())))];

@@ -18,13 +18,7 @@ bool contains(const std::vector<Face>& faces, Face f) {
 // Distance from p to the nearest of the given faces of the block's bounding box.
 double off_faces(const Box& b, const Vec3& p, const std::vector<Face>& faces) {
   double best = std::numeric_limits<double>::infinity();
-  for (const Face f : faces) {
-    const Vec3 n = normal_of(f);
-    int k = 0;
-    n.cwiseAbs().maxCoeff(&k);
-    const double plane = n[k] > 0 ? b.max[k] : b.min[k];
-    best = std::min(best, std::abs(p[k] - plane));
-  }
+  for (const Face f : faces) best = std::min(best, std::abs(p[axis_of(f)] - face_plane(b, f)));
   return best;
 }
 
@@ -44,11 +38,7 @@ std::vector<Vec3> routed_waypoints(const Scene& scene, const Circuit& circuit) {
   // Axes no allowed face lets a drill run along: with axis-parallel holes, a circuit keeps
   // its inlet's coordinate along them.
   std::array<bool, 3> drillable{false, false, false};
-  for (const Face f : drill.allowed_faces) {
-    int k = 0;
-    normal_of(f).cwiseAbs().maxCoeff(&k);
-    drillable[std::size_t(k)] = true;
-  }
+  for (const Face f : drill.allowed_faces) drillable[std::size_t(axis_of(f))] = true;
   std::vector<Vec3> pts;
   for (Vec3 p : circuit.waypoints) {
     if (drill.axis_parallel && !pts.empty())

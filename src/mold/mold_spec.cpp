@@ -82,8 +82,7 @@ MeshSource parse_mesh(const YamlReader& r, const YAML::Node& file, const YAML::N
 
 // The two axes along a face's plane, in x, y, z order.
 std::array<int, 2> plane_axes(Face f) {
-  int k = 0;
-  normal_of(f).cwiseAbs().maxCoeff(&k);
+  const int k = axis_of(f);
   return k == 0 ? std::array{1, 2} : k == 1 ? std::array{0, 2} : std::array{0, 1};
 }
 
@@ -101,10 +100,9 @@ Box parse_patch(const YamlReader& r, const YAML::Node& n, const Box& block, Face
   face = parse_face(r, n["face"], path + ".face");
   const auto lo = parse_vec2(r, n["min"], path + ".min"), hi = parse_vec2(r, n["max"], path + ".max");
   const auto axes = plane_axes(face);
-  int k = 0;
-  normal_of(face).cwiseAbs().maxCoeff(&k);
+  const int k = axis_of(face);
   Box b;
-  b.min[k] = b.max[k] = normal_of(face)[k] > 0 ? block.max[k] : block.min[k];
+  b.min[k] = b.max[k] = face_plane(block, face);
   const char* names = "xyz";
   for (int m = 0; m < 2; ++m) {
     const int a = axes[std::size_t(m)];
@@ -395,6 +393,13 @@ Vec3 normal_of(Face f) {
     case Face::NegZ: return -Vec3::UnitZ();
   }
   return Vec3::UnitZ();
+}
+
+int axis_of(Face f) { return int(f) / 2; }  // Face lists +x, -x, +y, -y, +z, -z
+
+double face_plane(const Box& block, Face f) {
+  const int k = axis_of(f);
+  return normal_of(f)[k] > 0 ? block.max[k] : block.min[k];
 }
 
 Face face_of_normal(const Vec3& n) {

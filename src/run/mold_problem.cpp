@@ -10,20 +10,8 @@ namespace mtcs::run {
 
 using geometry::Vec3;
 
-namespace {
-
-int axis_of(mold::Face f) {
-  int k = 0;
-  mold::normal_of(f).cwiseAbs().maxCoeff(&k);
-  return k;
-}
-
-double face_plane(const geometry::Box& b, mold::Face f) {
-  const int k = axis_of(f);
-  return mold::normal_of(f)[k] > 0 ? b.max[k] : b.min[k];
-}
-
-}  // namespace
+using mold::axis_of;
+using mold::face_plane;
 
 MoldProblem::MoldProblem(const eval::Pipeline& pipeline, std::vector<double> weights, MutationRates rates,
                          std::optional<mold::PenaltyVariant> penalty)

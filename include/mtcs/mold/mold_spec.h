@@ -20,6 +20,8 @@ enum class Face { PosX, NegX, PosY, NegY, PosZ, NegZ };
 std::string to_string(Face f);
 Vec3 normal_of(Face f);
 Face face_of_normal(const Vec3& n);  // the axis direction closest to n
+int axis_of(Face f);                 // 0, 1, 2 for x, y, z
+double face_plane(const Box& block, Face f);  // the face's coordinate along its axis
 
 // A length that is either absolute (mm) or a multiple of the bore diameter ("2.0D").
 struct Length {
