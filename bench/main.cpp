@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 
+#include "bench_access_map.h"
 #include "bench_clearance.h"
 #include "bench_distance.h"
 #include "bench_evaluate.h"
@@ -180,6 +181,29 @@ int run(int argc, char** argv) {
   thermal->add_option("--repeat", to->repeat, "timed solves per layout (median)")->capture_default_str()->check(CLI::Range(1, 1000));
   thermal->add_flag("--json", to->json, "one JSON object instead of CSV");
 
+  auto ao = std::make_shared<AccessMapBenchOptions>();
+  CLI::App* access = app.add_subcommand(
+      "access-map",
+      "Accessibility maps: AICA, ICA and the exact CheckBox on every case file (*.txt) of a folder\n"
+      "in one run; per method the median and p90 ms per map (best of --repeat runs; thread CPU time\n"
+      "on one thread, wall time on more), the ICA efficiency (share of node tests needing no exact\n"
+      "CheckBox) and the cells differing from CheckBox. CSV on stdout:\n"
+      "  method,cases,median_ms,p90_ms,node_tests,checkbox_calls,ica_efficiency,differing_cells,\n"
+      "  median_speedup_vs_checkbox\n"
+      "or --json: {median_speedup_vs_checkbox (AICA), ica_efficiency (AICA), differing_cells (AICA\n"
+      "and ICA), methods: [...]}. Meshes: the case's `mesh` line under --mesh-root, else its file\n"
+      "name under --mesh-root; without --mesh-root as `mtcs access-map --case` finds them.\n"
+      "Example: mtcs bench access-map --cases tests/data/access_maps --mesh-root tests/data/meshes");
+  access->add_option("--cases", ao->cases, "folder of case files")->required()->check(CLI::ExistingDirectory);
+  access->add_option("--mesh-root", ao->mesh_root, "folder the meshes are resolved against")->check(CLI::ExistingDirectory);
+  access->add_option("--threads", ao->threads, "threads per map")->capture_default_str()->check(CLI::Range(1, 256));
+  access->add_option("--repeat", ao->repeat, "timed runs per map (best)")->capture_default_str()->check(CLI::Range(1, 1000));
+  access->add_option_function<std::vector<int>>(
+            "--am", [ao](const std::vector<int>& v) { ao->am_rows = v.at(0), ao->am_cols = v.at(1); },
+            "ROWS,COLS: sphere grid instead of the cases' own")
+      ->delimiter(',')->expected(2)->check(CLI::Range(1, 4096));
+  access->add_flag("--json", ao->json, "one JSON object instead of CSV");
+
   for (CLI::App* s : {dist, sweep, stiff}) {
     s->add_option("--pairs", opt->pairs, "CSV of cylinder pairs with dist_lo, dist_hi")->required()->check(CLI::ExistingFile);
     s->add_option("--repeat", opt->repeat, "queries per timed batch")->capture_default_str()->check(CLI::Range(1, 1000000));
@@ -194,6 +218,7 @@ int run(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
+  if (access->parsed()) return bench_access_map(*ao);
   if (thermal->parsed()) return bench_thermal(*to);
   if (clearance->parsed()) return bench_clearance(co->meshes, co->cases, co->repeat, co->builds, co->bound_fraction);
   if (interfere->parsed()) return bench_interfere(io_opt->cases, io_opt->meshes, io_opt->repeat);

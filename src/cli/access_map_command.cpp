@@ -1,16 +1,138 @@
 // mtcs access-map: the accessibility map of a case file (shared/cases/access_maps format),
-// written back as the same file with its `collisions` and `am` computed.
+// written back as the same file with its `collisions` and `am` computed; or of a user's mesh,
+// pivot and tool (a bore or cylinders from YAML), written as CSV of directions or a PNG.
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "mtcs/cli/commands.h"
 #include "mtcs/io/atomic_file.h"
+#include "mtcs/io/yaml_reader.h"
+#include "mtcs/mesh/mesh_io.h"
 #include "mtcs/voxel/access_case.h"
+#include "mtcs/voxel/part_map.h"
+#include "python_plot.h"
 
 namespace mtcs::cli {
+
+namespace {
+
+// A bad command-line value: the message names the option.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// `n` finite numbers separated by commas, e.g. "1,2.5,-3".
+std::vector<double> numbers(const std::string& text, std::size_t n, const std::string& option, const std::string& form) {
+  std::vector<double> v;
+  std::stringstream ss(text);
+  for (std::string item; std::getline(ss, item, ',');) {
+    std::size_t used = 0;
+    double x = NAN;
+    try {
+      x = std::stod(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != item.size() || !std::isfinite(x)) throw UsageError(option + ": '" + item + "' is not a finite number (expected " + form + ")");
+    v.push_back(x);
+  }
+  if (v.size() != n || (!text.empty() && text.back() == ','))
+    throw UsageError(option + ": expected " + form + ", got '" + text + "'");
+  return v;
+}
+
+// A tool file: a YAML list of cylinders {a, b, r} (mm along the axis from the pivot, radius).
+voxel::Tool read_tool(const std::string& path) {
+  const io::YamlReader reader(path);
+  const YAML::Node root = reader.load();
+  reader.expect_sequence(root, "tool");
+  voxel::Tool tool;
+  for (std::size_t i = 0; i < root.size(); ++i) {
+    const std::string at = io::indexed("tool", i);
+    reader.expect_map(root[i], at, {"a", "b", "r"});
+    voxel::ToolCylinder c;
+    c.a = reader.number(root[i]["a"], at + ".a", 0, 1e9);
+    c.b = reader.number(root[i]["b"], at + ".b", c.a, 1e9);
+    c.r = reader.number(root[i]["r"], at + ".r", 0, 1e9);
+    tool.push_back(c);
+  }
+  if (tool.empty()) reader.fail(root, "tool", "no cylinder");
+  return tool;
+}
+
+struct PartOptions {
+  std::string mesh, pivot, bore, tool, am = "64,64", out, method = "aica";
+  int grid = 128, threads = 0;
+};
+
+// The user form: mesh, pivot, tool -> share of free directions, and the map as CSV or PNG.
+int run_part_map(const PartOptions& o) {
+  const std::vector<double> p = numbers(o.pivot, 3, "--pivot", "x,y,z");
+  const std::vector<double> am = numbers(o.am, 2, "--am", "rows,cols");
+  if (am[0] != std::floor(am[0]) || am[1] != std::floor(am[1]) || am[0] < 1 || am[1] < 1 || am[0] > 4096 || am[1] > 4096)
+    throw UsageError("--am: rows and cols must be whole numbers from 1 to 4096, got '" + o.am + "'");
+  if (o.bore.empty() == o.tool.empty()) throw UsageError("give exactly one of --bore radius,length and --tool TOOL.yaml");
+  voxel::Tool tool;
+  if (!o.bore.empty()) {
+    const std::vector<double> b = numbers(o.bore, 2, "--bore", "radius,length");
+    if (b[0] < 0 || b[1] < 0) throw UsageError("--bore: radius and length must be >= 0, got '" + o.bore + "'");
+    tool = voxel::bore_tool(b[0], b[1]);
+  } else {
+    tool = read_tool(o.tool);
+  }
+  if (const std::string problem = voxel::tool_problem(tool); !problem.empty()) throw UsageError("tool: " + problem);
+  const std::string ext = std::filesystem::path(o.out).extension().string();
+  if (!o.out.empty() && ext != ".csv" && ext != ".png") throw UsageError("--out: expected a .csv or .png file, got '" + o.out + "'");
+
+  mesh::TriangleMesh part;
+  try {
+    part = mesh::read_mesh(o.mesh);
+  } catch (const mesh::MeshError& e) {
+    throw io::InputError(o.mesh, 0, 0, "mesh", e.what());
+  }
+  if (const std::string problem = mesh::closed_mesh_problem(part); !problem.empty())
+    throw io::InputError(o.mesh, 0, 0, "mesh", "not a closed mesh: " + problem);
+
+  voxel::AmOptions options;
+  options.threads = o.threads;
+  options.method = voxel::parse_am_method(o.method);
+  const voxel::SphereGrid sphere{int(am[0]), int(am[1])};
+  const voxel::Vec3 pivot(p[0], p[1], p[2]);
+  const voxel::PartMap r = voxel::part_access_map(part, o.grid, pivot, tool, sphere, options);
+  if (r.pivot_inside) throw UsageError("--pivot " + o.pivot + " lies inside the part (give a point outside it)");
+
+  const long free = long(r.map.cells.size()) - r.map.collisions();
+  std::cout << "free directions: " << free << " of " << r.map.cells.size() << " (" << std::fixed << std::setprecision(2)
+            << 100.0 * double(free) / double(r.map.cells.size()) << " %); grid " << o.grid << "^3 of " << std::setprecision(6)
+            << r.grid.voxel_size << " mm voxels, " << r.solid_voxels << " solid\n";
+  if (o.out.empty()) return 0;
+
+  const bool png = ext == ".png";
+  const std::string csv_path = png ? o.out + ".csv" : o.out;
+  io::AtomicFile file(csv_path);
+  file.stream() << "phi,gamma,dx,dy,dz,free\n" << std::setprecision(17);
+  for (int i = 0; i < sphere.rows; ++i)
+    for (int j = 0; j < sphere.cols; ++j) {
+      const voxel::Vec3 d = sphere.direction(i, j);
+      file.stream() << (i + 0.5) * 180.0 / sphere.rows << ',' << (j + 0.5) * 360.0 / sphere.cols << ',' << d.x() << ',' << d.y()
+                    << ',' << d.z() << ',' << (r.map.collides(i, j) ? 0 : 1) << '\n';
+    }
+  file.commit();
+  if (png) {
+    const std::string title = std::filesystem::path(o.mesh).filename().string() + ", pivot " + o.pivot;
+    if (render_plot("plot_access_map.py", {csv_path, o.out, title}, std::cerr)) std::filesystem::remove(csv_path);
+  }
+  return 0;
+}
+
+}  // namespace
 
 Command add_access_map_command(CLI::App& app) {
   struct Options {
@@ -18,22 +140,65 @@ Command add_access_map_command(CLI::App& app) {
     int threads = 0;
   };
   auto opt = std::make_shared<Options>();
+  auto part = std::make_shared<PartOptions>();
   CLI::App* sub = app.add_subcommand(
       "access-map",
       "Accessibility map of a tool (coaxial solid cylinders) pivoting at a point against the solid\n"
-      "voxels of a part: which directions of a sphere grid touch no voxel (1 = collision).\n"
-      "Reads a case file (format: tests/data/access_maps/README.md) and writes it back with its\n"
-      "`collisions` and `am` lines computed. Every method gives the exact map.");
+      "voxels of a part: which directions of a sphere grid touch no voxel. Every method gives the\n"
+      "exact map. Two forms:\n"
+      "  --case FILE: a case file (format: tests/data/access_maps/README.md), written back to --out\n"
+      "    with its `collisions` and `am` lines computed (1 = collision).\n"
+      "  MESH --pivot x,y,z (--bore radius,length | --tool TOOL.yaml): the closed mesh voxelised on\n"
+      "    a grid of N^3 cubic voxels fitted to its bounding box (voxel size = largest extent /\n"
+      "    (N - 2), the box centred, so one empty layer pads every side); a voxel is solid iff its\n"
+      "    centre is strictly inside. The bore is one cylinder from the pivot (radius, length); a\n"
+      "    tool file is a YAML list of cylinders {a, b, r}: from a to b along the axis from the\n"
+      "    pivot, radius r (mesh units). Prints the share of free directions; --out writes the\n"
+      "    map as CSV (phi,gamma,dx,dy,dz,free: phi from +z and gamma about z in degrees, cell\n"
+      "    centres, unit direction, free = 1 when the tool touches no solid voxel) or as a PNG\n"
+      "    heat map (python3 with matplotlib). The pivot must lie outside the part.");
   sub->footer(
       "Examples:\n"
       "  mtcs access-map --case shared/cases/access_maps/drilling_homer_p00.txt --out am.txt\n"
-      "  mtcs access-map --case case.txt --mesh part.off --out am.txt --method checkbox --threads 1");
-  sub->add_option("--case", opt->case_file, "case file")->required()->check(CLI::ExistingFile);
+      "  mtcs access-map --case case.txt --mesh part.off --out am.txt --method checkbox --threads 1\n"
+      "  mtcs access-map part.off --pivot 0,0,30 --bore 4,60 --grid 128 --am 64,64 --out am.png\n"
+      "  mtcs access-map part.off --pivot 0,0,30 --tool tool.yaml --out am.csv\n"
+      "    (tool.yaml: [{a: 0, b: 40, r: 2}, {a: 40, b: 80, r: 10}])");
+  sub->add_option("mesh", part->mesh, "closed mesh (OFF, STL, OBJ, PLY) for the user form")->check(CLI::ExistingFile);
+  sub->add_option("--case", opt->case_file, "case file")->check(CLI::ExistingFile);
   sub->add_option("--mesh", opt->mesh, "mesh to use instead of the case's `mesh` line");
-  sub->add_option("--out", opt->out, "output case file (written whole or not at all)")->required();
+  sub->add_option("--out", opt->out, "--case: output case file; MESH: am.csv or am.png (written whole or not at all)");
+  sub->add_option("--pivot", part->pivot, "x,y,z: the point the tool pivots about (MESH form)");
+  sub->add_option("--bore", part->bore, "radius,length: a straight bore from the pivot (MESH form)");
+  sub->add_option("--tool", part->tool, "YAML list of cylinders {a, b, r} (MESH form)")->check(CLI::ExistingFile);
+  sub->add_option("--grid", part->grid, "voxels per side of the cubic grid (MESH form)")->capture_default_str()->check(CLI::Range(3, 1024));
+  sub->add_option("--am", part->am, "rows,cols of the sphere grid (MESH form)")->capture_default_str();
   sub->add_option("--method", opt->method, "aica (default), ica or checkbox")->check(CLI::IsMember({"aica", "ica", "checkbox"}));
   sub->add_option("--threads", opt->threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
-  return {sub, [opt] {
+  return {sub, [opt, part] {
+            if (opt->case_file.empty() == part->mesh.empty()) {
+              std::cerr << "mtcs: access-map: give either --case FILE or a MESH (see mtcs access-map --help)\n";
+              return 2;
+            }
+            if (!part->mesh.empty()) {
+              if (!opt->mesh.empty()) {
+                std::cerr << "mtcs: access-map: --mesh belongs to the --case form\n";
+                return 2;
+              }
+              part->out = opt->out;
+              part->threads = opt->threads;
+              part->method = opt->method;
+              try {
+                return run_part_map(*part);
+              } catch (const UsageError& e) {
+                std::cerr << "mtcs: access-map: " << e.what() << "\n";
+                return 2;
+              }
+            }
+            if (opt->out.empty() || !part->pivot.empty() || !part->bore.empty() || !part->tool.empty()) {
+              std::cerr << "mtcs: access-map: --case needs --out and takes no --pivot, --bore or --tool\n";
+              return 2;
+            }
             const voxel::AccessCase c = voxel::read_access_case(opt->case_file);
             voxel::AmOptions options;
             options.method = voxel::parse_am_method(opt->method);

@@ -1,17 +1,15 @@
-// Hidden timing run (not part of the suite): AICA, ICA and CheckBox on every public case in one
-// run, on one thread; per method the median and p90 ms per map, the ICA efficiency and the cells
-// differing from CheckBox; then 64 x 64 drilling maps on 1 and 2 threads.
-//   ./build/tests/voxel_tests "[.am_timing]"      (MTCS_AM_TIMING_CSV=FILE writes per-case rows)
+// Hidden timing runs (not part of the suite); the timing over all public cases is
+// `mtcs bench access-map --cases tests/data/access_maps --mesh-root tests/data/meshes`
+// (bench/bench_access_map.cpp, whose timing helpers these runs share).
 
 #include <catch2/catch.hpp>
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
-#include <fstream>
 #include <random>
 
+#include "bench/bench_access_map.h"
 #include "mtcs/voxel/accessibility_map.h"
 #include "voxel/case_files.h"
 
@@ -20,112 +18,13 @@ using namespace mtcs::voxel;
 
 namespace {
 
-// CPU time of the calling thread: on one thread the map runs on it (a task_arena of one slot),
-// and other processes on a loaded machine do not count. Wall time for more threads.
-double thread_ms() {
-  timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
-}
 double wall_ms() { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
-// The best of `reps` runs (ms).
 double time_map(const Octree& tree, const AccessCase& c, const SphereGrid& sphere, const AmOptions& o, AccessMap* out, int reps) {
-  double best = 1e300;
-  const auto clock = o.threads == 1 ? thread_ms : wall_ms;
-  for (int r = 0; r < reps; ++r) {
-    const double t0 = clock();
-    AccessMap m = compute_access_map(tree, c.pivot, c.tool, sphere, o);
-    const double ms = clock() - t0;
-    best = std::min(best, ms);
-    if (out) *out = std::move(m);
-  }
-  return best;
-}
-
-double quantile(std::vector<double> v, double q) {
-  std::sort(v.begin(), v.end());
-  const double pos = q * double(v.size() - 1);
-  const std::size_t i = std::size_t(pos);
-  return i + 1 < v.size() ? v[i] + (pos - double(i)) * (v[i + 1] - v[i]) : v[i];
+  return bench::time_access_map(tree, c.pivot, c.tool, sphere, o, out, reps);
 }
 
 }  // namespace
-
-TEST_CASE("access-map timing over all public cases", "[.am_timing]") {
-  const int reps = std::getenv("MTCS_AM_REPS") ? std::atoi(std::getenv("MTCS_AM_REPS")) : 5;
-  const char* csv_path = std::getenv("MTCS_AM_TIMING_CSV");
-  std::ofstream csv;
-  if (csv_path) {
-    csv.open(csv_path);
-    csv << "case,method,threads,am,ms,node_tests,checkbox_calls,ica_efficiency,differing_cells\n";
-  }
-  const AmMethod methods[] = {AmMethod::aica, AmMethod::ica, AmMethod::checkbox};
-  std::map<AmMethod, std::vector<double>> ms;
-  std::map<AmMethod, std::uint64_t> tests, boxes, differing;
-  std::vector<double> speedup;
-  for (const auto& path : testing::case_paths()) {
-    const AccessCase c = read_access_case(path);
-    const Octree& tree = testing::case_octree(c);
-    AccessMap reference;
-    std::map<AmMethod, double> t;
-    for (AmMethod m : {AmMethod::checkbox, AmMethod::ica, AmMethod::aica}) {
-      AmOptions o;
-      o.method = m;
-      o.threads = 1;
-      if (const char* memo = std::getenv("MTCS_AM_MEMO_LEVELS")) o.memo_levels = std::atoi(memo);
-      if (const char* v = std::getenv("MTCS_AM_SUBVOXEL_LEVELS")) o.subvoxel_levels = std::atoi(v);
-      AccessMap map;
-      t[m] = time_map(tree, c, c.sphere, o, &map, reps);
-      if (m == AmMethod::checkbox) reference = map;
-      std::uint64_t diff = 0;
-      for (std::size_t k = 0; k < map.cells.size(); ++k) diff += map.cells[k] != reference.cells[k];
-      ms[m].push_back(t[m]);
-      tests[m] += map.stats.node_tests;
-      boxes[m] += map.stats.checkbox_calls;
-      differing[m] += diff;
-      if (csv_path)
-        csv << std::filesystem::path(path).stem().string() << ',' << to_string(m) << ",1,32x32," << t[m] << ',' << map.stats.node_tests << ','
-            << map.stats.checkbox_calls << ',' << map.stats.ica_efficiency() << ',' << diff << '\n';
-    }
-    speedup.push_back(t[AmMethod::checkbox] / t[AmMethod::aica]);
-  }
-  std::printf("method    median_ms  p90_ms  node_tests  checkbox_calls  ica_efficiency  differing_cells\n");
-  for (AmMethod m : methods) {
-    const double eff = 1.0 - double(boxes[m]) / double(tests[m]);
-    std::printf("%-9s %9.3f %7.3f %11llu %15llu %14.4f %16llu\n", to_string(m).c_str(), quantile(ms[m], 0.5), quantile(ms[m], 0.9),
-                (unsigned long long)tests[m], (unsigned long long)boxes[m], eff, (unsigned long long)differing[m]);
-  }
-  std::printf("AICA speed-up over CheckBox per case: median %.2fx, p10 %.2fx; ratio of medians %.2fx\n", quantile(speedup, 0.5),
-              quantile(speedup, 0.1), quantile(ms[AmMethod::checkbox], 0.5) / quantile(ms[AmMethod::aica], 0.5));
-
-  // 64 x 64 drilling maps on the 128^3 grids, 1 and 2 threads.
-  for (int threads : {1, 2}) {
-    std::map<AmMethod, std::vector<double>> dms;
-    for (const auto& path : testing::case_paths()) {
-      if (std::filesystem::path(path).filename().string().rfind("drilling_", 0) != 0) continue;
-      const AccessCase c = read_access_case(path);
-      const Octree& tree = testing::case_octree(c);
-      for (AmMethod m : methods) {
-        AmOptions o;
-        o.method = m;
-        o.threads = threads;
-        if (const char* memo = std::getenv("MTCS_AM_MEMO_LEVELS")) o.memo_levels = std::atoi(memo);
-        if (const char* v = std::getenv("MTCS_AM_SUBVOXEL_LEVELS")) o.subvoxel_levels = std::atoi(v);
-      if (const char* v = std::getenv("MTCS_AM_SUBVOXEL_LEVELS")) o.subvoxel_levels = std::atoi(v);
-        AccessMap map;
-        const double t = time_map(tree, c, SphereGrid{64, 64}, o, &map, threads == 1 ? reps : 3 * reps);
-        dms[m].push_back(t);
-        if (csv_path)
-          csv << std::filesystem::path(path).stem().string() << ',' << to_string(m) << ',' << threads << ",64x64," << t << ','
-              << map.stats.node_tests << ',' << map.stats.checkbox_calls << ',' << map.stats.ica_efficiency() << ",\n";
-      }
-    }
-    for (AmMethod m : methods)
-      std::printf("drilling 64x64, %d thread(s), %-8s median %.3f ms, p90 %.3f ms, max %.3f ms\n", threads, to_string(m).c_str(),
-                  quantile(dms[m], 0.5), quantile(dms[m], 0.9), quantile(dms[m], 1.0));
-  }
-}
 
 // For profilers: AICA 64 x 64 on every drilling case, one thread, five times.
 TEST_CASE("access-map profile loop", "[.am_profile]") {

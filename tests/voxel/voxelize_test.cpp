@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "mtcs/mesh/triangle_mesh.h"
+#include "mtcs/voxel/part_map.h"
 #include "voxel/case_files.h"
 
 using namespace mtcs;
@@ -93,4 +94,37 @@ TEST_CASE("empty and full grids give empty and one-node octrees", "[voxel]") {
   REQUIRE(full.nodes().size() == 1);
   CHECK(full.nodes()[0].full == 1);
   CHECK(full.solid_voxels() == 64);
+}
+
+// The user form's grid (mtcs access-map MESH): N^3 voxels of (largest extent) / (N - 2), the
+// bounding box centred, so a cube fills exactly (N - 2)^3 voxels.
+TEST_CASE("part_grid pads the part by one voxel; part_access_map refuses a pivot inside", "[voxel]") {
+  const Box cube{Vec3(-2, -1, 3), Vec3(2, 3, 7)};  // 4 mm on every axis
+  const mesh::TriangleMesh part = mesh::box_mesh(cube);
+  const GridSpec g = part_grid(part, 10);
+  CHECK(g.voxel_size == 0.5);
+  CHECK(g.origin.isApprox(Vec3(-2.5, -1.5, 2.5)));
+  CHECK(voxelize(part, g).count() == 8u * 8u * 8u);
+  // A flat box: the grid is a cube about the box's centre (even extents keep faces between
+  // centre planes; an odd one would put centres on the faces, which are not inside).
+  const Box slab{Vec3(0, 0, 0), Vec3(8, 4, 2)};
+  const GridSpec s = part_grid(mesh::box_mesh(slab), 10);
+  CHECK(s.voxel_size == 1.0);
+  CHECK(s.origin.isApprox(Vec3(-1, -3, -4)));
+  CHECK(voxelize(mesh::box_mesh(slab), s).count() == 8u * 4u * 2u);
+  CHECK_THROWS_AS(part_grid(part, 2), std::invalid_argument);
+
+  const Tool bore = bore_tool(0.5, 20);
+  CHECK(tool_problem(bore).empty());
+  CHECK_FALSE(tool_problem(Tool{}).empty());
+  CHECK_FALSE(tool_problem(Tool{{5, 1, 1}}).empty());
+  CHECK_FALSE(tool_problem(Tool{{0, 1, -1}}).empty());
+  // Inside the part, on its surface (the closed box of a solid voxel), and just outside.
+  CHECK(part_access_map(part, 10, Vec3(0, 1, 5), bore, SphereGrid{4, 4}).pivot_inside);
+  CHECK(part_access_map(part, 10, Vec3(2, 1, 5), bore, SphereGrid{4, 4}).pivot_inside);
+  const PartMap out = part_access_map(part, 10, Vec3(0, 1, 7.75), bore, SphereGrid{4, 4});
+  REQUIRE_FALSE(out.pivot_inside);
+  CHECK(out.solid_voxels == 512u);
+  // Rows 0-1 point up (free), rows 2-3 down into the top face 0.75 mm below: every cell collides.
+  CHECK(out.map.rows() == std::vector<std::string>{"0000", "0000", "1111", "1111"});
 }

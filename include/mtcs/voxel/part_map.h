@@ -1,0 +1,39 @@
+#pragma once
+// The accessibility map of a user's part, without a case file: the mesh voxelised on a cubic
+// grid of n^3 voxels fitted to its bounding box, and the tools users name (a straight bore, or
+// coaxial cylinders).
+//
+// Grid convention: voxel size = (largest bounding-box extent) / (n - 2), the bounding box centred
+// in the grid, so at least one empty voxel layer pads every side of the part.
+
+#include <string>
+
+#include "mtcs/mesh/triangle_mesh.h"
+#include "mtcs/voxel/accessibility_map.h"
+#include "mtcs/voxel/voxel_grid.h"
+
+namespace mtcs::voxel {
+
+// n in [3, 4096]; throws std::invalid_argument otherwise or for an empty or flat-in-all-axes mesh.
+GridSpec part_grid(const mesh::TriangleMesh& part, int n);
+
+// A straight bore drilled from the pivot: one cylinder 0 <= t <= length of the given radius.
+Tool bore_tool(double radius, double length);
+
+// What is wrong with a tool, or "" when nothing is: no cylinder, non-finite numbers, a < 0,
+// b < a, r < 0.
+std::string tool_problem(const Tool& tool);
+
+struct PartMap {
+  AccessMap map;
+  GridSpec grid;
+  std::size_t solid_voxels = 0;
+  bool pivot_inside = false;  // in the closed box of a solid voxel or inside the mesh: no map
+};
+
+// Voxelises `part` (closed, checked by the caller) on part_grid(part, n) and computes the map
+// of `tool` pivoting at `pivot` on `sphere`, unless the pivot is inside the part.
+PartMap part_access_map(const mesh::TriangleMesh& part, int n, const Vec3& pivot, const Tool& tool, const SphereGrid& sphere,
+                        const AmOptions& options = {});
+
+}  // namespace mtcs::voxel
