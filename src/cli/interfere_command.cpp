@@ -6,15 +6,14 @@
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
-#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <tuple>
 
 #include "mtcs/cli/commands.h"
 #include "mtcs/io/atomic_file.h"
 #include "mtcs/io/input_error.h"
 #include "mtcs/mesh/interference.h"
+#include "mtcs/mesh/interference_view.h"
 #include "mtcs/mesh/mesh_check.h"
 #include "mtcs/mesh/mesh_io.h"
 #include "mtcs/mold/layout_io.h"
@@ -36,34 +35,6 @@ TriangleMesh load_solid(const std::string& path) {
   if (const auto check = mesh::check_mesh(m); !check.ok())
     throw io::InputError(path, 0, 0, "", "not the closed, oriented, self-intersection-free surface of a solid: " + check.message());
   return m;
-}
-
-// Both meshes in one PLY: A grey, B blue, triangles in contact yellow, interfering ones red;
-// the face quality says the same as a number (0 free, 1 contact, 2 interfering).
-void write_report_ply(const std::string& path, const TriangleMesh& a, const TriangleMesh& b,
-                      const mesh::InterferenceReport& r) {
-  TriangleMesh both = a;
-  const int offset = int(a.vertices.size());
-  both.vertices.insert(both.vertices.end(), b.vertices.begin(), b.vertices.end());
-  for (auto t : b.triangles) both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
-  std::vector<int> state(both.triangles.size(), 0);
-  for (const auto& p : r.pairs) {
-    const int s = p.penetrating ? 2 : 1;
-    state[std::size_t(p.a)] = std::max(state[std::size_t(p.a)], s);
-    state[a.triangles.size() + std::size_t(p.b)] = std::max(state[a.triangles.size() + std::size_t(p.b)], s);
-  }
-  mesh::FaceAttributes faces;
-  for (std::size_t t = 0; t < both.triangles.size(); ++t) {
-    const bool in_a = t < a.triangles.size();
-    faces.colors.push_back(state[t] == 2 ? std::array<unsigned char, 3>{220, 30, 30}
-                           : state[t] == 1 ? std::array<unsigned char, 3>{240, 200, 40}
-                           : in_a ? std::array<unsigned char, 3>{170, 170, 170}
-                                  : std::array<unsigned char, 3>{90, 140, 220});
-    faces.quality.push_back(state[t]);
-  }
-  io::AtomicFile file(path);
-  mesh::write_ply(file.stream(), both, faces);
-  file.commit();
 }
 
 // A layout's bores against the mold (--layout): the run module's report, as text or JSON.
@@ -163,15 +134,12 @@ Command add_interfere_command(CLI::App& app) {
             const double tolerance = o->touch_tolerance >= 0 ? o->touch_tolerance : 1e-9 * diagonal;
             const auto report = mesh::interfere(a, b, tolerance);
             const auto pa = mesh::split_parts(a), pb = mesh::split_parts(b);
-            if (!o->out.empty()) write_report_ply(o->out, a, b, report);
-
-            // Pairs per (solid, face) of A and (solid, face) of B: all, and penetrating.
-            std::map<std::tuple<int, int, int, int>, std::pair<int, int>> groups;
-            for (const auto& p : report.pairs) {
-              auto& g = groups[{pa.solid_of[std::size_t(p.a)], pa.face_of[std::size_t(p.a)], pb.solid_of[std::size_t(p.b)],
-                                pb.face_of[std::size_t(p.b)]}];
-              ++g.first, g.second += p.penetrating;
+            if (!o->out.empty()) {
+              io::AtomicFile file(o->out);
+              mesh::write_interference_ply(file.stream(), a, b, report);
+              file.commit();
             }
+            const auto groups = mesh::group_by_face(report, pa, pb);
             auto point = [](const geometry::Vec3& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); };
             if (o->json) {
               nlohmann::json j;
@@ -190,9 +158,9 @@ Command add_interfere_command(CLI::App& app) {
                                       {"face_b", pb.face_of[std::size_t(p.b)]}, {"penetrating", p.penetrating},
                                       {"coplanar", p.x.coplanar}, {"segment", {point(p.x.p), point(p.x.q)}}});
               j["groups"] = nlohmann::json::array();
-              for (const auto& [k, v] : groups)
-                j["groups"].push_back({{"solid_a", std::get<0>(k)}, {"face_a", std::get<1>(k)}, {"solid_b", std::get<2>(k)},
-                                       {"face_b", std::get<3>(k)}, {"pairs", v.first}, {"penetrating", v.second}});
+              for (const auto& g : groups)
+                j["groups"].push_back({{"solid_a", g.solid_a}, {"face_a", g.face_a}, {"solid_b", g.solid_b},
+                                       {"face_b", g.face_b}, {"pairs", g.pairs}, {"penetrating", g.penetrating}});
               std::cout << j.dump(1) << '\n';
               return 0;
             }
@@ -206,9 +174,8 @@ Command add_interfere_command(CLI::App& app) {
             for (int s : report.solids_of_b_inside_a) std::printf("solid %d of B lies inside A\n", s);
             if (report.pairs.empty() && !report.interferes) std::printf("distance: %.17g\n", report.distance);
             if (!groups.empty()) std::printf("pairs per face (solid.face of A x solid.face of B: pairs, interfering):\n");
-            for (const auto& [k, v] : groups)
-              std::printf("  A %d.%d x B %d.%d: %d, %d\n", std::get<0>(k), std::get<1>(k), std::get<2>(k), std::get<3>(k),
-                          v.first, v.second);
+            for (const auto& g : groups)
+              std::printf("  A %d.%d x B %d.%d: %d, %d\n", g.solid_a, g.face_a, g.solid_b, g.face_b, g.pairs, g.penetrating);
             if (!report.pairs.empty()) std::printf("pairs (triangle of A, triangle of B, interfering, segment):\n");
             for (const auto& p : report.pairs)
               std::printf("  %d %d %d  %.9g %.9g %.9g  %.9g %.9g %.9g\n", p.a, p.b, int(p.penetrating), p.x.p.x(), p.x.p.y(),

@@ -1,0 +1,28 @@
+#pragma once
+// An interference report as the designer looks at it (the source paper's view): the pairs
+// grouped by solid and face of each component, and both meshes in one PLY with the triangles
+// coloured by what they do.
+
+#include <ostream>
+#include <vector>
+
+#include "mtcs/mesh/interference.h"
+#include "mtcs/mesh/mesh_parts.h"
+
+namespace mtcs::mesh {
+
+struct FaceGroup {
+  int solid_a = 0, face_a = 0, solid_b = 0, face_b = 0;
+  int pairs = 0, penetrating = 0;
+};
+
+// One group per (solid, face) of A x (solid, face) of B that has intersecting pairs, ordered by
+// those four indices.
+std::vector<FaceGroup> group_by_face(const InterferenceReport& report, const MeshParts& a, const MeshParts& b);
+
+// Both meshes in one ASCII PLY: A grey, B blue, triangles in contact yellow, interfering ones
+// red; the face quality says the same as a number (0 free, 1 contact, 2 interfering).
+void write_interference_ply(std::ostream& out, const TriangleMesh& a, const TriangleMesh& b,
+                            const InterferenceReport& report);
+
+}  // namespace mtcs::mesh
