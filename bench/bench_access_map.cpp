@@ -40,24 +40,14 @@ std::string case_mesh_path(const AccessCase& c, const std::string& mesh_root) {
 }
 
 // Octrees by mesh, scale, centre and grid: the cases of one mesh share one.
-const Octree& case_octree(const AccessCase& c, const std::string& mesh_path) {
+const Octree& shared_octree(const AccessCase& c, const std::string& mesh_path) {
   static std::map<std::string, std::unique_ptr<Octree>> cache;
   char key[512];
   std::snprintf(key, sizeof key, "%s|%.17g|%.17g,%.17g,%.17g|%d,%d,%d|%.17g|%.17g,%.17g,%.17g", mesh_path.c_str(), c.scale,
                 c.centre.x(), c.centre.y(), c.centre.z(), c.grid.size[0], c.grid.size[1], c.grid.size[2], c.grid.voxel_size,
                 c.grid.origin.x(), c.grid.origin.y(), c.grid.origin.z());
   auto& slot = cache[key];
-  if (!slot) {
-    mesh::TriangleMesh raw;
-    try {
-      raw = mesh::read_mesh(mesh_path);
-    } catch (const mesh::MeshError& e) {
-      throw io::InputError(mesh_path, 0, 0, "mesh", e.what());
-    }
-    if (const std::string problem = mesh::closed_mesh_problem(raw); !problem.empty())
-      throw io::InputError(mesh_path, 0, 0, "mesh", "not a closed mesh: " + problem);
-    slot = std::make_unique<Octree>(voxelize(scale_case_mesh(raw, c), c.grid));
-  }
+  if (!slot) slot = std::make_unique<Octree>(case_octree(c, mesh_path));
   return *slot;
 }
 
@@ -109,7 +99,7 @@ int bench_access_map(const AccessMapBenchOptions& opt) {
   long against_case = 0, cases_with_map = 0;  // CheckBox cells differing from the case files' `am`
   for (const std::string& path : paths) {
     const AccessCase c = read_access_case(path);
-    const Octree& tree = case_octree(c, case_mesh_path(c, opt.mesh_root));
+    const Octree& tree = shared_octree(c, case_mesh_path(c, opt.mesh_root));
     if (tree.touches_solid(c.pivot))
       throw io::InputError(c.path, c.pivot_line, 1, "pivot", "the pivot lies inside the part (in a solid voxel)");
     const SphereGrid sphere = opt.am_rows > 0 ? SphereGrid{opt.am_rows, opt.am_cols} : c.sphere;

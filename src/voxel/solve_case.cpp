@@ -20,7 +20,7 @@ std::string resolve_case_mesh(const AccessCase& c, const std::string& mesh_overr
   return c.mesh;
 }
 
-CaseSolution solve_access_case(const AccessCase& c, const std::string& mesh_path, const AmOptions& options) {
+Octree case_octree(const AccessCase& c, const std::string& mesh_path) {
   mesh::TriangleMesh raw;
   try {
     raw = mesh::read_mesh(mesh_path);
@@ -29,7 +29,11 @@ CaseSolution solve_access_case(const AccessCase& c, const std::string& mesh_path
   }
   if (const std::string problem = mesh::closed_mesh_problem(raw); !problem.empty())
     throw io::InputError(mesh_path, 0, 0, "mesh", "not a closed mesh: " + problem);
-  const Octree tree(voxelize(scale_case_mesh(raw, c), c.grid));
+  return Octree(voxelize(scale_case_mesh(raw, c), c.grid));
+}
+
+CaseSolution solve_access_case(const AccessCase& c, const std::string& mesh_path, const AmOptions& options) {
+  const Octree tree = case_octree(c, mesh_path);
   if (tree.touches_solid(c.pivot))
     throw io::InputError(c.path, c.pivot_line, 1, "pivot", "the pivot lies inside the part (in a solid voxel)");
   CaseSolution s{compute_access_map(tree, c.pivot, c.tool, c.sphere, options), tree.solid_voxels(), tree.nodes().size()};

@@ -48,15 +48,18 @@ void write_access_case(std::ostream& out, const AccessCase& c, const std::vector
 // else to the working directory.
 std::string resolve_case_mesh(const AccessCase& c, const std::string& mesh_override = "");
 
+// The part as the case has it: the mesh read and scaled as the case says, voxelised on its grid.
+// Throws io::InputError for an unreadable or open mesh.
+Octree case_octree(const AccessCase& c, const std::string& mesh_path);
+
 struct CaseSolution {
   AccessMap map;
   std::size_t solid_voxels = 0;
   std::size_t octree_nodes = 0;
 };
 
-// The case's map: the mesh read and scaled as the case says, voxelised on its grid, the map of
-// its pivot and tool. Throws io::InputError for an unreadable or open mesh and for a pivot
-// inside the part (naming the case's pivot line).
+// The case's map: case_octree, then the map of its pivot and tool. Throws io::InputError as
+// case_octree does, and for a pivot inside the part (naming the case's pivot line).
 CaseSolution solve_access_case(const AccessCase& c, const std::string& mesh_path, const AmOptions& options = {});
 
 }  // namespace mtcs::voxel
