@@ -26,7 +26,7 @@
 #include "mtcs/run/penalty_run.h"
 #include "output_folder.h"
 #include "python_plot.h"
-#include "whole_number.h"
+#include "number_checks.h"
 
 namespace mtcs::cli {
 namespace {

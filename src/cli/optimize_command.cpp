@@ -33,7 +33,7 @@
 #include "mtcs/run/stored_run.h"
 #include "option_error.h"
 #include "output_folder.h"
-#include "whole_number.h"
+#include "number_checks.h"
 
 namespace mtcs::cli {
 namespace {
