@@ -10,6 +10,7 @@
 #include "mtcs/io/input_error.h"
 #include "mtcs/mesh/bvh.h"
 #include "mtcs/mesh/mesh_io.h"
+#include "number_checks.h"
 
 namespace mtcs::cli {
 
@@ -38,7 +39,7 @@ Command add_clearance_command(CLI::App& app) {
   sub->add_option("--out", opt->out, "output CSV (written whole or not at all)")->required();
   sub->add_option("--upper-bound", opt->upper_bound,
                   "U: distances >= U may stop early and be reported as bounded (default: none)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
 
   return {sub, [opt] {
             mesh::TriangleMesh part;

@@ -24,7 +24,9 @@
 #include "mtcs/io/input_error.h"
 #include "mtcs/opt/rank_sum_test.h"
 #include "mtcs/run/penalty_run.h"
+#include "output_folder.h"
 #include "python_plot.h"
+#include "number_checks.h"
 
 namespace mtcs::cli {
 namespace {
@@ -62,13 +64,13 @@ double quantile(std::vector<double> v, double q) {
 }
 
 std::vector<mold::PenaltyVariant> parse_variants(const std::vector<std::string>& names) {
-  if (names.empty()) throw io::InputError("", 0, 0, "variants", "name at least one penalty variant");
+  if (names.empty()) throw option_error("--variants", "name at least one penalty variant");
   std::vector<mold::PenaltyVariant> out;
   for (const auto& n : names) {
     const auto v = mold::penalty_variant(n);
-    if (!v) throw io::InputError("", 0, 0, "variants", "unknown penalty variant '" + n + "': expected " + mold::kPenaltyVariantNames);
+    if (!v) throw option_error("--variants", "unknown penalty variant '" + n + "': expected " + mold::kPenaltyVariantNames);
     if (std::find(out.begin(), out.end(), *v) != out.end())
-      throw io::InputError("", 0, 0, "variants", "'" + n + "' is named twice");
+      throw option_error("--variants", "'" + n + "' is named twice");
     out.push_back(*v);
   }
   return out;
@@ -164,6 +166,7 @@ void write_summary(const fs::path& out, const Options& o, const std::vector<run:
 
 int run_compare(const Options& o) {
   const std::vector<mold::PenaltyVariant> variants = parse_variants(o.variants);
+  refuse_nonempty_folder(o.out);
   // One Scene for every variant: the variant is part of each run's config, not of the mold.
   const run::Session session(o.mold, {o.config, o.algorithm, o.ref, std::nullopt, o.evaluations});
   const run::RunConfig& config = session.config();
@@ -171,7 +174,7 @@ int run_compare(const Options& o) {
   const std::vector<double> ref = run::scaled_reference(config, names.size());
   std::optional<tbb::global_control> limit;
   if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
-  fs::create_directories(o.out);
+  make_output_folder(o.out);
 
   const bool tty = ::isatty(2), progress = spdlog::should_log(spdlog::level::info);
   spdlog::debug("mold {}: {} surface samples; run config:\n{}", o.mold, session.pipeline().surface_samples(),
@@ -229,9 +232,9 @@ Command add_compare_penalties_command(CLI::App& app) {
   sub->add_option("--variants", o->variants, "penalty variants, comma-separated: " + mold::kPenaltyVariantNames)
       ->delimiter(',')
       ->capture_default_str();
-  sub->add_option("--seeds", o->seeds, "seeds 1..K for every variant")->check(CLI::Range(1, 1000))->capture_default_str();
+  sub->add_option("--seeds", o->seeds, "seeds 1..K for every variant")->check(whole_number(1, 1000))->capture_default_str();
   sub->add_option("--evaluations", o->evaluations, "evaluation budget per run (default: the config's)")
-      ->check(CLI::PositiveNumber);
+      ->check(whole_number(1, 2000000000));
   sub->add_option("--config", o->config, "run config (YAML, see configs/): population, mutation rates, ...");
   sub->add_option("--algorithm", o->algorithm, "sms-emoa (a Pareto front) or es (one weighted objective); "
                                                "overrides the config's")

@@ -8,6 +8,7 @@
 #include "mtcs/cli/commands.h"
 #include "mtcs/io/pairs_csv.h"
 #include "mtcs/geometry/cylinder_distance.h"
+#include "number_checks.h"
 
 namespace mtcs::cli {
 
@@ -33,7 +34,7 @@ Command add_distance_command(CLI::App& app) {
   sub->add_option("--out", opt->out, "output CSV (written whole or not at all)")->required();
   sub->add_option("--upper-bound", opt->upper_bound,
                   "U: distances >= U may stop early and be reported as bounded (default: none)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   sub->add_option("--tolerance", opt->tolerance,
                   "target error of the numerical parts, relative to max(1, pair scale)")->capture_default_str()
       ->check(CLI::Range(1e-18, 1.0));

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "mtcs/cli/commands.h"
 #include "mtcs/eval/pipeline.h"
@@ -37,6 +38,19 @@ nlohmann::ordered_json to_json(const eval::Evaluation& e, const eval::Pipeline& 
   return j;
 }
 
+// What a violation found against what its rule needs, with units: clearances and port offsets
+// in mm, the depth limit as a depth/diameter ratio, the entry angle in degrees.
+std::string found_and_needed(const eval::Violation& v) {
+  std::ostringstream s;
+  s << std::setprecision(10);
+  if (v.kind == "depth_ratio") s << "depth/diameter " << v.distance << ", at most " << v.margin;
+  else if (v.kind == "entry_angle") s << "entry angle " << v.distance << " deg, at most " << v.margin << " deg";
+  else if (v.kind == "entry_face") s << "drilled from a face that is not allowed";
+  else if (v.kind == "inlet_face" || v.kind == "outlet_face") s << v.distance << " mm from the nearest allowed face";
+  else s << "found " << v.distance << " mm, needs " << v.margin << " mm";
+  return s.str();
+}
+
 void print_text(const eval::Evaluation& e, const eval::Pipeline& pipeline, const mold::Layout& layout) {
   double dead = 0;
   for (const auto& b : layout.bores) dead += b.dead_end;
@@ -51,8 +65,7 @@ void print_text(const eval::Evaluation& e, const eval::Pipeline& pipeline, const
   for (const auto& v : e.violations) {
     std::cout << "  " << std::setw(14) << v.kind << " ";
     for (const auto& el : v.elements) std::cout << el << " ";
-    std::cout << "found " << v.distance << ", needs " << v.margin << " at (" << v.where.x() << ", " << v.where.y()
-              << ", " << v.where.z() << ")\n";
+    std::cout << found_and_needed(v) << " at (" << v.where.x() << ", " << v.where.y() << ", " << v.where.z() << ") mm\n";
   }
   std::cout << "\nstages (microseconds)\n";
   for (const auto& s : e.stages) std::cout << "  " << std::setw(24) << s.name << s.seconds * 1e6 << "\n";

@@ -7,6 +7,7 @@
 #include "log.h"
 #include "mtcs/cli/commands.h"
 #include "mtcs/io/input_error.h"
+#include "option_error.h"
 
 int main(int argc, char** argv) {
   // The benchmarks are their own program; every argument after "bench" is its.
@@ -40,12 +41,15 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
+  std::string running;
   try {
     for (const auto& command : commands) {
-      if (command.app->parsed()) return command.run();
+      if (!command.app->parsed()) continue;
+      running = command.app->get_name();
+      return command.run();
     }
   } catch (const mtcs::io::InputError& e) {
-    std::cerr << "mtcs: " << e.what() << "\n";
+    std::cerr << mtcs::cli::describe(e, running) << "\n";
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "mtcs: error: " << e.what() << "\n";

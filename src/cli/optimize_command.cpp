@@ -31,6 +31,9 @@
 #include "mtcs/run/run_record.h"
 #include "mtcs/run/session.h"
 #include "mtcs/run/stored_run.h"
+#include "option_error.h"
+#include "output_folder.h"
+#include "number_checks.h"
 
 namespace mtcs::cli {
 namespace {
@@ -52,22 +55,22 @@ struct Options {
 // A built-in multi-objective test problem with SMS-EMOA: prints a JSON summary, and stores the
 // population every mu steps when --out is given.
 int run_test_problem(const Options& o) {
-  if (o.algorithm != "sms-emoa") throw io::InputError("", 0, 0, "algorithm", "test problems run with --algorithm sms-emoa");
+  if (o.algorithm != "sms-emoa") throw option_error("--algorithm", "test problems run with --algorithm sms-emoa");
   std::unique_ptr<opt::Problem> problem;
   try {
     problem = opt::make_benchmark_problem(o.problem);
   } catch (const std::invalid_argument& e) {
-    throw io::InputError("", 0, 0, "problem", e.what());
+    throw option_error("--problem", e.what());
   }
   opt::SmsConfig c;
   c.seed = o.seed.value_or(1);
   c.evaluations = o.evaluations.value_or(20000);
   c.ref = o.ref.empty() ? std::vector<double>(std::size_t(opt::objective_count(o.problem)), 1.1) : o.ref;
   if (int(c.ref.size()) != opt::objective_count(o.problem))
-    throw io::InputError("", 0, 0, "ref", "needs " + std::to_string(opt::objective_count(o.problem)) + " values");
+    throw option_error("--ref", "needs " + std::to_string(opt::objective_count(o.problem)) + " values");
   std::optional<store::RunStore> db;
   if (!o.out.empty() && o.out != "mtcs-run") {
-    fs::create_directories(o.out);
+    make_output_folder(o.out);
     db = store::RunStore::create((fs::path(o.out) / "run.sqlite").string(),
                                  {{"problem", o.problem}, {"algorithm", "sms-emoa"}, {"seed", std::to_string(c.seed)},
                                   {"program", "mtcs 0.1.0"}});
@@ -146,7 +149,7 @@ int run_optimize(const Options& o) {
   const std::vector<std::string>& names = session.objective_names();
   const run::RunConfig& config = session.config();
   if (o.resume.empty()) {
-    fs::create_directories(out_dir);
+    make_output_folder(out_dir);
     if (fs::exists(db_path))
       throw io::InputError(db_path, 0, 0, "", "a run exists here: resume it with --resume " + out_dir + " or choose --out");
     meta = run::mold_run_meta(mold_path, session);
@@ -237,8 +240,10 @@ Command add_optimize_command(CLI::App& app) {
   sub->add_option("mold", o->mold, "mold spec (YAML)");
   sub->add_option("--config", o->config, "run config (YAML, see configs/)");
   sub->add_option("--out", o->out, "output folder")->capture_default_str();
-  sub->add_option("--seed", o->seed, "random seed (overrides the config)");
-  sub->add_option("--evaluations", o->evaluations, "evaluation budget (overrides the config)")->check(CLI::PositiveNumber);
+  // The ranges of the run config's seed and evaluations (run_config.cpp).
+  sub->add_option("--seed", o->seed, "random seed (overrides the config)")->check(whole_number(0, 9007199254740992));
+  sub->add_option("--evaluations", o->evaluations, "evaluation budget (overrides the config)")
+      ->check(whole_number(1, 2000000000));
   sub->add_option("--threads", o->threads, "worker threads (default: all cores); results do not depend on it")
       ->check(CLI::Range(0, 1024));
   add_log_flags(sub);
@@ -257,7 +262,7 @@ Command add_optimize_command(CLI::App& app) {
   return {sub, [o, sub] {
             if (!o->problem.empty()) return run_test_problem(*o);
             if (o->resume.empty() && o->mold.empty())
-              throw io::InputError("", 0, 0, "mold", "give a mold spec, or --resume DIR");
+              throw option_error("MOLD", "give a mold spec, or --resume DIR");
             (void)sub;
             return run_optimize(*o);
           }};

@@ -12,9 +12,9 @@ RunConfig resolve_run_config(const RunOverrides& o, const std::vector<std::strin
   if (!o.algorithm.empty()) config.algorithm = o.algorithm;
   if (!o.ref.empty()) {
     if (o.ref.size() != names.size())
-      throw io::InputError("", 0, 0, "ref", "needs one value per objective (" + std::to_string(names.size()) + ")");
+      throw io::InputError("", 0, 0, "--ref", "needs one value per objective (" + std::to_string(names.size()) + ")");
     for (const double r : o.ref)
-      if (!(r > 0)) throw io::InputError("", 0, 0, "ref", "values must be positive (scaled objectives)");
+      if (!(r > 0)) throw io::InputError("", 0, 0, "--ref", "values must be positive (scaled objectives)");
     config.ref = o.ref;
   }
   if (o.seed) config.es.seed = *o.seed;

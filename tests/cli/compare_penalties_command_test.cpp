@@ -163,3 +163,28 @@ TEST_CASE("mtcs compare-penalties: bad input exits 2 and names the field", "[cli
   CHECK(run_mtcs(base + " --seeds 0", err) == 2);
   CHECK_FALSE(fs::exists(scratch("bad") / "runs.csv"));
 }
+
+// Issue 16, "Messages": compare-penalties wrote over an existing folder's results, and an
+// unwritable --out exited 1 with a filesystem exception.
+TEST_CASE("mtcs compare-penalties refuses a non-empty --out and an --out it cannot create: exit 2", "[cli][compare-penalties][issue16]") {
+  const fs::path dir = scratch("taken");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "runs.csv") << "earlier results\n";
+  const std::string base = "compare-penalties " + kMold + " --variants death --seeds 1 --evaluations 50 --quiet --out ";
+  const auto taken = mtcs_test::run_mtcs_err("compare_penalties", base + dir.string());
+  CHECK(taken.code == 2);
+  CHECK_THAT(taken.err, Catch::StartsWith("mtcs compare-penalties: --out " + dir.string() + ": the folder is not empty"));
+  CHECK(read(dir / "runs.csv") == "earlier results\n");
+  // An existing empty folder is fine.
+  fs::remove(dir / "runs.csv");
+  CHECK(run_mtcs(base + dir.string()) == 0);
+  CHECK(fs::exists(dir / "runs.csv"));
+
+  const auto cannot = mtcs_test::run_mtcs_err("compare_penalties", base + "/proc/forbidden/x");
+  CHECK(cannot.code == 2);
+  CHECK_THAT(cannot.err, Catch::StartsWith("mtcs compare-penalties: --out /proc/forbidden/x: cannot create the folder"));
+  const auto zero = mtcs_test::run_mtcs_err("compare_penalties", "compare-penalties " + kMold + " --evaluations 0");
+  CHECK(zero.code == 2);
+  CHECK_THAT(zero.err, Catch::Contains("--evaluations: must be a whole number from 1 to 2000000000, got 0"));
+}

@@ -76,3 +76,16 @@ TEST_CASE("mtcs distance rejects a missing column, a short row and a negative ra
   r = run_mtcs("distance --pairs /nonexistent.csv --out " + out.string());
   CHECK(r.code == 2);
 }
+
+// Issue 16, "Messages": "--upper-bound 0" answered with a range up to the largest double written
+// out in 309 digits.
+TEST_CASE("mtcs distance: --upper-bound 0 is refused with a readable message", "[cli][issue16]") {
+  const auto in = write_file("mtcs_bound.csv", std::string(kHeader) + "a,0,0,0,10,0,0,1,0,5,0,10,5,0,2\n");
+  for (const std::string bound : {"0", "-1", "nan", "x"}) {
+    const Run r = run_mtcs("distance --pairs " + in.string() + " --out " + scratch("bound_out.csv").string() +
+                           " --upper-bound " + bound);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("--upper-bound: must be a number above 0, got " + bound));
+    CHECK(r.err.size() < 200);
+  }
+}

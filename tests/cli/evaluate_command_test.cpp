@@ -83,3 +83,26 @@ TEST_CASE("mtcs evaluate rejects bad input with exit code 2", "[cli]") {
   r = run_mtcs("evaluate /nonexistent.yaml --layout " + layout.string());
   CHECK(r.code == 2);
 }
+
+// Issue 16, "Messages": violation lines read "found 30, needs 4" with no unit. Clearances are in
+// mm; the depth limit is a depth/diameter ratio (c0.b0 runs 200 mm with an 8 mm drill: 25).
+TEST_CASE("mtcs evaluate prints violation lines with units: mm for clearances and the depth ratio", "[cli][issue16]") {
+  const fs::path layout = scratch("units.layout.yaml"), mold = scratch("shallow.yaml");
+  std::ofstream(layout) << "circuits:\n"
+                           "  - {diameter: 8, waypoints: [[100, 0, 80], [100, 200, 80], [100, 200, 80]]}\n"
+                           "  - {diameter: 8, waypoints: [[110, 0, 80], [110, 100, 80], [300, 100, 80]]}\n";
+  std::ifstream in(MTCS_SOURCE_DIR "/molds/plate.yaml");
+  std::stringstream spec;
+  spec << in.rdbuf();
+  std::string text = spec.str();
+  const std::string limit = "max_depth_ratio: 50";
+  REQUIRE(text.find(limit) != std::string::npos);
+  text.replace(text.find(limit), limit.size(), "max_depth_ratio: 10");
+  std::ofstream(mold) << text;
+  const Run r = run_mtcs("evaluate " + mold.string() + " --layout " + layout.string());
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.out, Catch::Contains("bore_bore      c0.b0 c1.b0 found 2 mm, needs 4 mm at ("));
+  CHECK_THAT(r.out, Catch::Contains("depth_ratio    c0.b0 depth/diameter 25, at most 10 at (100, 200, 80) mm"));
+  CHECK_THAT(r.out, Catch::Contains("outlet_face    c0 200 mm from the nearest allowed face"));
+  CHECK_THAT(r.out, !Catch::Matches("(.|\n)*found [0-9.e+-]+, (.|\n)*"));
+}

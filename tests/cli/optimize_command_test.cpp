@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "mtcs/store/run_store.h"
+#include "run_mtcs.h"
 
 namespace fs = std::filesystem;
 using mtcs::store::RunStore;
@@ -174,4 +175,47 @@ TEST_CASE("mtcs optimize refuses to overwrite a run and reports bad configs", "[
   const fs::path cfg = scratch("bad.yaml");
   std::ofstream(cfg) << "es: {mu: 0}\n";
   CHECK(run_mtcs("optimize " + kMold + " --config " + cfg.string() + " --out " + scratch("bad").string() + " --quiet") == 2);
+}
+
+// Issue 16, "Messages": an unwritable --out exited 1 with a filesystem exception; it is bad
+// input (exit 2) naming the path, before any work.
+TEST_CASE("mtcs optimize: an --out that cannot be created is bad input: exit 2 naming the path", "[cli][optimize][issue16]") {
+  for (const std::string out : {"/proc/forbidden/x", "/etc/passwd/x"}) {
+    const auto r = mtcs_test::run_mtcs_err("optimize_cli", "optimize " + kMold + " --out " + out + " --evaluations 20 --quiet");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("mtcs optimize: --out " + out + ": cannot create the folder"));
+  }
+  const auto r = mtcs_test::run_mtcs_err("optimize_cli", "optimize --problem zdt1 --algorithm sms-emoa --evaluations 200 --out /proc/forbidden/x");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Contains("--out /proc/forbidden/x"));
+}
+
+// Issue 16: "--evaluations 0" printed a 300-digit range and "--seed -1" ran as seed 2^64 - 1.
+TEST_CASE("mtcs optimize: --evaluations 0 and --seed -1 are refused with a readable range", "[cli][optimize][issue16]") {
+  const fs::path out = scratch("ranges");
+  fs::remove_all(out);
+  const auto zero = mtcs_test::run_mtcs_err("optimize_cli", "optimize " + kMold + " --evaluations 0 --out " + out.string());
+  CHECK(zero.code == 2);
+  CHECK_THAT(zero.err, Catch::Contains("--evaluations: must be a whole number from 1 to 2000000000, got 0"));
+  CHECK(zero.err.size() < 200);
+  for (const std::string seed : {"-1", "1.5", "x"}) {
+    const auto r = mtcs_test::run_mtcs_err("optimize_cli", "optimize " + kMold + " --seed " + seed + " --evaluations 20 --out " + out.string());
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("--seed: must be a whole number from 0 to 9007199254740992, got " + seed));
+  }
+  CHECK_FALSE(fs::exists(out / "run.sqlite"));
+}
+
+// Issue 16: option errors were printed as "mtcs: :0:0: field 'algorithm': ...".
+TEST_CASE("mtcs optimize: option errors name the command and option without a :0:0: place", "[cli][optimize][issue16]") {
+  const auto algorithm = mtcs_test::run_mtcs_err("optimize_cli", "optimize --problem zdt1 --algorithm es");
+  CHECK(algorithm.code == 2);
+  CHECK_THAT(algorithm.err, Catch::StartsWith("mtcs optimize: --algorithm: test problems run with --algorithm sms-emoa"));
+  const auto ref = mtcs_test::run_mtcs_err("optimize_cli", "optimize " + kMold + " --ref 1,2 --out " + scratch("ref").string());
+  CHECK(ref.code == 2);
+  CHECK_THAT(ref.err, Catch::StartsWith("mtcs optimize: --ref: needs one value per objective (3)"));
+  const auto resume = mtcs_test::run_mtcs_err("optimize_cli", "optimize --resume " + scratch("nothing").string());
+  CHECK(resume.code == 2);
+  CHECK_THAT(resume.err, Catch::StartsWith("mtcs optimize: " + (scratch("nothing") / "run.sqlite").string() + ": no run to resume here"));
+  for (const auto& r : {algorithm, ref, resume}) CHECK_THAT(r.err, !Catch::Contains(":0:0:"));
 }
