@@ -95,3 +95,20 @@ TEST_CASE("mtcs bench thermal --json: every tier judged against the finite volum
   }
   CHECK(fd_self);
 }
+
+TEST_CASE("mtcs optimize with temperature objectives: the same run on 1 and 2 threads, replayed bit for bit", "[cli][thermal]") {
+  // The line sinks keep a cache per thread; a cached evaluation must equal a cold one.
+  std::string summary[2];
+  for (int threads = 1; threads <= 2; ++threads) {
+    const fs::path out = scratch("thermal", "run" + std::to_string(threads));
+    fs::remove_all(out);
+    REQUIRE(run_mtcs("optimize " + kMold + " --evaluations 400 --seed 3 --quiet --threads " + std::to_string(threads) +
+                     " --out " + out.string() + " >/dev/null") == 0);
+    std::istringstream in(read_text(out / "summary.json"));
+    for (std::string line; std::getline(in, line);)
+      if (line.find("seconds") == std::string::npos) summary[threads - 1] += line + "\n";
+  }
+  CHECK(summary[0].find("temperature_std") != std::string::npos);
+  CHECK(summary[0] == summary[1]);
+  CHECK(run_mtcs("replay " + scratch("thermal", "run2").string() + " --verify --no-plots --quiet >/dev/null") == 0);
+}
