@@ -221,7 +221,7 @@ struct LineSinkModel::Impl {
     std::vector<double> v(4 * width);
     for (int e = 0; e < rows.elements; ++e) {
       const auto w = wall_points(rows, e);
-      for (int i = 0; i < 4; ++i) f(w[i], &v[i * width]);
+      for (int i = 0; i < 4; ++i) f(w[i], v.data() + std::size_t(i) * std::size_t(width));
       for (int c = 0; c < width; ++c) {
         const double* x = &v[c];
         out[(e * kinds) + c * stride] = 0.25 * (x[0] + x[width] + x[2 * width] + x[3 * width]);
@@ -246,7 +246,7 @@ struct LineSinkModel::Impl {
       element_fields_float(source, origin, kinds, ps.sx.data(), ps.sy.data(), ps.sz.data(), n, buf.data());
       for (int c = 0; c < cols; ++c) {
         const float scale = float((c % kinds == 0 ? -1 : 1) * inv4pik);
-        const float* v = &buf[c * n];
+        const float* v = buf.data() + std::size_t(c) * n;  // n may be 0
         std::fill(acc.begin(), acc.end(), 0.0f);
         for (int j = 0; j < ps.slots; ++j) {
           const float* vj = v + j * T;
@@ -261,7 +261,7 @@ struct LineSinkModel::Impl {
       element_fields_float(source, origin, kinds, ps.x.data(), ps.y.data(), ps.z.data(), n, buf.data());
       for (int c = 0; c < cols; ++c) {
         const double scale = (c % kinds == 0 ? -1 : 1) * inv4pik;  // a sink takes heat out
-        const float* v = &buf[c * n];
+        const float* v = buf.data() + std::size_t(c) * n;  // n may be 0
         for (std::size_t t = 0; t < ps.targets(); ++t) {
           double acc = 0;
           for (std::size_t i = ps.begin[t]; i < ps.begin[t + 1]; ++i) acc += ps.points[i].weight * v[i];
