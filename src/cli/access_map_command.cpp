@@ -13,8 +13,6 @@
 
 #include "mtcs/cli/commands.h"
 #include "mtcs/io/atomic_file.h"
-#include "mtcs/io/yaml_reader.h"
-#include "mtcs/mesh/mesh_io.h"
 #include "mtcs/voxel/access_case.h"
 #include "mtcs/voxel/part_map.h"
 #include "python_plot.h"
@@ -48,25 +46,6 @@ std::vector<double> numbers(const std::string& text, std::size_t n, const std::s
   return v;
 }
 
-// A tool file: a YAML list of cylinders {a, b, r} (mm along the axis from the pivot, radius).
-voxel::Tool read_tool(const std::string& path) {
-  const io::YamlReader reader(path);
-  const YAML::Node root = reader.load();
-  reader.expect_sequence(root, "tool");
-  voxel::Tool tool;
-  for (std::size_t i = 0; i < root.size(); ++i) {
-    const std::string at = io::indexed("tool", i);
-    reader.expect_map(root[i], at, {"a", "b", "r"});
-    voxel::ToolCylinder c;
-    c.a = reader.number(root[i]["a"], at + ".a", 0, 1e9);
-    c.b = reader.number(root[i]["b"], at + ".b", c.a, 1e9);
-    c.r = reader.number(root[i]["r"], at + ".r", 0, 1e9);
-    tool.push_back(c);
-  }
-  if (tool.empty()) reader.fail(root, "tool", "no cylinder");
-  return tool;
-}
-
 struct PartOptions {
   std::string mesh, pivot, bore, tool, am = "64,64", out, method = "aica";
   int grid = 128, threads = 0;
@@ -85,20 +64,13 @@ int run_part_map(const PartOptions& o) {
     if (b[0] < 0 || b[1] < 0) throw UsageError("--bore: radius and length must be >= 0, got '" + o.bore + "'");
     tool = voxel::bore_tool(b[0], b[1]);
   } else {
-    tool = read_tool(o.tool);
+    tool = voxel::read_tool_file(o.tool);
   }
   if (const std::string problem = voxel::tool_problem(tool); !problem.empty()) throw UsageError("tool: " + problem);
   const std::string ext = std::filesystem::path(o.out).extension().string();
   if (!o.out.empty() && ext != ".csv" && ext != ".png") throw UsageError("--out: expected a .csv or .png file, got '" + o.out + "'");
 
-  mesh::TriangleMesh part;
-  try {
-    part = mesh::read_mesh(o.mesh);
-  } catch (const mesh::MeshError& e) {
-    throw io::InputError(o.mesh, 0, 0, "mesh", e.what());
-  }
-  if (const std::string problem = mesh::closed_mesh_problem(part); !problem.empty())
-    throw io::InputError(o.mesh, 0, 0, "mesh", "not a closed mesh: " + problem);
+  const mesh::TriangleMesh part = voxel::read_part(o.mesh);
 
   voxel::AmOptions options;
   options.threads = o.threads;
@@ -117,13 +89,7 @@ int run_part_map(const PartOptions& o) {
   const bool png = ext == ".png";
   const std::string csv_path = png ? o.out + ".csv" : o.out;
   io::AtomicFile file(csv_path);
-  file.stream() << "phi,gamma,dx,dy,dz,free\n" << std::setprecision(17);
-  for (int i = 0; i < sphere.rows; ++i)
-    for (int j = 0; j < sphere.cols; ++j) {
-      const voxel::Vec3 d = sphere.direction(i, j);
-      file.stream() << (i + 0.5) * 180.0 / sphere.rows << ',' << (j + 0.5) * 360.0 / sphere.cols << ',' << d.x() << ',' << d.y()
-                    << ',' << d.z() << ',' << (r.map.collides(i, j) ? 0 : 1) << '\n';
-    }
+  voxel::write_map_csv(file.stream(), r.map, sphere);
   file.commit();
   if (png) {
     const std::string title = std::filesystem::path(o.mesh).filename().string() + ", pivot " + o.pivot;

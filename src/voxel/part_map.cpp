@@ -3,8 +3,12 @@
 #include "mtcs/voxel/part_map.h"
 
 #include <cmath>
+#include <iomanip>
 #include <stdexcept>
 
+#include "mtcs/io/input_error.h"
+#include "mtcs/io/yaml_reader.h"
+#include "mtcs/mesh/mesh_io.h"
 #include "mtcs/voxel/octree.h"
 
 namespace mtcs::voxel {
@@ -53,6 +57,46 @@ PartMap part_access_map(const mesh::TriangleMesh& part, int n, const Vec3& pivot
   out.pivot_inside = tree.touches_solid(pivot) || voxelize(part, at_pivot).count() > 0;
   if (!out.pivot_inside) out.map = compute_access_map(tree, pivot, tool, sphere, options);
   return out;
+}
+
+Tool read_tool_file(const std::string& path) {
+  const io::YamlReader reader(path);
+  const YAML::Node root = reader.load();
+  reader.expect_sequence(root, "tool");
+  Tool tool;
+  for (std::size_t i = 0; i < root.size(); ++i) {
+    const std::string at = io::indexed("tool", i);
+    reader.expect_map(root[i], at, {"a", "b", "r"});
+    ToolCylinder c;
+    c.a = reader.number(root[i]["a"], at + ".a", 0, 1e9);
+    c.b = reader.number(root[i]["b"], at + ".b", c.a, 1e9);
+    c.r = reader.number(root[i]["r"], at + ".r", 0, 1e9);
+    tool.push_back(c);
+  }
+  if (tool.empty()) reader.fail(root, "tool", "no cylinder");
+  return tool;
+}
+
+mesh::TriangleMesh read_part(const std::string& path) {
+  mesh::TriangleMesh part;
+  try {
+    part = mesh::read_mesh(path);
+  } catch (const mesh::MeshError& e) {
+    throw io::InputError(path, 0, 0, "mesh", e.what());
+  }
+  if (const std::string problem = mesh::closed_mesh_problem(part); !problem.empty())
+    throw io::InputError(path, 0, 0, "mesh", "not a closed mesh: " + problem);
+  return part;
+}
+
+void write_map_csv(std::ostream& out, const AccessMap& map, const SphereGrid& sphere) {
+  out << "phi,gamma,dx,dy,dz,free\n" << std::setprecision(17);
+  for (int i = 0; i < sphere.rows; ++i)
+    for (int j = 0; j < sphere.cols; ++j) {
+      const Vec3 d = sphere.direction(i, j);
+      out << (i + 0.5) * 180.0 / sphere.rows << ',' << (j + 0.5) * 360.0 / sphere.cols << ',' << d.x() << ',' << d.y() << ','
+          << d.z() << ',' << (map.collides(i, j) ? 0 : 1) << '\n';
+    }
 }
 
 }  // namespace mtcs::voxel

@@ -6,6 +6,7 @@
 #include "mtcs/io/input_error.h"
 #include "mtcs/mesh/mesh_io.h"
 #include "mtcs/voxel/access_case.h"
+#include "mtcs/voxel/part_map.h"
 
 namespace mtcs::voxel {
 
@@ -21,15 +22,7 @@ std::string resolve_case_mesh(const AccessCase& c, const std::string& mesh_overr
 }
 
 Octree case_octree(const AccessCase& c, const std::string& mesh_path) {
-  mesh::TriangleMesh raw;
-  try {
-    raw = mesh::read_mesh(mesh_path);
-  } catch (const mesh::MeshError& e) {
-    throw io::InputError(mesh_path, 0, 0, "mesh", e.what());
-  }
-  if (const std::string problem = mesh::closed_mesh_problem(raw); !problem.empty())
-    throw io::InputError(mesh_path, 0, 0, "mesh", "not a closed mesh: " + problem);
-  return Octree(voxelize(scale_case_mesh(raw, c), c.grid));
+  return Octree(voxelize(scale_case_mesh(read_part(mesh_path), c), c.grid));
 }
 
 CaseSolution solve_access_case(const AccessCase& c, const std::string& mesh_path, const AmOptions& options) {

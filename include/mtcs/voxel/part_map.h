@@ -6,6 +6,7 @@
 // Grid convention: voxel size = (largest bounding-box extent) / (n - 2), the bounding box centred
 // in the grid, so at least one empty voxel layer pads every side of the part.
 
+#include <ostream>
 #include <string>
 
 #include "mtcs/mesh/triangle_mesh.h"
@@ -24,6 +25,13 @@ Tool bore_tool(double radius, double length);
 // b < a, r < 0.
 std::string tool_problem(const Tool& tool);
 
+// A tool file: a YAML list of cylinders {a, b, r} (mm along the axis from the pivot, radius).
+// Throws io::InputError with file, line, column and field.
+Tool read_tool_file(const std::string& path);
+
+// The part's mesh, read and required closed; io::InputError naming the file otherwise.
+mesh::TriangleMesh read_part(const std::string& path);
+
 struct PartMap {
   AccessMap map;
   GridSpec grid;
@@ -35,5 +43,8 @@ struct PartMap {
 // of `tool` pivoting at `pivot` on `sphere`, unless the pivot is inside the part.
 PartMap part_access_map(const mesh::TriangleMesh& part, int n, const Vec3& pivot, const Tool& tool, const SphereGrid& sphere,
                         const AmOptions& options = {});
+
+// The map as CSV, one direction a row: phi,gamma (degrees),dx,dy,dz,free (1 free, 0 colliding).
+void write_map_csv(std::ostream& out, const AccessMap& map, const SphereGrid& sphere);
 
 }  // namespace mtcs::voxel
