@@ -28,6 +28,7 @@
 #include "mtcs/opt/sms_emoa.h"
 #include "mtcs/store/run_store.h"
 #include "mtcs/run/polish.h"
+#include "mtcs/run/run_outputs.h"
 #include "mtcs/run/run_record.h"
 #include "mtcs/run/session.h"
 #include "mtcs/run/stored_run.h"
@@ -160,7 +161,6 @@ int run_optimize(const Options& o) {
   if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
   const run::MoldProblem& problem = session.problem();
   const run::MoldOptimizer optimizer(problem, scene, config);
-  const bool pareto = optimizer.pareto();
   spdlog::debug("mold {}: {} surface samples; run config:\n{}", mold_path, session.pipeline().surface_samples(),
                 config.to_yaml(names));
   Progress progress(config.log_every, config.es.evaluations);
@@ -170,55 +170,20 @@ int run_optimize(const Options& o) {
   progress.done();
 
   // The best layout, for CAD and for re-scoring with mtcs evaluate; optionally polished.
-  opt::Individual best = last.population.front();
-  mold::Genome genome = problem.genome(best.x);
-  nlohmann::ordered_json polish_json;
+  const opt::Individual& first = last.population.front();
+  run::RunOutcome outcome{last, first.score, problem.genome(first.x), seconds, mold_path, std::nullopt, first.score.value};
   if (o.polish > 0) {
-    const run::Polished p = run::polish(problem, scene, genome, o.polish);
-    polish_json = {{"evaluations", p.evaluations}, {"improved", p.improved}, {"before", best.score.value},
-                   {"after", p.score.value}};
-    if (p.improved) genome = p.genome, best.score = p.score;
-    spdlog::info("polish (COBYLA, {} evaluations): objective {:.6g}{}", p.evaluations, best.score.value,
-                 p.improved ? "" : " (no improvement)");
+    outcome.polished = run::polish(problem, scene, outcome.genome, o.polish);
+    if (outcome.polished->improved) outcome.genome = outcome.polished->genome, outcome.best = outcome.polished->score;
+    spdlog::info("polish (COBYLA, {} evaluations): objective {:.6g}{}", outcome.polished->evaluations, outcome.best.value,
+                 outcome.polished->improved ? "" : " (no improvement)");
   }
-  const mold::Layout layout = mold::decode(scene, genome);
-  mold::save_layout((fs::path(out_dir) / "best.layout.yaml").string(), genome);
-  mold::save_bores_csv((fs::path(out_dir) / "bores.csv").string(), layout);
-  mold::save_bores_stl((fs::path(out_dir) / "bores.stl").string(), layout);
-  nlohmann::ordered_json summary;
-  summary["seed"] = config.es.seed;
-  summary["evaluations"] = last.evaluations;
-  summary["best_objective"] = best.score.value;
-  summary["feasible"] = best.score.feasible;
-  summary["seconds"] = seconds;
-  summary["generations"] = last.index;
-  summary["mold"] = mold_path;
-  for (std::size_t k = 0; k < names.size() && k < best.score.objectives.size(); ++k)
-    summary["objectives"][names[k]] = best.score.objectives[k];
-  summary["violation"] = best.score.violation;
-  if (pareto) {
-    const auto front = opt::SmsEmoa::front(last);
-    summary["algorithm"] = "sms-emoa";
-    summary["front_size"] = front.size();
-    summary["hypervolume"] = opt::hypervolume(front, optimizer.raw_reference());
-    summary["reference_point"] = optimizer.raw_reference();
-    // front.csv: the final feasible non-dominated objective vectors, for plotting.
-    io::AtomicFile csv((fs::path(out_dir) / "front.csv").string());
-    for (std::size_t k = 0; k < names.size(); ++k) csv.stream() << (k ? "," : "") << names[k];
-    csv.stream() << "\n";
-    for (const auto& f : front) {
-      for (std::size_t k = 0; k < f.size(); ++k) csv.stream() << (k ? "," : "") << f[k];
-      csv.stream() << "\n";
-    }
-    csv.commit();
-  }
-  if (o.polish > 0) summary["polish"] = polish_json;
-  io::AtomicFile file((fs::path(out_dir) / "summary.json").string());
-  file.stream() << summary.dump(2) << "\n";
-  file.commit();
+  const mold::Layout layout = run::write_run_outputs(out_dir, scene, optimizer, names, config.es.seed, outcome);
+  const opt::Score& best = outcome.best;
+  const mold::Genome& genome = outcome.genome;
   spdlog::info("{} best layout: {} bores in {} circuits, objective {:.6g}, {} evaluations in {:.6g} s",
-               best.score.feasible ? "feasible" : "INFEASIBLE", layout.bores.size(), genome.circuits.size(),
-               best.score.value, last.evaluations, seconds);
+               best.feasible ? "feasible" : "INFEASIBLE", layout.bores.size(), genome.circuits.size(),
+               best.value, last.evaluations, seconds);
   spdlog::info("results in {}/: best.layout.yaml (mtcs evaluate {} --layout {}/best.layout.yaml), bores.csv, bores.stl, "
                "summary.json, run.sqlite",
                out_dir, mold_path, out_dir);

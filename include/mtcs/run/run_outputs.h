@@ -1,0 +1,30 @@
+#pragma once
+// What `mtcs optimize` leaves beside run.sqlite: best.layout.yaml (editable, re-scorable),
+// bores.csv, bores.stl, summary.json, and for SMS-EMOA front.csv.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mtcs/mold/layout.h"
+#include "mtcs/run/mold_run.h"
+#include "mtcs/run/polish.h"
+
+namespace mtcs::run {
+
+struct RunOutcome {
+  const opt::Generation& last;
+  opt::Score best;              // the best layout's score (after the polish, if it improved)
+  mold::Genome genome;          // the best layout
+  double seconds = 0;
+  std::string mold_path;
+  std::optional<Polished> polished;  // when a polish ran
+  double before_polish = 0;          // the objective it started from
+};
+
+// Writes the files into out_dir (each whole or not at all); returns the best layout decoded.
+mold::Layout write_run_outputs(const std::string& out_dir, const mold::Scene& scene, const MoldOptimizer& optimizer,
+                               const std::vector<std::string>& objective_names, std::uint64_t seed,
+                               const RunOutcome& outcome);
+
+}  // namespace mtcs::run

@@ -1,0 +1,57 @@
+#include "mtcs/run/run_outputs.h"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "mtcs/io/atomic_file.h"
+#include "mtcs/mold/decoder.h"
+#include "mtcs/mold/layout_io.h"
+#include "mtcs/opt/hypervolume.h"
+#include "mtcs/opt/sms_emoa.h"
+
+namespace mtcs::run {
+
+mold::Layout write_run_outputs(const std::string& out_dir, const mold::Scene& scene, const MoldOptimizer& optimizer,
+                               const std::vector<std::string>& names, std::uint64_t seed, const RunOutcome& o) {
+  namespace fs = std::filesystem;
+  const mold::Layout layout = mold::decode(scene, o.genome);
+  mold::save_layout((fs::path(out_dir) / "best.layout.yaml").string(), o.genome);
+  mold::save_bores_csv((fs::path(out_dir) / "bores.csv").string(), layout);
+  mold::save_bores_stl((fs::path(out_dir) / "bores.stl").string(), layout);
+  nlohmann::ordered_json summary;
+  summary["seed"] = seed;
+  summary["evaluations"] = o.last.evaluations;
+  summary["best_objective"] = o.best.value;
+  summary["feasible"] = o.best.feasible;
+  summary["seconds"] = o.seconds;
+  summary["generations"] = o.last.index;
+  summary["mold"] = o.mold_path;
+  for (std::size_t k = 0; k < names.size() && k < o.best.objectives.size(); ++k)
+    summary["objectives"][names[k]] = o.best.objectives[k];
+  summary["violation"] = o.best.violation;
+  if (optimizer.pareto()) {
+    const auto front = opt::SmsEmoa::front(o.last);
+    summary["algorithm"] = "sms-emoa";
+    summary["front_size"] = front.size();
+    summary["hypervolume"] = opt::hypervolume(front, optimizer.raw_reference());
+    summary["reference_point"] = optimizer.raw_reference();
+    // front.csv: the final feasible non-dominated objective vectors, for plotting.
+    io::AtomicFile csv((fs::path(out_dir) / "front.csv").string());
+    for (std::size_t k = 0; k < names.size(); ++k) csv.stream() << (k ? "," : "") << names[k];
+    csv.stream() << "\n";
+    for (const auto& f : front) {
+      for (std::size_t k = 0; k < f.size(); ++k) csv.stream() << (k ? "," : "") << f[k];
+      csv.stream() << "\n";
+    }
+    csv.commit();
+  }
+  if (o.polished)
+    summary["polish"] = {{"evaluations", o.polished->evaluations}, {"improved", o.polished->improved},
+                         {"before", o.before_polish}, {"after", o.polished->score.value}};
+  io::AtomicFile file((fs::path(out_dir) / "summary.json").string());
+  file.stream() << summary.dump(2) << "\n";
+  file.commit();
+  return layout;
+}
+
+}  // namespace mtcs::run
