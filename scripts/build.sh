@@ -4,5 +4,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 # Paths relative to the checkout in ccache's hashes: clones and worktrees share the cache.
 export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
+# Debug builds (-g) hash the working folder too unless told not to: clones would never hit.
+export CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
 cmake --build build -j2 ${MTCS_BUILD_TARGET:+--target "$MTCS_BUILD_TARGET"}
