@@ -11,6 +11,10 @@ cmake --install "$build" --prefix "$prefix" >/dev/null
 [[ -e "$prefix/include/mtcs/run/session.h" && ! -e "$prefix/include/mtcs/cli" ]] || { echo "headers not installed as expected"; exit 1; }
 launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+# A sanitizer build's libraries need the sanitizers' runtime in the program too.
+if grep -q '^MTCS_SANITIZE:BOOL=ON' "$build/CMakeCache.txt"; then
+  launcher+=(-DCMAKE_CXX_FLAGS=-fsanitize=address,undefined -DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined)
+fi
 cmake -S "$source/tests/install/consumer" -B "$prefix/consumer-build" -DCMAKE_BUILD_TYPE=Release \
       -DCMAKE_PREFIX_PATH="$prefix" "${launcher[@]}" >/dev/null
 cmake --build "$prefix/consumer-build" -j2 >/dev/null
