@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "mtcs/cli/commands.h"
+#include "mtcs/eval/drill_access.h"
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
@@ -18,7 +19,7 @@ namespace mtcs::cli {
 
 namespace {
 
-nlohmann::ordered_json to_json(const eval::Evaluation& e, const eval::Pipeline& pipeline) {
+nlohmann::ordered_json to_json(const eval::Evaluation& e, const eval::Pipeline& pipeline, const mold::Layout& layout) {
   nlohmann::ordered_json j;
   j["feasible"] = e.feasible();
   j["objectives"] = nlohmann::ordered_json::object();
@@ -33,6 +34,16 @@ nlohmann::ordered_json to_json(const eval::Evaluation& e, const eval::Pipeline& 
                                {"margin", v.margin},
                                {"where", {v.where.x(), v.where.y(), v.where.z()}}});
   }
+  if (const eval::DrillAccess* access = pipeline.drill_access()) {
+    j["drillable"] = nlohmann::ordered_json::array();
+    for (const auto& b : layout.bores) {
+      const eval::DrillVerdict v = access->check(b);
+      j["drillable"].push_back({{"bore", b.name()}, {"free", v.free}, {"cell", v.cell}, {"map", {v.rows, v.cols}},
+                                {"free_cells", v.free_cells}, {"pivot", {v.pivot.x(), v.pivot.y(), v.pivot.z()}},
+                                {"tool", {{"radius", v.tool_radius}, {"length", v.tool_length}}},
+                                {"draw", access->access_map_command(v)}});
+    }
+  }
   j["stages"] = nlohmann::ordered_json::array();
   for (const auto& s : e.stages) j["stages"].push_back({{"name", s.name}, {"seconds", s.seconds}});
   return j;
@@ -45,6 +56,7 @@ std::string found_and_needed(const eval::Violation& v) {
   s << std::setprecision(10);
   if (v.kind == "depth_ratio") s << "depth/diameter " << v.distance << ", at most " << v.margin;
   else if (v.kind == "entry_angle") s << "entry angle " << v.distance << " deg, at most " << v.margin << " deg";
+  else if (v.kind == "drillable") s << "direction in a blocked cell, the nearest free one " << v.distance << " deg away";
   else if (v.kind == "entry_face") s << "drilled from a face that is not allowed";
   else if (v.kind == "inlet_face" || v.kind == "outlet_face") s << v.distance << " mm from the nearest allowed face";
   else s << "found " << v.distance << " mm, needs " << v.margin << " mm";
@@ -67,6 +79,13 @@ void print_text(const eval::Evaluation& e, const eval::Pipeline& pipeline, const
     for (const auto& el : v.elements) std::cout << el << " ";
     std::cout << found_and_needed(v) << " at (" << v.where.x() << ", " << v.where.y() << ", " << v.where.z() << ") mm\n";
   }
+  if (const eval::DrillAccess* access = pipeline.drill_access()) {
+    std::cout << "\ndrillable (accessibility map at each entry, " << access->spec().grid << "^3 voxels)\n";
+    for (const auto& b : layout.bores) {
+      const eval::DrillVerdict v = access->check(b);
+      std::cout << "  " << b.name() << " " << eval::describe(v) << "\n    draw: " << access->access_map_command(v) << "\n";
+    }
+  }
   std::cout << "\nstages (microseconds)\n";
   for (const auto& s : e.stages) std::cout << "  " << std::setw(24) << s.name << s.seconds * 1e6 << "\n";
 }
@@ -88,13 +107,15 @@ Command add_evaluate_command(CLI::App& app) {
   sub->add_option("--layout", opt->layout, "layout (YAML: circuits of waypoints)")->required();
   sub->add_flag("--json", opt->json,
                 "one JSON object on stdout: {feasible, objectives, violation, violations[{kind, elements, "
-                "distance, margin, where}], stages[{name, seconds}]}");
+                "distance, margin, where}], drillable[{bore, free, cell, map, free_cells, pivot, tool, draw}] (with "
+                "drilling.access_map), stages[{name, seconds}]}");
   return {sub, [opt] {
             const run::Session session(opt->mold);
             const mold::Genome genome = mold::load_layout(opt->layout, session.spec());
             const eval::Evaluation e = session.pipeline().evaluate(genome, true);
-            if (opt->json) std::cout << to_json(e, session.pipeline()).dump(2) << "\n";
-            else print_text(e, session.pipeline(), mold::decode(session.scene(), genome));
+            const mold::Layout layout = mold::decode(session.scene(), genome);
+            if (opt->json) std::cout << to_json(e, session.pipeline(), layout).dump(2) << "\n";
+            else print_text(e, session.pipeline(), layout);
             return 0;
           }};
 }
