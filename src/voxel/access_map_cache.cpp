@@ -7,8 +7,9 @@
 
 namespace mtcs::voxel {
 
-AccessMapCache::AccessMapCache(const mesh::TriangleMesh& part, const GridSpec& grid, SphereGrid sphere, AmMethod method)
-    : octree_(voxelize(part, grid)), sphere_(sphere), method_(method) {}
+AccessMapCache::AccessMapCache(const mesh::TriangleMesh& part, const GridSpec& grid, SphereGrid sphere, AmMethod method,
+                               std::size_t max_maps)
+    : octree_(voxelize(part, grid)), sphere_(sphere), method_(method), max_maps_(std::max<std::size_t>(1, max_maps)) {}
 
 std::shared_ptr<const AccessMap> AccessMapCache::at(const Vec3& pivot, const Tool& tool) const {
   Key key{pivot.x(), pivot.y(), pivot.z()};
@@ -23,6 +24,7 @@ std::shared_ptr<const AccessMap> AccessMapCache::at(const Vec3& pivot, const Too
   if (!octree_.touches_solid(pivot))
     map = std::make_shared<const AccessMap>(compute_access_map(octree_, pivot, tool, sphere_, {.method = method_, .threads = 1}));
   const std::lock_guard lock(mutex_);
+  if (maps_.size() >= max_maps_) maps_.clear();
   return maps_.emplace(std::move(key), std::move(map)).first->second;
 }
 

@@ -2,7 +2,9 @@
 // Accessibility maps of one part, computed once per (pivot, tool) and kept: an optimiser asks
 // for the same drilling entry again and again. Safe to share between threads; a map depends only
 // on its key, so which thread computes it first changes nothing (deterministic for any thread
-// count). Each map is computed on the calling thread (the callers are already parallel).
+// count). Each map is computed on the calling thread (the callers are already parallel). At
+// `max_maps` maps (~1.3 kB each at 32 x 32) the cache starts afresh: memory stays bounded, and
+// since a map depends only on its key nothing but time changes.
 
 #include <array>
 #include <map>
@@ -18,7 +20,8 @@ namespace mtcs::voxel {
 class AccessMapCache {
  public:
   // The part's octree on `grid`; maps on `sphere` by `method`.
-  AccessMapCache(const mesh::TriangleMesh& part, const GridSpec& grid, SphereGrid sphere, AmMethod method = AmMethod::aica);
+  AccessMapCache(const mesh::TriangleMesh& part, const GridSpec& grid, SphereGrid sphere, AmMethod method = AmMethod::aica,
+                 std::size_t max_maps = 50000);
 
   // The map of `tool` pivoting at `pivot`, keyed by their exact values. Null when the pivot lies
   // in the closed box of a solid voxel (no map: every direction starts inside the part).
@@ -33,6 +36,7 @@ class AccessMapCache {
   Octree octree_;
   SphereGrid sphere_;
   AmMethod method_;
+  std::size_t max_maps_;
   mutable std::mutex mutex_;
   mutable std::map<Key, std::shared_ptr<const AccessMap>> maps_;
 };
