@@ -23,7 +23,7 @@ class DrillAccess;
 std::unique_ptr<Stage> make_drillable_stage(const DrillAccess& access);
 
 // A clearance shortfall as a violation; nothing when the distance meets the margin.
-void add_clearance(Evaluation& out, std::string kind, std::vector<std::string> elements, double distance,
+void add_clearance(Evaluation& out, ViolationKind kind, std::vector<std::string> elements, double distance,
                    double margin, const geometry::Vec3& where);
 
 }  // namespace mtcs::eval

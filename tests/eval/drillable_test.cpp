@@ -105,7 +105,7 @@ TEST_CASE("drillable: bores known blocked and free", "[eval][drillable]") {
   const mold::Genome beside{{{{{10, 0, 55}, {10, 140, 55}}, 8}}};
   REQUIRE(gear.min.x() - (10 + 12) > 20);
   const auto e1 = pipeline.evaluate(beside);
-  for (const auto& v : e1.violations) CHECK(v.kind != "drillable");
+  for (const auto& v : e1.violations) CHECK(v.kind != eval::ViolationKind::Drillable);
   // Straight through the gear's middle plane at x = 60: the exact cylinder-mesh distance says
   // the hole itself cuts the part, so no map may call it free.
   const mold::Genome through{{{{{60, 0, 55}, {60, 140, 55}}, 8}}};
@@ -113,7 +113,7 @@ TEST_CASE("drillable: bores known blocked and free", "[eval][drillable]") {
   REQUIRE(clearance.distance == 0);
   const auto e2 = pipeline.evaluate(through);
   bool flagged = false;
-  for (const auto& v : e2.violations) flagged = flagged || (v.kind == "drillable" && v.elements.front() == "c0.b0");
+  for (const auto& v : e2.violations) flagged = flagged || (v.kind == eval::ViolationKind::Drillable && v.elements.front() == "c0.b0");
   CHECK(flagged);
 }
 
@@ -134,7 +134,7 @@ TEST_CASE("drillable: the same verdicts and maps for any thread count", "[eval][
     arena.execute([&] {
       tbb::parallel_for(std::size_t(0), layouts.size(), [&](std::size_t k) {
         for (const auto& v : pipeline.evaluate(layouts[k]).violations)
-          if (v.kind == "drillable") out[k] += v.elements.front() + ' ' + std::to_string(v.distance) + ';';
+          if (v.kind == eval::ViolationKind::Drillable) out[k] += v.elements.front() + ' ' + std::to_string(v.distance) + ';';
       });
     });
     return std::make_pair(out, pipeline.drill_access()->cache().size());
