@@ -29,13 +29,15 @@ Command add_evaluate_command(CLI::App& app) {
   sub->add_option("--layout", opt->layout, "layout (YAML: circuits of waypoints)")->required();
   sub->add_flag("--json", opt->json,
                 "one JSON object on stdout: {feasible, objectives, violation, violations[{kind, elements, "
-                "distance, margin, where}], stages[{name, seconds}]}");
+                "distance, margin, where}], drillable[{bore, free, cell, map, free_cells, pivot, tool, draw}] (with "
+                "drilling.access_map), stages[{name, seconds}]}");
   return {sub, [opt] {
             const run::Session session(opt->mold);
             const mold::Genome genome = mold::load_layout(opt->layout, session.spec());
             const eval::Evaluation e = session.pipeline().evaluate(genome, true);
-            if (opt->json) eval::write_evaluation_json(std::cout, e, session.pipeline());
-            else eval::write_evaluation_text(std::cout, e, session.pipeline(), mold::decode(session.scene(), genome));
+            const mold::Layout layout = mold::decode(session.scene(), genome);
+            if (opt->json) eval::write_evaluation_json(std::cout, e, session.pipeline(), layout);
+            else eval::write_evaluation_text(std::cout, e, session.pipeline(), layout);
             return 0;
           }};
 }

@@ -15,6 +15,7 @@ const char* to_string(ViolationKind kind) {
     case ViolationKind::EntryAngle: return "entry_angle";
     case ViolationKind::InletFace: return "inlet_face";
     case ViolationKind::OutletFace: return "outlet_face";
+    case ViolationKind::Drillable: return "drillable";
   }
   return "unknown";
 }

@@ -1,5 +1,7 @@
 #include "mtcs/eval/evaluation_report.h"
 
+#include "mtcs/eval/drill_access.h"
+
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -23,6 +25,9 @@ std::string found_and_needed(const Violation& v) {
     case K::EntryFace:
       s << "drilled from a face that is not allowed";
       break;
+    case K::Drillable:
+      s << "direction in a blocked cell, the nearest free one " << v.distance << " deg away";
+      break;
     case K::InletFace:
     case K::OutletFace:
       s << v.distance << " mm from the nearest allowed face";
@@ -39,7 +44,8 @@ std::string found_and_needed(const Violation& v) {
 
 }  // namespace
 
-void write_evaluation_json(std::ostream& out, const Evaluation& e, const Pipeline& pipeline) {
+void write_evaluation_json(std::ostream& out, const Evaluation& e, const Pipeline& pipeline,
+                           const mold::Layout& layout) {
   nlohmann::ordered_json j;
   j["feasible"] = e.feasible();
   j["objectives"] = nlohmann::ordered_json::object();
@@ -53,6 +59,16 @@ void write_evaluation_json(std::ostream& out, const Evaluation& e, const Pipelin
                                {"distance", v.distance},
                                {"margin", v.margin},
                                {"where", {v.where.x(), v.where.y(), v.where.z()}}});
+  }
+  if (const DrillAccess* access = pipeline.drill_access()) {
+    j["drillable"] = nlohmann::ordered_json::array();
+    for (const auto& b : layout.bores) {
+      const DrillVerdict v = access->check(b);
+      j["drillable"].push_back({{"bore", b.name()}, {"free", v.free}, {"cell", v.cell}, {"map", {v.rows, v.cols}},
+                                {"free_cells", v.free_cells}, {"pivot", {v.pivot.x(), v.pivot.y(), v.pivot.z()}},
+                                {"tool", {{"radius", v.tool_radius}, {"length", v.tool_length}}},
+                                {"draw", access->access_map_command(v)}});
+    }
   }
   j["stages"] = nlohmann::ordered_json::array();
   for (const auto& s : e.stages) j["stages"].push_back({{"name", s.name}, {"seconds", s.seconds}});
@@ -77,6 +93,13 @@ void write_evaluation_text(std::ostream& out, const Evaluation& e, const Pipelin
     for (const auto& el : v.elements) out << el << " ";
     out << found_and_needed(v) << " at (" << v.where.x() << ", " << v.where.y() << ", " << v.where.z()
         << ") mm\n";
+  }
+  if (const DrillAccess* access = pipeline.drill_access()) {
+    out << "\ndrillable (accessibility map at each entry, " << access->spec().grid << "^3 voxels)\n";
+    for (const auto& b : layout.bores) {
+      const DrillVerdict v = access->check(b);
+      out << "  " << b.name() << " " << describe(v) << "\n    draw: " << access->access_map_command(v) << "\n";
+    }
   }
   out << "\nstages (microseconds)\n";
   for (const auto& s : e.stages) out << "  " << std::setw(24) << s.name << s.seconds * 1e6 << "\n";

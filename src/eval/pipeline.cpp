@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "mtcs/eval/drill_access.h"
 #include "mtcs/eval/thermal_model.h"
 #include "thermal_tiers.h"
 #include "mtcs/mold/decoder.h"
@@ -38,6 +39,10 @@ Pipeline::Pipeline(const mold::Scene& scene, const TemperatureSolverFactory& tem
   if (spec.cavity) stages_.push_back(make_cavity_stage(scene));
   stages_.push_back(make_surface_stage(scene));
   stages_.push_back(make_drilling_stage(scene));
+  if (spec.drilling.access_map) {
+    drill_access_ = std::make_unique<DrillAccess>(scene);
+    stages_.push_back(make_drillable_stage(*drill_access_));
+  }
 }
 
 Pipeline::~Pipeline() = default;

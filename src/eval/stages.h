@@ -19,6 +19,8 @@ std::unique_ptr<Stage> make_keep_out_mesh_stage(const mold::Scene& scene);
 std::unique_ptr<Stage> make_cavity_stage(const mold::Scene& scene);
 std::unique_ptr<Stage> make_surface_stage(const mold::Scene& scene);
 std::unique_ptr<Stage> make_drilling_stage(const mold::Scene& scene);
+class DrillAccess;
+std::unique_ptr<Stage> make_drillable_stage(const DrillAccess& access);
 
 // A clearance shortfall as a violation; nothing when the distance meets the margin.
 void add_clearance(Evaluation& out, ViolationKind kind, std::vector<std::string> elements, double distance,

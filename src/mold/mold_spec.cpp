@@ -161,7 +161,7 @@ KeepOut parse_keep_out(const YamlReader& r, const YAML::Node& n, const std::stri
 
 Drilling parse_drilling(const YamlReader& r, const YAML::Node& n) {
   r.expect_map(n, "drilling", {"diameters", "axis_parallel", "max_angle_deg", "allowed_faces",
-                               "max_depth_ratio", "tip_angle_deg", "min_overlap"});
+                               "max_depth_ratio", "tip_angle_deg", "min_overlap", "access_map"});
   Drilling d;
   if (n["diameters"]) {
     r.expect_sequence(n["diameters"], "drilling.diameters");
@@ -176,6 +176,20 @@ Drilling parse_drilling(const YamlReader& r, const YAML::Node& n) {
   if (n["max_depth_ratio"]) d.max_depth_ratio = r.number(n["max_depth_ratio"], "drilling.max_depth_ratio", 1, 1e4);
   if (n["tip_angle_deg"]) d.tip_angle_deg = r.number(n["tip_angle_deg"], "drilling.tip_angle_deg", 60, 180);
   if (n["min_overlap"]) d.min_overlap = r.number(n["min_overlap"], "drilling.min_overlap", 0, kHuge);
+  if (n["access_map"]) {
+    const YAML::Node& m = n["access_map"];
+    r.expect_map(m, "drilling.access_map", {"grid", "cells", "entry_step"});
+    AccessMapSpec a;
+    if (m["grid"]) a.grid = r.integer(m["grid"], "drilling.access_map.grid", 8, 512);
+    if (m["cells"]) {
+      const YAML::Node& c = m["cells"];
+      if (!c.IsSequence() || c.size() != 2) r.fail(c, "drilling.access_map.cells", "expected [rows, cols]");
+      a.rows = r.integer(c[0], "drilling.access_map.cells[0]", 2, 1024);
+      a.cols = r.integer(c[1], "drilling.access_map.cells[1]", 2, 1024);
+    }
+    if (m["entry_step"]) a.entry_step = r.number(m["entry_step"], "drilling.access_map.entry_step", 1e-3, kHuge);
+    d.access_map = a;
+  }
   return d;
 }
 
@@ -370,6 +384,8 @@ MoldSpec load_mold_spec(const std::string& path) {
       s.keep_outs.push_back(parse_keep_out(r, root["keep_outs"][i], at("keep_outs", i)));
   }
   if (root["drilling"]) s.drilling = parse_drilling(r, root["drilling"]);
+  if (s.drilling.access_map && !(s.cavity && s.cavity->mesh))
+    r.fail(root["drilling"]["access_map"], "drilling.access_map", "accessibility maps need a cavity mesh");
   if (root["clearances"]) s.clearances = parse_clearances(r, root["clearances"]);
   if (root["circuits"]) s.circuits = parse_circuits(r, root["circuits"]);
   if (root["objectives"]) s.objectives = parse_objectives(r, root["objectives"]);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "aim_bores.h"
 #include "holes.h"
 
 namespace mtcs::run {
@@ -20,6 +21,7 @@ MoldProblem::MoldProblem(const eval::Pipeline& pipeline, std::vector<double> wei
   ranking_.objectives = spec_.objectives;
   ranking_.penalty = spec_.penalty;
   if (penalty) ranking_.penalty.variant = *penalty;
+  if (rates_.access_guided && !spec_.drilling.axis_parallel) access_ = pipeline.drill_access();
   region_ = block_;
   if (spec_.cavity) {
     const geometry::Box part = spec_.cavity->box ? *spec_.cavity->box : spec_.cavity->mesh->mesh.bounds();
@@ -93,6 +95,10 @@ mold::Circuit MoldProblem::random_circuit(opt::Rng& rng) const {
     q[ko] = face_plane(block_, out);
     c.waypoints.push_back(q);
   }
+  if (access_) {
+    aim_bores(*access_, pipeline_.scene(), c, rng);
+    repair(c);
+  }
   return c;
 }
 
@@ -159,6 +165,10 @@ void MoldProblem::mutate(opt::Genotype& x, const std::vector<double>& steps, opt
       for (Vec3& p : w) p += sigma * Vec3(rng.normal(), rng.normal(), rng.normal());
     }
     repair(c);  // the ports back on their faces, everything inside the block
+    if (access_) {
+      aim_bores(*access_, pipeline_.scene(), c, rng);
+      repair(c);
+    }
   }
   x = encode(g);
 }

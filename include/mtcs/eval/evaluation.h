@@ -20,10 +20,11 @@ enum class ViolationKind {
   EntryAngle,   // drill axis too steep against its entry face
   InletFace,    // an inlet away from its allowed faces
   OutletFace,   // an outlet away from its allowed faces
+  Drillable,    // a bore's direction in a blocked cell of the accessibility map at its entry
 };
 
 // bore_bore, bore_keepout, bore_cavity, bore_surface, depth_ratio, entry_face, entry_angle,
-// inlet_face, outlet_face.
+// inlet_face, outlet_face, drillable.
 const char* to_string(ViolationKind kind);
 
 struct Violation {

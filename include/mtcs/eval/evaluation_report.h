@@ -12,7 +12,7 @@
 
 namespace mtcs::eval {
 
-void write_evaluation_json(std::ostream& out, const Evaluation& e, const Pipeline& pipeline);
+void write_evaluation_json(std::ostream& out, const Evaluation& e, const Pipeline& pipeline, const mold::Layout& layout);
 void write_evaluation_text(std::ostream& out, const Evaluation& e, const Pipeline& pipeline, const mold::Layout& layout);
 
 }  // namespace mtcs::eval

@@ -15,6 +15,8 @@
 
 namespace mtcs::eval {
 
+class DrillAccess;
+
 class Stage {
  public:
   virtual ~Stage() = default;
@@ -37,9 +39,12 @@ class Pipeline {
   std::vector<std::string> objective_names() const;
   std::size_t surface_samples() const { return samples_; }
   const mold::Scene& scene() const { return scene_; }
+  // The accessibility maps of drilling.access_map (shared with AM-guided mutation), or null.
+  const DrillAccess* drill_access() const { return drill_access_.get(); }
 
  private:
   const mold::Scene& scene_;
+  std::unique_ptr<DrillAccess> drill_access_;
   std::vector<std::unique_ptr<Stage>> stages_;
   std::size_t samples_ = 0;
 };

@@ -64,6 +64,15 @@ struct KeepOut {
   double clearance = 3.0;  // mm between a bore and this keep-out
 };
 
+// Angled drilling guided by accessibility maps (docs/mold-spec.md, `drilling.access_map`): the
+// cavity mesh voxelised on `grid`^3 voxels, maps of rows x cols directions, entry points rounded
+// to multiples of `entry_step` (and drilled lengths up to one) so that bores share their maps.
+struct AccessMapSpec {
+  int grid = 64;
+  int rows = 32, cols = 32;
+  double entry_step = 1.0;  // mm
+};
+
 struct Drilling {
   std::vector<double> diameters{8.0};
   bool axis_parallel = true;
@@ -72,6 +81,7 @@ struct Drilling {
   double max_depth_ratio = 50;       // drilled length / diameter
   double tip_angle_deg = 118;        // drill point angle: overshoot 0.5 D cot(tip/2)
   double min_overlap = 0;            // extra length beyond a junction, mm
+  std::optional<AccessMapSpec> access_map;  // set: the `drillable` constraint and AM-guided mutation
 };
 
 struct Clearances {

@@ -20,6 +20,9 @@ namespace mtcs::run {
 
 struct MutationRates {
   double insert = 0.1, remove = 0.1, snap = 0.05, diameter = 0.05, circuit = 0.02;
+  // With drilling.access_map and angled holes: new and mutated circuits have their blocked bores
+  // turned to free directions of the accessibility map at their entry (src/run/aim_bores.h).
+  bool access_guided = true;
 };
 
 class MoldProblem final : public opt::Problem {
@@ -65,6 +68,7 @@ class MoldProblem final : public opt::Problem {
   geometry::Box region_;  // where new circuits' waypoints are drawn: around the part
   std::vector<double> weights_;
   MutationRates rates_;
+  const eval::DrillAccess* access_ = nullptr;  // set: AM-guided directions
   double initial_step_;
   mutable std::atomic<long> evaluated_{0}, feasible_{0};
 };
