@@ -106,3 +106,41 @@ TEST_CASE("mtcs evaluate prints violation lines with units: mm for clearances an
   CHECK_THAT(r.out, Catch::Contains("outlet_face    c0 200 mm from the nearest allowed face"));
   CHECK_THAT(r.out, !Catch::Matches("(.|\n)*found [0-9.e+-]+, (.|\n)*"));
 }
+
+TEST_CASE("mtcs evaluate gives each bore's drillable evidence, and its draw command gives the same map",
+          "[cli][drillable]") {
+  const fs::path spec = scratch("gear_angled.yaml"), layout = scratch("gear_angled.layout.yaml");
+  std::ofstream(spec) << "block: {box: {min: [0, 0, 0], max: [160, 160, 90]}}\n"
+                         "cavity: {mesh: " MTCS_TEST_DATA "/meshes/mcad_herringbone_gear.off, translate: [80, 80, 55]}\n"
+                         "drilling: {diameters: [8], axis_parallel: false, max_angle_deg: 30,\n"
+                         "           access_map: {grid: 32, cells: [16, 16]}}\n"
+                         "circuits: {inlet_faces: [-y], outlet_faces: [-y]}\n";
+  // One U: in through the gear at x = 60 (blocked), across behind it, out at x = 140 (free).
+  std::ofstream(layout) << "circuits:\n  - diameter: 8\n    waypoints: [[60, 0, 55], [60, 130, 55], [140, 130, 55], [140, 0, 55]]\n";
+  const Run r = run_mtcs("evaluate " + spec.string() + " --layout " + layout.string() + " --json");
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  REQUIRE(j["drillable"].size() == 3);
+  CHECK(j["drillable"][0]["free"] == false);
+  CHECK(j["drillable"][2]["free"] == true);
+  bool violation = false;
+  for (const auto& v : j["violations"]) violation = violation || (v["kind"] == "drillable" && v["elements"][0] == "c0.b0");
+  CHECK(violation);
+  for (const auto& b : j["drillable"]) {
+    CHECK(b["map"] == nlohmann::json::array({16, 16}));
+    // The pointer, run with the exact CheckBox (an independent method) to a CSV.
+    std::string draw = b["draw"];
+    const fs::path csv = scratch("am.csv");
+    draw.replace(draw.find("--out am.png"), 12, "--method checkbox --out " + csv.string());
+    REQUIRE(run_mtcs(draw.substr(std::string("mtcs ").size())).code == 0);
+    std::ifstream in(csv);
+    std::string line;
+    long free = 0;
+    std::getline(in, line);
+    while (std::getline(in, line)) free += line.back() == '1';
+    CHECK(free == b["free_cells"]);
+  }
+  const Run text = run_mtcs("evaluate " + spec.string() + " --layout " + layout.string());
+  CHECK(text.out.find("c0.b0 blocked, cell (") != std::string::npos);
+  CHECK(text.out.find("draw: mtcs access-map ") != std::string::npos);
+}
