@@ -241,19 +241,13 @@ struct LineSinkModel::Impl {
     const int cols = source.elements * kinds;
     MatrixXd out = MatrixXd::Zero(ps.targets(), cols);
     if (single && ps.slots > 0) {
-      const std::size_t T = ps.targets(), n = std::size_t(ps.slots) * T;
-      std::vector<float> buf(n * cols), acc(T);
-      element_fields_float(source, origin, kinds, ps.sx.data(), ps.sy.data(), ps.sz.data(), n, buf.data());
+      const std::size_t T = ps.targets();
+      std::vector<float> acc(T * cols, 0.0f);
+      element_fields_float_slots(source, origin, kinds, ps.sx.data(), ps.sy.data(), ps.sz.data(), ps.sw.data(), T,
+                                 ps.slots, acc.data());
       for (int c = 0; c < cols; ++c) {
         const float scale = float((c % kinds == 0 ? -1 : 1) * inv4pik);
-        const float* v = buf.data() + std::size_t(c) * n;  // n may be 0
-        std::fill(acc.begin(), acc.end(), 0.0f);
-        for (int j = 0; j < ps.slots; ++j) {
-          const float* vj = v + j * T;
-          const float* wj = ps.sw.data() + j * T;
-          for (std::size_t t = 0; t < T; ++t) acc[t] += wj[t] * vj[t];
-        }
-        for (std::size_t t = 0; t < T; ++t) out(t, c) = scale * acc[t];
+        for (std::size_t t = 0; t < T; ++t) out(t, c) = scale * acc[c * T + t];
       }
     } else if (single) {
       const std::size_t n = ps.points.size();
@@ -310,6 +304,7 @@ struct LineSinkModel::Impl {
         b->walls.add(images, p, tol, 1.0, b->walls_origin);
         b->walls.close_target();
       }
+    if (b->walls_single) b->walls.make_slots();
     // At the samples.
     const MatrixXd at_samples = columns_at(a, sample_set, options.single_precision, sample_origin);
     if (options.single_precision) {
@@ -463,6 +458,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     m.sample_set.close_target();
   }
   if (m.n_samples) m.sample_set.make_slots();
+  if (!m.faces.empty()) m.face_set.make_slots();
   const std::size_t nf = m.faces.size();
   for (const ConvectiveFace& cf : m.faces) {
     Eigen::Vector4d mo;
