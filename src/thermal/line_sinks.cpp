@@ -157,7 +157,8 @@ struct LineSinkModel::Impl {
   double heat_in = 0;
   std::size_t n_samples = 0;
   PointSet sample_set;                       // the samples, image-expanded
-  PointSet face_set;                         // per convective face: its grid, weights / size
+  PointSet face_set;                         // the convective faces' grid points, one target each
+  MatrixXd face_average;                     // faces x grid points: each face's mean
   VectorXd heat_samples;                     // heat input's field at the samples
   MatrixXd face_samples;                     // samples x faces: unit face loss
   VectorXd heat_face_means;                  // per face: heat input's field, face mean
@@ -315,7 +316,7 @@ struct LineSinkModel::Impl {
       b->sample_cols_d.assign(at_samples.data(), at_samples.data() + at_samples.size());
     }
     // At the convective faces' grids (means).
-    b->face_means = columns_at(a, face_set, options.single_precision, center);
+    b->face_means = face_average * columns_at(a, face_set, options.single_precision, center);
     // Own rows: the own columns, the heat input and the face losses.
     b->self = channel_at_rows(*b, a);
     b->self_dipole.assign(cols, 0.0);
@@ -439,8 +440,10 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     if (cool.empty()) cool = grid;
     cf.cool = cool;
     cf.center = 0.5 * (corners[f][0] + corners[f][2]);
-    for (const Vec3& p : cool) m.face_set.add(sample_images, p, m.tol, 1.0 / double(cool.size()), m.center);
-    m.face_set.close_target();
+    for (const Vec3& p : cool) {
+      m.face_set.add(sample_images, p, m.tol, 1.0, m.center);
+      m.face_set.close_target();
+    }
     m.faces.push_back(std::move(cf));
   }
 
@@ -459,6 +462,9 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
   }
   if (m.n_samples) m.sample_set.make_slots();
   if (!m.faces.empty()) m.face_set.make_slots();
+  m.face_average = MatrixXd::Zero(m.faces.size(), m.face_set.targets());
+  for (std::size_t f = 0, point = 0; f < m.faces.size(); ++f)
+    for (std::size_t i = 0; i < m.faces[f].cool.size(); ++i) m.face_average(f, point++) = 1.0 / double(m.faces[f].cool.size());
   const std::size_t nf = m.faces.size();
   for (const ConvectiveFace& cf : m.faces) {
     Eigen::Vector4d mo;
