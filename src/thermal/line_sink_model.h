@@ -75,9 +75,11 @@ struct LineSinkModel::Impl {
   MatrixXd far_face_means;                   // faces x 4: the far lattice for the channels
   MatrixXd far_face_means_fixed;             // the same for the heat input and the faces
   FieldGrid face_grid;
-  // The heat input's field on a `heat_grid` mm grid, for collocation points off `heat_near` (the heated
-  // triangles' bounds grown by two cells); nearer, it is summed exactly.
-  FieldGrid heat_grid;
+  // The heat input's field on a grid over the block, and on a finer one around the heated
+  // triangles (large blocks only: `heat_fine_box`); for collocation points in `heat_near` (the
+  // triangles' bounds grown by two cells of the finest grid there) it is summed exactly.
+  FieldGrid heat_grid, heat_fine;
+  Box heat_fine_box = Box::empty();
   Box heat_near = Box::empty();
 
   // The far lattice's kernel on the same grid: its images of the centre lie a block's width or
@@ -93,7 +95,7 @@ struct LineSinkModel::Impl {
   double heat_at(const Vec3& p) const {
     if (heat_grid.values.empty() || heat_near.contains(p) || !setting.block.contains(p)) return heat_field(p);
     double v;
-    heat_grid.interpolate(p, &v);
+    (heat_fine_box.contains(p) ? heat_fine : heat_grid).interpolate(p, &v);
     return v;
   }
   std::vector<ConvectiveFace> faces;

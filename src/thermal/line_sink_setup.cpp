@@ -198,22 +198,32 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
           for (std::size_t f = 0; f < nf; ++f) g.values[n++] = m.face_field(m.faces[f], p);
         }
   }
-  // Tabulated fields pay off only at their spacing: a block too large for 64 cells of
-  // `heat_grid` mm per axis sums them exactly.
-  const bool grids = options.heat_grid > 0 && (box.size() / options.heat_grid).maxCoeff() <= 64;
-  auto grid_over_block = [&](FieldGrid& g, int fields) {
-    g.origin = box.min;
+  // Tabulated fields over the block: `heat_grid` mm, at most kCoarseCells per axis (a large
+  // block gets a coarser spacing). Built once: nodes x heated triangles x images triangle
+  // potentials, so a large block's heat input gets a second, finer grid (`heat_grid` mm, at
+  // most kFineCells per axis) only around the heated triangles, where the coarse grid's exact
+  // zone would otherwise catch every bore near the cavity.
+  constexpr int kCoarseCells = 32, kFineCells = 80;
+  const bool grids = options.heat_grid > 0;
+  auto grid_over = [&](FieldGrid& g, const Box& region, int fields, int max_cells) {
+    g.origin = region.min;
     g.fields = fields;
     for (int a = 0; a < 3; ++a) {
-      const int cells = std::clamp(int(std::ceil(box.size()[a] / options.heat_grid)), 3, 64);
+      const int cells = std::clamp(int(std::ceil(region.size()[a] / options.heat_grid)), 3, max_cells);
       g.nodes[a] = cells + 1;
-      g.step[a] = box.size()[a] / cells;
+      g.step[a] = region.size()[a] / cells;
     }
     g.values.resize(std::size_t(g.nodes[0]) * g.nodes[1] * g.nodes[2] * fields);
   };
+  auto fill_heat = [&](FieldGrid& g) {
+    std::size_t n = 0;
+    for (int k = 0; k < g.nodes[2]; ++k)
+      for (int j = 0; j < g.nodes[1]; ++j)
+        for (int i = 0; i < g.nodes[0]; ++i) g.values[n++] = m.heat_field(g.origin + g.step.cwiseProduct(Vec3(i, j, k)));
+  };
   if (!m.far_images.empty() && grids) {
     FieldGrid& g = m.far_grid;
-    grid_over_block(g, 4);
+    grid_over(g, box, 4, kCoarseCells);
     std::size_t n = 0;
     for (int k = 0; k < g.nodes[2]; ++k)
       for (int j = 0; j < g.nodes[1]; ++j)
@@ -223,20 +233,24 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
         }
   }
   if (!setting.heat_in.empty() && grids) {
-    FieldGrid& g = m.heat_grid;
-    grid_over_block(g, 1);
-    std::size_t n = 0;
-    for (int k = 0; k < g.nodes[2]; ++k)
-      for (int j = 0; j < g.nodes[1]; ++j)
-        for (int i = 0; i < g.nodes[0]; ++i) g.values[n++] = m.heat_field(box.min + g.step.cwiseProduct(Vec3(i, j, k)));
+    Box bounds = Box::empty();
     for (const HeatedTriangle& t : setting.heat_in)
-      for (const Vec3& v : {t.a, t.b, t.c}) {
-        m.heat_near.min = m.heat_near.min.cwiseMin(v);
-        m.heat_near.max = m.heat_near.max.cwiseMax(v);
-      }
+      for (const Vec3& v : {t.a, t.b, t.c}) bounds.min = bounds.min.cwiseMin(v), bounds.max = bounds.max.cwiseMax(v);
+    FieldGrid& g = m.heat_grid;
+    grid_over(g, box, 1, kCoarseCells);
+    fill_heat(g);
     const Vec3 margin = Vec3::Constant(2 * g.step.maxCoeff());
-    m.heat_near.min -= margin;
-    m.heat_near.max += margin;
+    m.heat_near = {bounds.min - margin, bounds.max + margin};
+    if (g.step.maxCoeff() > 1.01 * options.heat_grid) {
+      const Box region{m.heat_near.min.cwiseMax(box.min), m.heat_near.max.cwiseMin(box.max)};
+      if ((region.size().array() > 0).all()) {
+        m.heat_fine_box = region;
+        grid_over(m.heat_fine, region, 1, kFineCells);
+        fill_heat(m.heat_fine);
+        const Vec3 fine_margin = Vec3::Constant(2 * m.heat_fine.step.maxCoeff());
+        m.heat_near = {bounds.min - fine_margin, bounds.max + fine_margin};
+      }
+    }
   }
   m.heat_samples.resize(m.n_samples);
   m.face_samples.resize(m.n_samples, nf);
