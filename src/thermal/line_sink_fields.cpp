@@ -1,8 +1,7 @@
 #include "line_sink_fields.h"
 
-#include <bit>
+#include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 
 #include "segment_potential.h"
@@ -10,6 +9,8 @@
 namespace mtcs::thermal {
 
 namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
 struct Image1d {
   double mult, offset, sign;
@@ -53,6 +54,19 @@ std::vector<Image> block_images(const Box& block, const std::array<double, 6>& f
 void append_image_points(std::span<const Image> images, const Vec3& s, double tol,
                          std::vector<WeightedPoint>& out) {
   const std::size_t first = out.size();
+  // Two images of s coincide only if s lies on a mirror plane of the group (a face or its
+  // translates by the block's width): strictly between the faces, every image is its own point
+  // and no merging is needed.
+  Vec3 lo = Vec3::Constant(kInf), hi = Vec3::Constant(-kInf);
+  for (const Image& g : images)
+    for (int a = 0; a < 3; ++a)
+      if (g.mult[a] < 0) lo[a] = std::min(lo[a], 0.5 * g.offset[a]), hi[a] = std::max(hi[a], 0.5 * g.offset[a]);
+  bool inside = true;
+  for (int a = 0; a < 3; ++a) inside = inside && (lo[a] == kInf || (s[a] > lo[a] + tol && s[a] < hi[a] - tol));
+  if (inside) {
+    for (const Image& g : images) out.push_back({g.mult.cwiseProduct(s) + g.offset, g.sign});
+    return;
+  }
   for (const Image& g : images) {
     const Vec3 p = g.mult.cwiseProduct(s) + g.offset;
     bool merged = false;
@@ -117,81 +131,6 @@ void element_fields(const ChannelAxis& axis, const Vec3& s, double* phi, double*
     }
     t_prev = t_b;
     r_prev = r_b;
-  }
-}
-
-namespace {
-
-// log x for 1 <= x < 2^127, branch-free so that loops over it vectorise: x = m 2^e with m in
-// [sqrt(1/2), sqrt(2)), log m = 2 atanh((m - 1)/(m + 1)) to f^9 (error below 4e-10).
-inline float log_float(float x) {
-  const std::int32_t bits = std::bit_cast<std::int32_t>(x);
-  std::int32_t e = ((bits >> 23) & 0xff) - 127;
-  float m = std::bit_cast<float>((bits & 0x007fffff) | 0x3f800000);
-  const std::int32_t big = m > 1.41421356f ? 1 : 0;
-  m = big ? 0.5f * m : m;
-  e += big;
-  const float f = (m - 1) / (m + 1), f2 = f * f;
-  const float p = 1 + f2 * (1.0f / 3 + f2 * (1.0f / 5 + f2 * (1.0f / 7 + f2 * (1.0f / 9))));
-  return float(e) * 0.69314718f + 2 * f * p;
-}
-
-}  // namespace
-
-namespace {
-
-struct FloatAxis {
-  float ax, ay, az, ux, uy, uz, n1x, n1y, n1z, n2x, n2y, n2z;
-};
-
-// One element's sink (and dipole) potentials at n points; no branch but selects.
-template <bool Dipoles>
-inline void element_float(const FloatAxis& g, float start, float len, const float* __restrict x,
-                          const float* __restrict y, const float* __restrict z, std::size_t n,
-                          float* __restrict phi, float* __restrict d1, float* __restrict d2) {
-  for (std::size_t i = 0; i < n; ++i) {
-    const float wx = x[i] - g.ax, wy = y[i] - g.ay, wz = z[i] - g.az;
-    const float t0 = wx * g.ux + wy * g.uy + wz * g.uz;
-    const float rx = wx - t0 * g.ux, ry = wy - t0 * g.uy, rz = wz - t0 * g.uz;
-    const float rho2 = rx * rx + ry * ry + rz * rz;
-    const float ta = t0 - start, tb = ta - len;
-    const float ra = std::sqrt(rho2 + ta * ta), rb = std::sqrt(rho2 + tb * tb);
-    // r + |t| and its reciprocal serve both kernels: r - t = rho^2/(r + t) when t > 0.
-    const float pa = ra + std::abs(ta), pb = rb + std::abs(tb);
-    const float ipa = 1 / pa, ipb = 1 / pb;
-    const float A = ta > 0 ? rho2 * ipa : pa;
-    const float B = tb < 0 ? rho2 * ipb : pb;
-    const float D = A + B;
-    phi[i] = log_float((D + 2 * len) / D);
-    if constexpr (Dipoles) {
-      // (ta/ra - tb/rb)/rho^2 in the cancellation-free forms of element_fields.
-      const float ira = 1 / ra, irb = 1 / rb;
-      const float ca = ipa * ira, cb = ipb * irb;
-      const float across = (ta * ira - tb * irb) / rho2;
-      const float factor = tb >= 0 ? cb - ca : (ta <= 0 ? ca - cb : across);
-      d1[i] = factor * (rx * g.n1x + ry * g.n1y + rz * g.n1z);
-      d2[i] = factor * (rx * g.n2x + ry * g.n2y + rz * g.n2z);
-    }
-  }
-}
-
-}  // namespace
-
-__attribute__((target_clones("avx2", "default")))
-void element_fields_float(const ChannelAxis& axis, const Vec3& origin, int kinds, const float* x,
-                          const float* y, const float* z, std::size_t n, float* out) {
-  const Vec3 a = axis.p0 - origin;
-  const FloatAxis g{float(a.x()),       float(a.y()),       float(a.z()),
-                    float(axis.u.x()),  float(axis.u.y()),  float(axis.u.z()),
-                    float(axis.n1.x()), float(axis.n1.y()), float(axis.n1.z()),
-                    float(axis.n2.x()), float(axis.n2.y()), float(axis.n2.z())};
-  const int m = axis.elements;
-  for (int e = 0; e < m; ++e) {
-    const float start = float(e * axis.element_length);
-    const float len = float((e + 1 == m ? axis.length : (e + 1) * axis.element_length) - e * axis.element_length);
-    float* phi = out + std::size_t(e * kinds) * n;
-    if (kinds == 3) element_float<true>(g, start, len, x, y, z, n, phi, phi + n, phi + 2 * n);
-    else element_float<false>(g, start, len, x, y, z, n, phi, nullptr, nullptr);
   }
 }
 

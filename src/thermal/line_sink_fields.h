@@ -51,6 +51,11 @@ void element_fields(const ChannelAxis& axis, const Vec3& s, double* phi, double*
 // k = 0 the sink's phi and k = 1, 2 the dipoles (kinds 3). Relative error ~1e-6.
 void element_fields_float(const ChannelAxis& axis, const Vec3& origin, int kinds, const float* x,
                           const float* y, const float* z, std::size_t n, float* out);
+// The same over the slot layout of many targets (PointSet::make_slots): point j of target t at
+// j * targets + t with weight w there; out[c * targets + t] += the weighted sum over the slots.
+void element_fields_float_slots(const ChannelAxis& axis, const Vec3& origin, int kinds, const float* x,
+                                const float* y, const float* z, const float* w, std::size_t targets,
+                                int slots, float* out);
 
 // The potential of a uniform unit source on a triangle, summed over the images at s.
 double triangle_image_potential(std::span<const Image> images, const Vec3& a, const Vec3& b,

@@ -679,3 +679,21 @@ TEST_CASE("line sinks: best time per evaluation, default options", "[.bench]") {
   std::printf("full_ms,two_of_three_moved_ms,one_of_three_moved_ms,unchanged_ms\n%.4f,%.4f,%.4f,%.4f\n",
               full, incremental, single, reused);
 }
+
+// For a profiler: one bore of three moved back and forth, nothing else (the model built once).
+TEST_CASE("line sinks: one bore moved, in a loop", "[.bench]") {
+  const Reference ref = patch_reference();
+  const LineSinkModel model(block_setting(), ref.samples);
+  const auto bores = block_bores();
+  auto one = bores;
+  one[1].axis.p0.y() += 0.5, one[1].axis.p1.y() += 0.5;
+  LineSinkCache cache;
+  std::vector<double> times;
+  for (int i = 0; i < 20000; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    model.solve((i % 2) ? bores : one, cache);
+    times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::sort(times.begin(), times.end());
+  std::printf("one_of_three_moved_ms best %.4f median %.4f\n", times.front(), times[times.size() / 2]);
+}

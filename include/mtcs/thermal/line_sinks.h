@@ -20,8 +20,8 @@
 // image. That split assumes a compact block (no side much shorter than the others): for a slab,
 // sum more levels exactly and set far_images to 0.
 //
-// Default (T2d, 4 elements) on the reference block: RMS 0.14 K against FreeFem++ P2, 0.44 ms
-// per full evaluation, 0.19 ms with one bore changed (experiments/thermal/line_sinks.md).
+// Default (T2d, 4 elements) on the reference block: RMS 0.14 K against FreeFem++ P2, 0.31 ms
+// per full evaluation, 0.135 ms with one bore changed (experiments/thermal/line_sinks.md).
 
 #include <array>
 #include <map>
@@ -46,7 +46,8 @@ struct LineSinkOptions {
   int face_grid = 4;    // face_grid^2 points per convective face for its mean temperature
   bool single_precision = true;  // the per-channel columns at the samples in float
   double heat_grid = 4;          // mm: the heat input's field tabulated for the collocation
-                                 // points 2 cells or more from it (0: always summed exactly)
+                                 // points 2 cells or more from it (0: always summed exactly);
+                                 // a large block: a coarser grid, this one around the heat
 };
 
 // The per-channel and per-pair influence blocks of the last evaluation(s), keyed by the exact

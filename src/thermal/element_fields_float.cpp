@@ -1,0 +1,201 @@
+// The line-sink tiers' hot loop: the fields of one channel's elements at many points in single
+// precision, vectorised over the points (AVX2 when the CPU has it). Per point, the nodes between
+// elements are shared: M + 1 square roots and 2 (M + 1) reciprocals for M elements, not 2 M and
+// 4 M. With slot weights the image points of each target are summed on the fly, so no
+// points x columns buffer is written and read back.
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "line_sink_fields.h"
+
+namespace mtcs::thermal {
+
+namespace {
+
+// log x for 1 <= x < 2^127, branch-free so that loops over it vectorise: x = m 2^e with m in
+// [sqrt(1/2), sqrt(2)), log m = 2 atanh((m - 1)/(m + 1)) to f^9 (error below 4e-10).
+inline float log_float(float x) {
+  const std::int32_t bits = std::bit_cast<std::int32_t>(x);
+  std::int32_t e = ((bits >> 23) & 0xff) - 127;
+  float m = std::bit_cast<float>((bits & 0x007fffff) | 0x3f800000);
+  const std::int32_t big = m > 1.41421356f ? 1 : 0;
+  m = big ? 0.5f * m : m;
+  e += big;
+  const float f = (m - 1) / (m + 1), f2 = f * f;
+  const float p = 1 + f2 * (1.0f / 3 + f2 * (1.0f / 5 + f2 * (1.0f / 7 + f2 * (1.0f / 9))));
+  return float(e) * 0.69314718f + 2 * f * p;
+}
+
+struct FloatAxis {
+  float ax, ay, az, ux, uy, uz, n1x, n1y, n1z, n2x, n2y, n2z;
+};
+
+// All M elements' sink (and dipole) potentials at n points; no branch but selects, the element
+// loop unrolled (M is a constant) so that the point loop vectorises. node[i]: the axial position
+// of node i from the axis' start (node[M] = the length). out[c * out_stride + i] = value, or
+// with Accumulate += w[i] * value (one slot of the slot layout: every target's j-th image).
+template <int M, bool Dipoles, bool Accumulate>
+[[gnu::always_inline]] inline void elements_float(const FloatAxis g, const float* node, const float* __restrict x,
+                           const float* __restrict y, const float* __restrict z, const float* __restrict w,
+                           std::size_t n, float* __restrict out, std::size_t out_stride) {
+  constexpr int kinds = Dipoles ? 3 : 1;
+  float s[M + 1], len2[M];
+  for (int e = 0; e <= M; ++e) s[e] = node[e];
+  for (int e = 0; e < M; ++e) len2[e] = 2 * (node[e + 1] - node[e]);
+  // The columns of out are disjoint ranges: no dependence between points (no alias checks).
+#pragma GCC ivdep
+  for (std::size_t i = 0; i < n; ++i) {
+    const float wx = x[i] - g.ax, wy = y[i] - g.ay, wz = z[i] - g.az;
+    const float t0 = wx * g.ux + wy * g.uy + wz * g.uz;
+    const float rx = wx - t0 * g.ux, ry = wy - t0 * g.uy, rz = wz - t0 * g.uz;
+    const float rho2 = rx * rx + ry * ry + rz * rz;
+    const float inv_rho2 = 1 / rho2;
+    const float c1 = rx * g.n1x + ry * g.n1y + rz * g.n1z, c2 = rx * g.n2x + ry * g.n2y + rz * g.n2z;
+    // Node a of the first element; then each element's node b becomes the next one's a.
+    float ta = t0 - s[0];
+    float ra = std::sqrt(rho2 + ta * ta);
+    float pa = ra + std::abs(ta);
+    float inv = 1 / (pa * ra);  // one division for both reciprocals
+    float ipa = ra * inv, ira = pa * inv;
+    const float wi = Accumulate ? w[i] : 1.0f;
+#pragma GCC unroll 16
+    for (int e = 0; e < M; ++e) {
+      const float tb = t0 - s[e + 1];
+      const float rb = std::sqrt(rho2 + tb * tb);
+      // r + |t| and its reciprocal serve both kernels: r - t = rho^2/(r + t) when t > 0.
+      const float pb = rb + std::abs(tb);
+      const float invb = 1 / (pb * rb);
+      const float ipb = rb * invb, irb = pb * invb;
+      const float A = ta > 0 ? rho2 * ipa : pa;
+      const float B = tb < 0 ? rho2 * ipb : pb;
+      const float D = A + B;
+      float v[3];
+      v[0] = log_float((D + len2[e]) / D);
+      if constexpr (Dipoles) {
+        // (ta/ra - tb/rb)/rho^2 in the cancellation-free forms of element_fields.
+        const float ca = ipa * ira, cb = ipb * irb;
+        const float across = (ta * ira - tb * irb) * inv_rho2;
+        const float factor = tb >= 0 ? cb - ca : (ta <= 0 ? ca - cb : across);
+        v[1] = factor * c1;
+        v[2] = factor * c2;
+      }
+#pragma GCC unroll 3
+      for (int k = 0; k < kinds; ++k) {
+        float& o = out[std::size_t(e * kinds + k) * out_stride + i];
+        if constexpr (Accumulate) o += wi * v[k];
+        else o = v[k];
+      }
+      ta = tb, ra = rb, pa = pb, ipa = ipb, ira = irb;
+    }
+  }
+}
+
+// Any element count: one element at a time (the nodes recomputed per element).
+template <bool Dipoles, bool Accumulate>
+[[gnu::always_inline]] inline void elements_float_any(const FloatAxis& g, int m, const float* node, const float* x, const float* y,
+                        const float* z, const float* w, std::size_t n, float* out, std::size_t out_stride) {
+  constexpr int kinds = Dipoles ? 3 : 1;
+  for (int e = 0; e < m; ++e) {
+    const float pair[2] = {0, node[e + 1] - node[e]};
+    FloatAxis shifted = g;
+    shifted.ax += node[e] * g.ux, shifted.ay += node[e] * g.uy, shifted.az += node[e] * g.uz;
+    elements_float<1, Dipoles, Accumulate>(shifted, pair, x, y, z, w, n,
+                                           out + std::size_t(e * kinds) * out_stride, out_stride);
+  }
+}
+
+// Inlined into each target clone below, so that the AVX2 clone gets AVX2 loops.
+template <bool Accumulate>
+[[gnu::always_inline]] inline void dispatch(const FloatAxis& g, int m, int kinds, const float* node, const float* x, const float* y,
+              const float* z, const float* w, std::size_t n, float* out, std::size_t out_stride) {
+#define MTCS_ELEMENTS(M)                                                                      \
+  case M:                                                                                     \
+    if (kinds == 3) elements_float<M, true, Accumulate>(g, node, x, y, z, w, n, out, out_stride); \
+    else elements_float<M, false, Accumulate>(g, node, x, y, z, w, n, out, out_stride);       \
+    return;
+  switch (m) {
+    MTCS_ELEMENTS(1)
+    MTCS_ELEMENTS(2)
+    MTCS_ELEMENTS(3)
+    MTCS_ELEMENTS(4)
+    MTCS_ELEMENTS(6)
+    MTCS_ELEMENTS(8)
+    MTCS_ELEMENTS(12)
+    default: break;
+  }
+#undef MTCS_ELEMENTS
+  if (kinds == 3) elements_float_any<true, Accumulate>(g, m, node, x, y, z, w, n, out, out_stride);
+  else elements_float_any<false, Accumulate>(g, m, node, x, y, z, w, n, out, out_stride);
+}
+
+FloatAxis float_axis(const ChannelAxis& axis, const Vec3& origin, std::vector<float>& node) {
+  const Vec3 a = axis.p0 - origin;
+  node.resize(axis.elements + 1);
+  for (int e = 0; e < axis.elements; ++e) node[e] = float(e * axis.element_length);
+  node[axis.elements] = float(axis.length);
+  return {float(a.x()),       float(a.y()),       float(a.z()),       float(axis.u.x()),
+          float(axis.u.y()),  float(axis.u.z()),  float(axis.n1.x()), float(axis.n1.y()),
+          float(axis.n1.z()), float(axis.n2.x()), float(axis.n2.y()), float(axis.n2.z())};
+}
+
+}  // namespace
+
+// Each entry point compiled twice, for AVX2 with FMA and for the baseline, picked at run time
+// (target_clones cannot ask for two features at once).
+#define MTCS_FIELDS_BODY                                                                   \
+  std::vector<float> node;                                                                 \
+  const FloatAxis g = float_axis(axis, origin, node);                                      \
+  dispatch<false>(g, axis.elements, kinds, node.data(), x, y, z, nullptr, n, out, n);
+#define MTCS_SLOTS_BODY                                                                     \
+  std::vector<float> node;                                                                  \
+  const FloatAxis g = float_axis(axis, origin, node);                                       \
+  for (int j = 0; j < slots; ++j) {                                                         \
+    const std::size_t k = std::size_t(j) * targets;                                         \
+    dispatch<true>(g, axis.elements, kinds, node.data(), x + k, y + k, z + k, w + k, targets, out, targets); \
+  }
+
+namespace {
+
+bool has_avx2_fma() {
+  static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  return yes;
+}
+
+__attribute__((target("avx2,fma"))) void fields_avx2(const ChannelAxis& axis, const Vec3& origin, int kinds,
+                                                     const float* x, const float* y, const float* z,
+                                                     std::size_t n, float* out) {
+  MTCS_FIELDS_BODY
+}
+void fields_base(const ChannelAxis& axis, const Vec3& origin, int kinds, const float* x, const float* y,
+                 const float* z, std::size_t n, float* out) {
+  MTCS_FIELDS_BODY
+}
+__attribute__((target("avx2,fma"))) void slots_avx2(const ChannelAxis& axis, const Vec3& origin, int kinds,
+                                                    const float* x, const float* y, const float* z,
+                                                    const float* w, std::size_t targets, int slots, float* out) {
+  MTCS_SLOTS_BODY
+}
+void slots_base(const ChannelAxis& axis, const Vec3& origin, int kinds, const float* x, const float* y,
+                const float* z, const float* w, std::size_t targets, int slots, float* out) {
+  MTCS_SLOTS_BODY
+}
+
+}  // namespace
+
+void element_fields_float(const ChannelAxis& axis, const Vec3& origin, int kinds, const float* x,
+                          const float* y, const float* z, std::size_t n, float* out) {
+  if (has_avx2_fma()) fields_avx2(axis, origin, kinds, x, y, z, n, out);
+  else fields_base(axis, origin, kinds, x, y, z, n, out);
+}
+
+void element_fields_float_slots(const ChannelAxis& axis, const Vec3& origin, int kinds, const float* x,
+                                const float* y, const float* z, const float* w, std::size_t targets,
+                                int slots, float* out) {
+  if (has_avx2_fma()) slots_avx2(axis, origin, kinds, x, y, z, w, targets, slots, out);
+  else slots_base(axis, origin, kinds, x, y, z, w, targets, slots, out);
+}
+
+}  // namespace mtcs::thermal

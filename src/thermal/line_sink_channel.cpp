@@ -1,0 +1,126 @@
+// One channel's influence columns (what LineSinkCache keeps per channel): at the samples, at
+// the convective faces' grids, at its own collocation rows, and its moments for the far lattice.
+
+#include "line_sink_model.h"
+
+namespace mtcs::thermal {
+
+MatrixXd LineSinkModel::Impl::columns_at(const ChannelAxis& source, const PointSet& ps, bool single,
+                                         const Vec3& origin) const {
+  const int cols = source.elements * kinds;
+  MatrixXd out = MatrixXd::Zero(ps.targets(), cols);
+  if (single && ps.slots > 0) {
+    const std::size_t T = ps.targets();
+    std::vector<float> acc(T * cols, 0.0f);
+    element_fields_float_slots(source, origin, kinds, ps.sx.data(), ps.sy.data(), ps.sz.data(), ps.sw.data(), T,
+                               ps.slots, acc.data());
+    for (int c = 0; c < cols; ++c) {
+      const float scale = float((c % kinds == 0 ? -1 : 1) * inv4pik);
+      for (std::size_t t = 0; t < T; ++t) out(t, c) = scale * acc[c * T + t];
+    }
+  } else if (single) {
+    const std::size_t n = ps.points.size();
+    std::vector<float> buf(n * cols);
+    element_fields_float(source, origin, kinds, ps.x.data(), ps.y.data(), ps.z.data(), n, buf.data());
+    for (int c = 0; c < cols; ++c) {
+      const double scale = (c % kinds == 0 ? -1 : 1) * inv4pik;  // a sink takes heat out
+      const float* v = buf.data() + std::size_t(c) * n;  // n may be 0
+      for (std::size_t t = 0; t < ps.targets(); ++t) {
+        double acc = 0;
+        for (std::size_t i = ps.begin[t]; i < ps.begin[t + 1]; ++i) acc += ps.points[i].weight * v[i];
+        out(t, c) = scale * acc;
+      }
+    }
+  } else {
+    std::vector<double> col(cols);
+    for (std::size_t t = 0; t < ps.targets(); ++t) {
+      std::fill(col.begin(), col.end(), 0.0);
+      for (std::size_t i = ps.begin[t]; i < ps.begin[t + 1]; ++i)
+        add_columns(source, ps.points[i].point, ps.points[i].weight, col.data());
+      for (int c = 0; c < cols; ++c) out(t, c) = col[c];
+    }
+  }
+  return out;
+}
+
+MatrixXd LineSinkModel::Impl::channel_at_rows(const LineSinkCache::ChannelBlock& rows, const ChannelAxis& source) const {
+  const MatrixXd v = columns_at(source, rows.walls, rows.walls_single, rows.walls_origin);
+  MatrixXd out(rows.axis.elements * kinds, v.cols());
+  for (int e = 0; e < rows.axis.elements; ++e) {
+    out.row(e * kinds) = 0.25 * (v.row(4 * e) + v.row(4 * e + 1) + v.row(4 * e + 2) + v.row(4 * e + 3));
+    if (kinds == 3) {
+      out.row(e * kinds + 1) = 0.5 * (v.row(4 * e) - v.row(4 * e + 1));
+      out.row(e * kinds + 2) = 0.5 * (v.row(4 * e + 2) - v.row(4 * e + 3));
+    }
+  }
+  return out;
+}
+
+std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(const Channel& ch) const {
+  auto b = std::make_shared<LineSinkCache::ChannelBlock>();
+  b->axis = channel_axis(ch, options.elements);
+  const ChannelAxis& a = b->axis;
+  const int cols = a.elements * kinds;
+  b->cols = cols;
+  // Wall points relative to the channel's middle: a float resolves 6e-8 of the distances
+  // there, fine next to a radius above 1e-3 of the block and the channel.
+  b->walls_origin = a.p0 + 0.5 * a.length * a.u;
+  b->walls_single = options.single_precision &&
+                    a.radius >= 1e-3 * (setting.block.size().norm() + a.length);
+  for (int e = 0; e < a.elements; ++e)
+    for (const Vec3& p : wall_points(a, e)) {
+      b->walls.add(images, p, tol, 1.0, b->walls_origin);
+      b->walls.close_target();
+    }
+  if (b->walls_single) b->walls.make_slots();
+  // At the samples.
+  const MatrixXd at_samples = columns_at(a, sample_set, options.single_precision, sample_origin);
+  if (options.single_precision) {
+    b->sample_cols_f.resize(n_samples * cols);
+    for (int c = 0; c < cols; ++c)
+      for (std::size_t s = 0; s < n_samples; ++s) b->sample_cols_f[c * n_samples + s] = float(at_samples(s, c));
+  } else {
+    b->sample_cols_d.assign(at_samples.data(), at_samples.data() + at_samples.size());
+  }
+  // At the convective faces' grids (means).
+  b->face_means = face_average * columns_at(a, face_set, options.single_precision, center);
+  // Own rows: the own columns, the heat input and the face losses.
+  b->self = channel_at_rows(*b, a);
+  b->self_dipole.assign(cols, 0.0);
+  if (kinds == 3)
+    for (int e = 0; e < a.elements; ++e)
+      for (int j = 1; j <= 2; ++j) {
+        const int r = e * 3 + j;
+        b->self_dipole[r] = b->self(r, r);
+        b->self(r, r) = 0;  // V_self: kept apart, the film condition weighs it differently
+      }
+  b->heat_rows.resize(cols);
+  row_functionals(a, [&](const Vec3& p, double* v) { v[0] = heat_at(p); }, 1,
+                  b->heat_rows.data(), cols);
+  b->far_rows.resize(cols, 4);
+  row_functionals(a, [&](const Vec3& p, double* v) {
+    const Eigen::Vector4d k = far_at(p);
+    for (int i = 0; i < 4; ++i) v[i] = k[i];
+  }, 4, b->far_rows.data(), cols);
+  b->moments = MatrixXd::Zero(4, cols);
+  for (int e = 0; e < a.elements; ++e) {
+    const Vec3 mid = a.p0 + ((e + 0.5) * a.element_length) * a.u;
+    const double L = a.element_length;
+    b->moments(0, e * kinds) = -L;  // a sink: charge -L per unit strength
+    b->moments.block<3, 1>(1, e * kinds) = -L * (mid - center);
+    if (kinds == 3) {
+      b->moments.block<3, 1>(1, e * kinds + 1) = L * a.n1;
+      b->moments.block<3, 1>(1, e * kinds + 2) = L * a.n2;
+    }
+  }
+  b->face_rows.resize(cols, faces.size());
+  if (!faces.empty())
+    row_functionals(a, [&](const Vec3& p, double* v) {
+      if (setting.block.contains(p)) return face_grid.interpolate(p, v);
+      for (std::size_t f = 0; f < faces.size(); ++f) v[f] = face_field(faces[f], p);  // no extrapolation
+    },
+                    int(faces.size()), b->face_rows.data(), cols);
+  return b;
+}
+
+}  // namespace mtcs::thermal

@@ -1,0 +1,193 @@
+#pragma once
+// The line-sink model's insides, shared by its files: the cached per-channel blocks, the
+// convective faces, and Impl (what LineSinkModel precomputes per setting and samples).
+//   line_sink_setup.cpp    the model's build: images, faces, samples, tabulated fields
+//   line_sink_channel.cpp  one channel's influence columns (what the cache keeps)
+//   line_sinks.cpp         one layout: cache lookup, assembly, dense solve, sample sums
+
+#include <Eigen/Dense>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "line_sink_fields.h"
+#include "line_sink_tables.h"
+#include "mtcs/thermal/line_sinks.h"
+
+namespace mtcs::thermal {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+inline constexpr double kInfiniteFilm = std::numeric_limits<double>::infinity();
+
+// ---- cache blocks ----------------------------------------------------------------------------
+
+struct LineSinkCache::ChannelBlock {
+  ChannelAxis axis;
+  PointSet walls;  // 4 wall points per element, all images, relative to walls_origin
+  Vec3 walls_origin = Vec3::Zero();
+  bool walls_single = false;  // the radius is coarse enough for the float kernel
+  int cols = 0;
+  std::vector<float> sample_cols_f;   // samples x cols, column-major (single precision)
+  std::vector<double> sample_cols_d;  // the same in double precision
+  MatrixXd face_means;                // convective faces x cols
+  MatrixXd self;                      // rows x cols: own columns at own rows (V_self removed)
+  std::vector<double> self_dipole;    // per row: the own element's dipole at its own wall
+  VectorXd heat_rows;                 // heat input's field at the rows
+  MatrixXd face_rows;                 // rows x convective faces
+  MatrixXd far_rows;                  // rows x 4: the far lattice's kernel (see Impl::far_kernel)
+  MatrixXd moments;                   // 4 x cols: each column's charge and first moment
+};
+
+struct LineSinkCache::PairBlock {
+  MatrixXd block;  // rows of the first channel x columns of the second
+};
+
+// ---- the model -------------------------------------------------------------------------------
+
+struct ConvectiveFace {
+  int face = 0;
+  double film = 0, ambient = 0;
+  double area = 0, convective_area = 0;
+  std::array<Vec3, 4> corners;
+  std::vector<Vec3> cool;           // the grid points off the heated triangles
+  Vec3 center;
+};
+
+struct LineSinkModel::Impl {
+  Setting setting;
+  LineSinkOptions options;
+  int kinds = 1;  // columns per element: 1 (sink) or 3 (sink, two dipoles)
+  double inv4pik = 0;
+  double tol = 0;
+  std::vector<Image> images;      // summed exactly
+  std::vector<Image> far_images;  // summed as the charge and dipole of the whole block's image
+  Vec3 center = Vec3::Zero();     // the block's centre: where the moments are taken
+  Vec3 sample_origin = Vec3::Zero();  // the samples' centre: their float coordinates' origin
+  Eigen::Vector4d heat_moments = Eigen::Vector4d::Zero();
+  std::vector<Eigen::Vector4d> face_moments;
+  MatrixXd far_samples;       // samples x 4: the far lattice for the channels' columns
+  MatrixXd far_samples_fixed; // the same for the heat input and the faces (exact to `images`)
+  MatrixXd far_face_means;                   // faces x 4: the far lattice for the channels
+  MatrixXd far_face_means_fixed;             // the same for the heat input and the faces
+  FieldGrid face_grid;
+  // The heat input's field on a grid over the block, and on a finer one around the heated
+  // triangles (large blocks only: `heat_fine_box`); for collocation points in `heat_near` (the
+  // triangles' bounds grown by two cells of the finest grid there) it is summed exactly.
+  FieldGrid heat_grid, heat_fine;
+  Box heat_fine_box = Box::empty();
+  Box heat_near = Box::empty();
+
+  // The far lattice's kernel on the same grid: its images of the centre lie a block's width or
+  // more outside, so it is smooth everywhere inside.
+  FieldGrid far_grid;
+  Eigen::Vector4d far_at(const Vec3& p) const {
+    if (far_grid.values.empty() || !setting.block.contains(p)) return far_kernel(p);
+    Eigen::Vector4d v;
+    far_grid.interpolate(p, v.data());
+    return v;
+  }
+
+  double heat_at(const Vec3& p) const {
+    if (heat_grid.values.empty() || heat_near.contains(p) || !setting.block.contains(p)) return heat_field(p);
+    double v;
+    (heat_fine_box.contains(p) ? heat_fine : heat_grid).interpolate(p, &v);
+    return v;
+  }
+  std::vector<ConvectiveFace> faces;
+  std::optional<double> fixed_constant;  // an isothermal face's ambient
+  double heat_in = 0;
+  std::size_t n_samples = 0;
+  PointSet sample_set;                       // the samples, image-expanded
+  PointSet face_set;                         // the convective faces' grid points, one target each
+  MatrixXd face_average;                     // faces x grid points: each face's mean
+  VectorXd heat_samples;                     // heat input's field at the samples
+  MatrixXd face_samples;                     // samples x faces: unit face loss
+  VectorXd heat_face_means;                  // per face: heat input's field, face mean
+  MatrixXd face_face_means;                  // faces x faces
+
+  double heat_field(const Vec3& p) const {
+    double sum = 0;
+    for (const HeatedTriangle& t : setting.heat_in)
+      sum += t.flux * triangle_image_potential(images, t.a, t.b, t.c, p);
+    return sum * inv4pik;
+  }
+  // Field of a unit uniform loss (W/mm^2 out of the steel) over a face.
+  double face_field(const ConvectiveFace& f, const Vec3& p) const {
+    const auto& c = f.corners;
+    return -inv4pik * (triangle_image_potential(images, c[0], c[1], c[2], p) +
+                       triangle_image_potential(images, c[0], c[2], c[3], p));
+  }
+
+
+  // Adds w * (columns of `axis` at p) to col[0 .. elements * kinds).
+  void add_columns(const ChannelAxis& axis, const Vec3& p, double w, double* col) const {
+    double phi[64], d1[64], d2[64];
+    const int m = axis.elements;
+    element_fields(axis, p, phi, kinds == 3 ? d1 : nullptr, d2);
+    const double s = w * inv4pik;
+    for (int e = 0; e < m; ++e) {
+      col[e * kinds] -= s * phi[e];  // a sink: q' W/mm leaves the steel
+      if (kinds == 3) {
+        col[e * kinds + 1] += s * d1[e];
+        col[e * kinds + 2] += s * d2[e];
+      }
+    }
+  }
+
+  // The far images of the block, each seen as a point charge and dipole at its centre:
+  // (sum sigma / d, sum sigma L_g (s - g(c)) / d^3) / (4 pi k), d = |s - g(c)|. Dotted with the
+  // charge and first moment (about c) of everything in the block, it is the far lattice's field.
+  Eigen::Vector4d far_kernel(const Vec3& s) const { return far_kernel(s, far_images); }
+  Eigen::Vector4d far_kernel(const Vec3& s, std::span<const Image> far) const {
+    Eigen::Vector4d k = Eigen::Vector4d::Zero();
+    for (const Image& g : far) {
+      const Vec3 d = s - (g.mult.cwiseProduct(center) + g.offset);
+      const double r2 = d.squaredNorm();
+      const double inv = 1 / std::sqrt(r2);
+      k[0] += g.sign * inv;
+      k.tail<3>() += (g.sign * inv / r2) * g.mult.cwiseProduct(d);
+    }
+    return k * inv4pik;
+  }
+
+  // The wall points of element e: m +- R n1, m +- R n2.
+  std::array<Vec3, 4> wall_points(const ChannelAxis& a, int e) const {
+    const Vec3 m = a.p0 + ((e + 0.5) * a.element_length) * a.u;
+    return {m + a.radius * a.n1, m - a.radius * a.n1, m + a.radius * a.n2, m - a.radius * a.n2};
+  }
+
+  // The rows' functionals of any field f (images included by f): per element the wall's
+  // four-point mean and, for T2d, the half-differences along n1 and n2 (first harmonic).
+  template <class Field>
+  void row_functionals(const ChannelAxis& rows, Field&& f, int width, double* out, int stride) const {
+    std::vector<double> v(4 * width);
+    for (int e = 0; e < rows.elements; ++e) {
+      const auto w = wall_points(rows, e);
+      for (int i = 0; i < 4; ++i) f(w[i], v.data() + std::size_t(i) * std::size_t(width));
+      for (int c = 0; c < width; ++c) {
+        const double* x = &v[c];
+        out[(e * kinds) + c * stride] = 0.25 * (x[0] + x[width] + x[2 * width] + x[3 * width]);
+        if (kinds == 3) {
+          out[(e * kinds + 1) + c * stride] = 0.5 * (x[0] - x[width]);
+          out[(e * kinds + 2) + c * stride] = 0.5 * (x[2 * width] - x[3 * width]);
+        }
+      }
+    }
+  }
+
+  // Columns of `source` at every target of a point set: targets x cols. In single precision
+  // only where asked (samples, face grids): a wall point sits a radius, maybe 1e-3 mm, from
+  // its axis, finer than a float resolves at the block's coordinates.
+  MatrixXd columns_at(const ChannelAxis& source, const PointSet& ps, bool single, const Vec3& origin) const;
+  // Columns of `source` at the rows of a channel: its wall points' mean and half-differences.
+  MatrixXd channel_at_rows(const LineSinkCache::ChannelBlock& rows, const ChannelAxis& source) const;
+  // Everything of one channel that does not depend on the others (line_sink_channel.cpp).
+  std::shared_ptr<LineSinkCache::ChannelBlock> build_channel(const Channel& ch) const;
+};
+
+}  // namespace mtcs::thermal

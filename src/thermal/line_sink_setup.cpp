@@ -1,0 +1,276 @@
+// The line-sink model's build (once per setting and samples): the image lattice, the convective
+// faces, the samples expanded by their images, and the layout-independent fields (heat input,
+// face losses, far lattice) at the samples and on grids over the block.
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "line_sink_model.h"
+
+namespace mtcs::thermal {
+
+namespace {
+
+constexpr double kInf = kInfiniteFilm;
+
+// The six faces of a box as rectangles (two triangles each), in BlockFace order.
+std::array<std::array<Vec3, 4>, 6> face_corners(const Box& b) {
+  const Vec3& lo = b.min;
+  const Vec3& hi = b.max;
+  std::array<std::array<Vec3, 4>, 6> out;
+  for (int a = 0; a < 3; ++a) {
+    const int u = (a + 1) % 3, v = (a + 2) % 3;
+    for (int side = 0; side < 2; ++side) {
+      Vec3 c = lo;
+      c[a] = side ? hi[a] : lo[a];
+      std::array<Vec3, 4> r{c, c, c, c};
+      r[1][u] = hi[u];
+      r[2][u] = hi[u];
+      r[2][v] = hi[v];
+      r[3][v] = hi[v];
+      out[2 * a + side] = r;
+    }
+  }
+  return out;
+}
+
+bool on_plane(const Vec3& p, int axis, double value, double tol) {
+  return std::abs(p[axis] - value) <= tol;
+}
+
+// Point in a triangle lying in the plane of a face (2-D test on the face's other axes).
+bool in_triangle(const Vec3& p, const HeatedTriangle& t, int axis) {
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  auto cross = [&](const Vec3& a, const Vec3& b, const Vec3& q) {
+    return (b[u] - a[u]) * (q[v] - a[v]) - (b[v] - a[v]) * (q[u] - a[u]);
+  };
+  const double c0 = cross(t.a, t.b, p), c1 = cross(t.b, t.c, p), c2 = cross(t.c, t.a, p);
+  return (c0 >= 0 && c1 >= 0 && c2 >= 0) || (c0 <= 0 && c1 <= 0 && c2 <= 0);
+}
+
+}  // namespace
+
+LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, LineSinkOptions options)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  if (options.elements < 1 || options.elements > 64)
+    throw std::invalid_argument("line sinks: elements per channel must be in 1..64");
+  if (options.images < 0) throw std::invalid_argument("line sinks: images must be >= 0");
+  if (!(setting.conductivity > 0)) throw std::invalid_argument("line sinks: conductivity must be > 0");
+  m.setting = setting;
+  m.options = options;
+  m.kinds = options.tier == Tier::T2d ? 3 : 1;
+  m.inv4pik = 1 / (4 * std::numbers::pi * setting.conductivity);
+  const Box& box = setting.block;
+  m.tol = 1e-12 * (box.max.cwiseAbs().maxCoeff() + box.min.cwiseAbs().maxCoeff() + box.size().maxCoeff());
+
+  std::array<double, 6> sign{};
+  for (int f = 0; f < 6; ++f) {
+    const FaceCondition& fc = setting.faces[f];
+    sign[f] = fc.film == kInf ? -1 : 1;
+    if (fc.film == kInf) {
+      if (m.fixed_constant && *m.fixed_constant != fc.ambient)
+        throw std::invalid_argument("line sinks: isothermal faces must share one ambient");
+      m.fixed_constant = fc.ambient;
+    }
+  }
+  m.images = block_images(box, sign, options.images);
+  if (options.far_images > options.images) {
+    m.far_images = block_images(box, sign, options.far_images);
+    m.far_images.erase(m.far_images.begin(), m.far_images.begin() + m.images.size());
+  }
+  m.center = 0.5 * (box.min + box.max);
+  // At the samples (the bulk of the work) fewer images may be summed exactly, the rest as the
+  // far lattice's charge and dipole.
+  const int sample_levels = options.sample_images < 0 ? options.images : std::min(options.sample_images, options.images);
+  const std::vector<Image> sample_images = block_images(box, sign, sample_levels);
+  std::vector<Image> sample_far;
+  if (options.far_images > sample_levels) {
+    sample_far = block_images(box, sign, options.far_images);
+    sample_far.erase(sample_far.begin(), sample_far.begin() + sample_images.size());
+  }
+
+  for (const HeatedTriangle& t : setting.heat_in) {
+    const double q = t.flux * 0.5 * (t.b - t.a).cross(t.c - t.a).norm();
+    m.heat_in += q;
+    m.heat_moments[0] += q;
+    m.heat_moments.tail<3>() += q * ((t.a + t.b + t.c) / 3 - m.center);
+  }
+
+  // Convective faces: one unknown uniform loss each, collocated on a grid of the face's part
+  // that is not heated.
+  const auto corners = face_corners(box);
+  const int g = std::max(1, options.face_grid);
+  for (int f = 0; f < 6; ++f) {
+    const FaceCondition& fc = setting.faces[f];
+    if (!(fc.film > 0) || fc.film == kInf) continue;
+    ConvectiveFace cf;
+    cf.face = f;
+    cf.film = fc.film;
+    cf.ambient = fc.ambient;
+    cf.corners = corners[f];
+    const int axis = f / 2;
+    const double plane = (f % 2) ? box.max[axis] : box.min[axis];
+    cf.area = (corners[f][1] - corners[f][0]).norm() * (corners[f][3] - corners[f][0]).norm();
+    cf.convective_area = cf.area;
+    std::vector<const HeatedTriangle*> on_face;
+    for (const HeatedTriangle& t : setting.heat_in)
+      if (on_plane(t.a, axis, plane, m.tol) && on_plane(t.b, axis, plane, m.tol) && on_plane(t.c, axis, plane, m.tol)) {
+        on_face.push_back(&t);
+        cf.convective_area -= 0.5 * (t.b - t.a).cross(t.c - t.a).norm();
+      }
+    if (cf.convective_area <= 1e-9 * cf.area) continue;
+    std::vector<Vec3> grid, cool;
+    for (int i = 0; i < g; ++i)
+      for (int j = 0; j < g; ++j) {
+        const Vec3 p = corners[f][0] + ((i + 0.5) / g) * (corners[f][1] - corners[f][0]) +
+                       ((j + 0.5) / g) * (corners[f][3] - corners[f][0]);
+        grid.push_back(p);
+        bool heated = false;
+        for (const HeatedTriangle* t : on_face) heated = heated || in_triangle(p, *t, axis);
+        if (!heated) cool.push_back(p);
+      }
+    if (cool.empty()) cool = grid;
+    cf.cool = cool;
+    cf.center = 0.5 * (corners[f][0] + corners[f][2]);
+    for (const Vec3& p : cool) {
+      m.face_set.add(sample_images, p, m.tol, 1.0, m.center);
+      m.face_set.close_target();
+    }
+    m.faces.push_back(std::move(cf));
+  }
+
+  // The samples: expanded by the images, and the layout-independent fields there.
+  m.n_samples = samples.size();
+  // Float coordinates from the samples' own centre: a float resolves 6e-8 of their spread,
+  // not of the block's size or distance from the origin.
+  if (m.n_samples) {
+    Box bounds = Box::empty();
+    for (const Vec3& p : samples.points) bounds.min = bounds.min.cwiseMin(p), bounds.max = bounds.max.cwiseMax(p);
+    m.sample_origin = 0.5 * (bounds.min + bounds.max);
+  }
+  for (const Vec3& p : samples.points) {
+    m.sample_set.add(sample_images, p, m.tol, 1.0, m.sample_origin);
+    m.sample_set.close_target();
+  }
+  if (m.n_samples) m.sample_set.make_slots();
+  if (!m.faces.empty()) m.face_set.make_slots();
+  m.face_average = MatrixXd::Zero(m.faces.size(), m.face_set.targets());
+  for (std::size_t f = 0, point = 0; f < m.faces.size(); ++f)
+    for (std::size_t i = 0; i < m.faces[f].cool.size(); ++i) m.face_average(f, point++) = 1.0 / double(m.faces[f].cool.size());
+  const std::size_t nf = m.faces.size();
+  for (const ConvectiveFace& cf : m.faces) {
+    Eigen::Vector4d mo;
+    mo << -cf.area, -cf.area * (cf.center - m.center);
+    m.face_moments.push_back(mo);
+  }
+  m.far_samples.resize(m.n_samples, 4);
+  m.far_samples_fixed.resize(m.n_samples, 4);
+  for (std::size_t s = 0; s < m.n_samples; ++s) {
+    m.far_samples.row(s) = m.far_kernel(samples.points[s], sample_far).transpose();
+    m.far_samples_fixed.row(s) = m.far_kernel(samples.points[s]).transpose();
+  }
+  m.far_face_means = MatrixXd::Zero(nf, 4);
+  m.far_face_means_fixed = MatrixXd::Zero(nf, 4);
+  for (std::size_t f = 0; f < nf; ++f) {
+    for (const Vec3& p : m.faces[f].cool) {
+      m.far_face_means.row(f) += m.far_kernel(p, sample_far).transpose();
+      m.far_face_means_fixed.row(f) += m.far_kernel(p).transpose();
+    }
+    m.far_face_means.row(f) /= double(m.faces[f].cool.size());
+    m.far_face_means_fixed.row(f) /= double(m.faces[f].cool.size());
+  }
+  if (nf) {
+    FieldGrid& g = m.face_grid;
+    constexpr int cells = 10;
+    g.origin = box.min;
+    g.step = box.size() / cells;
+    g.nodes = {cells + 1, cells + 1, cells + 1};
+    g.fields = int(nf);
+    g.values.resize(std::size_t(cells + 1) * (cells + 1) * (cells + 1) * nf);
+    std::size_t n = 0;
+    for (int k = 0; k <= cells; ++k)
+      for (int j = 0; j <= cells; ++j)
+        for (int i = 0; i <= cells; ++i) {
+          const Vec3 p = box.min + g.step.cwiseProduct(Vec3(i, j, k));
+          for (std::size_t f = 0; f < nf; ++f) g.values[n++] = m.face_field(m.faces[f], p);
+        }
+  }
+  // Tabulated fields over the block: `heat_grid` mm, at most kCoarseCells per axis (a large
+  // block gets a coarser spacing). Built once: nodes x heated triangles x images triangle
+  // potentials, so a large block's heat input gets a second, finer grid (`heat_grid` mm, at
+  // most kFineCells per axis) only around the heated triangles, where the coarse grid's exact
+  // zone would otherwise catch every bore near the cavity.
+  constexpr int kCoarseCells = 32, kFineCells = 80;
+  const bool grids = options.heat_grid > 0;
+  auto grid_over = [&](FieldGrid& g, const Box& region, int fields, int max_cells) {
+    g.origin = region.min;
+    g.fields = fields;
+    for (int a = 0; a < 3; ++a) {
+      const int cells = std::clamp(int(std::ceil(region.size()[a] / options.heat_grid)), 3, max_cells);
+      g.nodes[a] = cells + 1;
+      g.step[a] = region.size()[a] / cells;
+    }
+    g.values.resize(std::size_t(g.nodes[0]) * g.nodes[1] * g.nodes[2] * fields);
+  };
+  auto fill_heat = [&](FieldGrid& g) {
+    std::size_t n = 0;
+    for (int k = 0; k < g.nodes[2]; ++k)
+      for (int j = 0; j < g.nodes[1]; ++j)
+        for (int i = 0; i < g.nodes[0]; ++i) g.values[n++] = m.heat_field(g.origin + g.step.cwiseProduct(Vec3(i, j, k)));
+  };
+  if (!m.far_images.empty() && grids) {
+    FieldGrid& g = m.far_grid;
+    grid_over(g, box, 4, kCoarseCells);
+    std::size_t n = 0;
+    for (int k = 0; k < g.nodes[2]; ++k)
+      for (int j = 0; j < g.nodes[1]; ++j)
+        for (int i = 0; i < g.nodes[0]; ++i) {
+          const Eigen::Vector4d v = m.far_kernel(box.min + g.step.cwiseProduct(Vec3(i, j, k)));
+          for (int c = 0; c < 4; ++c) g.values[n++] = v[c];
+        }
+  }
+  if (!setting.heat_in.empty() && grids) {
+    Box bounds = Box::empty();
+    for (const HeatedTriangle& t : setting.heat_in)
+      for (const Vec3& v : {t.a, t.b, t.c}) bounds.min = bounds.min.cwiseMin(v), bounds.max = bounds.max.cwiseMax(v);
+    FieldGrid& g = m.heat_grid;
+    grid_over(g, box, 1, kCoarseCells);
+    fill_heat(g);
+    const Vec3 margin = Vec3::Constant(2 * g.step.maxCoeff());
+    m.heat_near = {bounds.min - margin, bounds.max + margin};
+    if (g.step.maxCoeff() > 1.01 * options.heat_grid) {
+      const Box region{m.heat_near.min.cwiseMax(box.min), m.heat_near.max.cwiseMin(box.max)};
+      if ((region.size().array() > 0).all()) {
+        m.heat_fine_box = region;
+        grid_over(m.heat_fine, region, 1, kFineCells);
+        fill_heat(m.heat_fine);
+        const Vec3 fine_margin = Vec3::Constant(2 * m.heat_fine.step.maxCoeff());
+        m.heat_near = {bounds.min - fine_margin, bounds.max + fine_margin};
+      }
+    }
+  }
+  m.heat_samples.resize(m.n_samples);
+  m.face_samples.resize(m.n_samples, nf);
+  for (std::size_t s = 0; s < m.n_samples; ++s) {
+    m.heat_samples[s] = m.heat_field(samples.points[s]);
+    for (std::size_t f = 0; f < nf; ++f) m.face_samples(s, f) = m.face_field(m.faces[f], samples.points[s]);
+  }
+  m.heat_face_means.resize(nf);
+  m.face_face_means.resize(nf, nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const std::vector<Vec3>& plain = m.faces[f].cool;
+    double h = 0;
+    for (const Vec3& p : plain) h += m.heat_field(p);
+    m.heat_face_means[f] = h / double(plain.size());
+    for (std::size_t f2 = 0; f2 < nf; ++f2) {
+      double s = 0;
+      for (const Vec3& p : plain) s += m.face_field(m.faces[f2], p);
+      m.face_face_means(f, f2) = s / double(plain.size());
+    }
+  }
+}
+
+}  // namespace mtcs::thermal
