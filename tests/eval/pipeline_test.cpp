@@ -187,10 +187,14 @@ TEST_CASE("penalty variants order layouts as documented", "[eval]") {
   CHECK(eval::better(eval::fitness(feasible, spec, {}), eval::fitness(infeasible, spec, {}), spec.penalty.variant));
   spec.penalty.variant = PenaltyVariant::StaticLinear;
   spec.penalty.weight = 1;
+  // The objectives (1 each) over the mold's scales.
+  REQUIRE(spec.objectives.use.size() == 3);
+  double scaled = 0;
+  for (const auto o : spec.objectives.use) scaled += 1 / spec.objectives.scale(o);
   const auto lin = eval::fitness(infeasible, spec, {});
-  CHECK(lin.value == Approx(1.0 / 5 + 1.0 / 20 + 1.0 / 1000 + 0.25));
+  CHECK(lin.value == Approx(scaled + 0.25));
   spec.penalty.variant = PenaltyVariant::StaticQuadratic;
-  CHECK(eval::fitness(infeasible, spec, {}).value == Approx(1.0 / 5 + 1.0 / 20 + 1.0 / 1000 + 0.0625));
+  CHECK(eval::fitness(infeasible, spec, {}).value == Approx(scaled + 0.0625));
   spec.penalty.variant = PenaltyVariant::Death;
   CHECK(std::isinf(eval::fitness(infeasible, spec, {}).value));
 }
