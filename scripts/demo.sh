@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The demo: installs dependencies, builds, and optimises the cooling bores of the bundled plate
 # mold (molds/plate.yaml) with the evolution strategy, then scores the result. The plate's
-# objectives are temperatures (line sinks, ~150 layouts/s per core), so the budget is 20 000
+# objectives are temperatures (line sinks, ~150 layouts/s per core), so the budget is 10 000
 # evaluations: about a minute on 2 cores, plus the first build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -11,7 +11,7 @@ out=runs/demo-plate
 rm -rf "$out"
 echo
 echo "== mtcs optimize molds/plate.yaml (plate 200 x 150 x 3 mm, 4 ejector pins; cavity temperature std, max, cost) =="
-./build/mtcs optimize molds/plate.yaml --config configs/es_default.yaml --evaluations 20000 --seed 1 \
+./build/mtcs optimize molds/plate.yaml --config configs/es_default.yaml --evaluations 10000 --seed 1 \
   --polish 500 --out "$out"
 echo
 echo "== mtcs evaluate: the best layout, re-scored =="
