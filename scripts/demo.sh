@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The demo: installs dependencies, builds, and optimises the cooling bores of the bundled plate
 # mold (molds/plate.yaml) with the evolution strategy, then scores the result. The plate's
-# objectives are temperatures (line sinks, ~150 layouts/s per core), so the budget is 10 000
+# objectives are temperatures (line sinks, 5-12 ms of CPU per layout), so the budget is 10 000
 # evaluations: about a minute on 2 cores, plus the first build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
