@@ -9,6 +9,7 @@ result is closed, manifold (no two boxes touch only along an edge) and outward-o
 Usage: python3 scripts/make_molds.py [OUT_DIR]   (default: molds)
 """
 import itertools
+import math
 import os
 import sys
 
@@ -98,6 +99,38 @@ def shift(points, o):
     return [tuple(p[k] + o[k] for k in range(3)) for p in points]
 
 
+def physics(thickness, extra="", temperatures=True):
+    """The thermal section and the temperature objectives of a part of ABS with this wall
+    thickness (mm): the cycle-averaged flux is the heat each half of the part gives up per
+    cycle over the cooling time with the wall at the coolant (docs/mold-spec.md)."""
+    alpha, melt, eject, coolant, rho, cp = 0.095, 230.0, 90.0, 40.0, 1050.0, 2000.0
+    cooling = thickness ** 2 / (math.pi ** 2 * alpha) * math.log(4 / math.pi * (melt - coolant) / (eject - coolant))
+    flux = rho * cp * thickness / 2e3 * (melt - eject) / cooling
+    section = ("# ABS, %g mm: rho c_p (s/2)(T_melt - T_eject) = %.0f kJ/m^2 per half and cycle over a\n"
+               "# %.1f s cooling time: %.0f kW/m^2 into the steel; 8 l/min of water at 40 C per circuit.\n"
+               "thermal:\n"
+               "  steel_conductivity: 30\n"
+               "  coolant: {temperature: 40, flow_rate: 8}\n"
+               "  ambient: {temperature: 25, film: 10}\n"
+               "  heat_flux: %d\n%s"
+               "  tier: t2d\n"
+               % (thickness, rho * cp * thickness / 2e3 * (melt - eject) / 1e3, cooling, flux / 1e3,
+                  int(round(flux, -3)), extra))
+    use = ("  use: [temperature_std, temperature_max, cost]\n" if temperatures else
+           "  # Wall distances: the temperatures of a mesh cavity cost 20 s to minutes per layout today\n"
+           "  # (the source potential of every heated triangle at every sample; molds/README.md).\n"
+           "  use: [uniformity, worst_covered, cost]\n")
+    return (section + "objectives:\n" + use +
+            "  scales: {uniformity: 5, worst_covered: 20, cost: 1000, temperature_mean: 10, temperature_std: 1,\n"
+            "           temperature_max: 10, cycle_time: 10}\n")
+
+
+TIER0 = """objectives:
+  use: [uniformity, worst_covered, cost]
+  scales: {uniformity: 5, worst_covered: 20, cost: 1000}
+"""
+
+
 def main(out):
     meshes = os.path.join(out, "meshes")
     os.makedirs(meshes, exist_ok=True)
@@ -106,8 +139,18 @@ def main(out):
     pins = "".join(
         "  - {name: ejector%d, cylinder: {p0: %s, p1: %s, radius: 3}, clearance: 3}\n"
         % (i, fmt((x, y, 0)), fmt((x, y, 105)), ) for i, (x, y) in enumerate([(60, 35), (240, 35), (60, 165), (240, 165)]))
+    # The part's top face gives its heat to the other mold half (its own cooling, not modelled:
+    # no bore fits in the 12 mm above the cavity), so no flux above z = 107.
+    top = ("# No flux into the 12 mm of steel above the cavity (no bore fits there): the part's top face\n"
+           "# gives its heat to the other mold half, with a cooling of its own (not modelled).\n"
+           "  regions: [{box: {min: [0, 0, 107], max: [300, 200, 120]}, heat_flux: 0}]\n")
     with open(os.path.join(out, "plate.yaml"), "w") as f:
-        f.write(PLATE % pins)
+        f.write((PLATE % pins).replace("{physics}", physics(3, top)))
+    # The same plate scored by wall distances (tier 0): ~50x faster, for comparisons and for the
+    # tests that optimise.
+    with open(os.path.join(out, "plate_wall_distance.yaml"), "w") as f:
+        f.write("# molds/plate.yaml with the wall-distance objectives (tier 0) instead of temperatures.\n"
+                + (PLATE % pins).replace("{physics}", TIER0))
     write_layout(os.path.join(out, "plate.layout.yaml"),
                  [(8, u_loop(70, 100, 150, 88)), (8, u_loop(135, 165, 180, 88)), (8, u_loop(200, 230, 150, 88))],
                  "plate: three U loops 13 mm of steel under the plate")
@@ -119,7 +162,7 @@ def main(out):
            ((52.5, 50, 42.5), (167.5, 52.5, 80)), ((52.5, 127.5, 42.5), (167.5, 130, 80))]
     write_off(os.path.join(meshes, "cup.off"), union_mesh(cup))
     with open(os.path.join(out, "cup.yaml"), "w") as f:
-        f.write(CUP)
+        f.write(CUP.replace("{physics}", physics(2.5, temperatures=False)))
     write_layout(os.path.join(out, "cup.layout.yaml"),
                  [(8, u_loop(70, 100, 115, 24)), (8, u_loop(120, 150, 115, 24)),
                   (8, u_loop(30, 190, 150, 60))],
@@ -129,7 +172,7 @@ def main(out):
     bracket = [((60, 40, 40), (180, 140, 46)), ((60, 40, 46), (66, 140, 120))]
     write_off(os.path.join(meshes, "l_bracket.off"), union_mesh(bracket))
     with open(os.path.join(out, "l_bracket.yaml"), "w") as f:
-        f.write(BRACKET)
+        f.write(BRACKET.replace("{physics}", physics(6, temperatures=False)))
     write_layout(os.path.join(out, "l_bracket.layout.yaml"),
                  [(8, u_loop(80, 110, 125, 26)), (8, u_loop(130, 160, 125, 26)),
                   (8, u_loop(44, 24, 125, 90))],
@@ -141,14 +184,14 @@ def main(out):
                     ((130, 100, 42.5), (145, 115, 78))]           # deep boss
     write_off(os.path.join(meshes, "ribbed_box.off"), union_mesh(ribbed))
     with open(os.path.join(out, "ribbed_box.yaml"), "w") as f:
-        f.write(RIBBED)
+        f.write(RIBBED.replace("{physics}", physics(2.5, temperatures=False)))
     write_layout(os.path.join(out, "ribbed_box.layout.yaml"),
                  [(8, u_loop(70, 100, 115, 24)), (8, u_loop(120, 150, 115, 24))],
                  "ribbed_box: the floor only; the boss stays hot (baffles are out of scope)")
 
     # A real part: the herringbone gear of molds/meshes (LGPL-2.1, see molds/meshes/LICENSE.md).
     with open(os.path.join(out, "gear.yaml"), "w") as f:
-        f.write(GEAR)
+        f.write(GEAR.replace("{physics}", physics(5, temperatures=False)))
     write_layout(os.path.join(out, "gear.layout.yaml"),
                  [(8, u_loop(55, 85, 125, 25)), (8, u_loop(100, 130, 125, 25)),
                   (8, [(160, 50, 56), (132, 50, 56), (132, 110, 56), (160, 110, 56)])],
@@ -195,10 +238,7 @@ keep_outs:
   tip_angle_deg: 118
 clearances: {bore_bore: 4, bore_cavity: 1.0D, bore_surface: 3}
 circuits: {min: 1, max: 4, waypoints: [2, 12], inlet_faces: [-y], outlet_faces: [-y]}
-objectives:
-  use: [uniformity, worst_covered, cost]
-  scales: {uniformity: 5, worst_covered: 20, cost: 1000}
-  target_wall_distance: 2.0D
+{physics}  target_wall_distance: 2.0D
   cost: {setup: 20, per_mm: 0.05, deep_factor: 0.02, plug: 5}
 penalty: {variant: constrained_domination, power: 2, weight: 1}
 """
@@ -217,10 +257,7 @@ drilling:
   allowed_faces: [+x, -x, +y, -y]
 clearances: {bore_bore: 4, bore_cavity: 1.0D, bore_surface: 3}
 circuits: {min: 1, max: 4, waypoints: [2, 14], inlet_faces: [-y], outlet_faces: [-y]}
-objectives:
-  use: [uniformity, worst_covered, cost]
-  scales: {uniformity: 5, worst_covered: 20, cost: 1000}
-"""
+{physics}"""
 
 BRACKET = """# L-bracket: a 6 mm base and a 6 mm upright; the inner corner is the hot spot.
 # Generated by scripts/make_molds.py.
@@ -236,10 +273,7 @@ drilling:
   allowed_faces: [+x, -x, +y, -y]
 clearances: {bore_bore: 4, bore_cavity: 1.0D, bore_surface: 3}
 circuits: {min: 1, max: 4, waypoints: [2, 14], inlet_faces: [-y, -x], outlet_faces: [-y, -x]}
-objectives:
-  use: [uniformity, worst_covered, cost]
-  scales: {uniformity: 5, worst_covered: 20, cost: 1000}
-"""
+{physics}"""
 
 RIBBED = """# Ribbed box: the cup with two ribs and a deep boss (38 mm tall).
 # Generated by scripts/make_molds.py.
@@ -256,10 +290,7 @@ drilling:
   max_depth_ratio: 40
 clearances: {bore_bore: 4, bore_cavity: 1.0D, bore_surface: 3}
 circuits: {min: 1, max: 4, waypoints: [2, 14], inlet_faces: [-y], outlet_faces: [-y]}
-objectives:
-  use: [uniformity, worst_covered, cost]
-  scales: {uniformity: 5, worst_covered: 20, cost: 1000}
-"""
+{physics}"""
 
 GEAR = """# A real part: the herringbone gear (74 x 74 x 22 mm, 11 416 triangles) of molds/meshes,
 # centred at (80, 80, 56) in a 160 x 160 x 90 mm block. Generated by scripts/make_molds.py.
@@ -276,10 +307,7 @@ drilling:
   allowed_faces: [+x, -x, +y, -y]
 clearances: {bore_bore: 4, bore_cavity: 1.0D, bore_surface: 3}
 circuits: {min: 1, max: 4, waypoints: [2, 12], inlet_faces: [-y, +x], outlet_faces: [-y, +x]}
-objectives:
-  use: [uniformity, worst_covered, cost]
-  scales: {uniformity: 5, worst_covered: 20, cost: 1000}
-"""
+{physics}"""
 
 EXTREME = """# Extreme scene: a 1 mm wall, a forest of ejector pins, 4 mm bores, coordinates offset by 1e4 mm.
 # Generated by scripts/make_molds.py.

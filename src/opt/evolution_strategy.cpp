@@ -31,6 +31,26 @@ Generation EvolutionStrategy::initial() const {
   return g;
 }
 
+std::vector<Individual> EvolutionStrategy::screened(std::vector<Individual>& offspring,
+                                                    const std::vector<Genotype>& xs) const {
+  const auto rough = screen_all(problem_, xs);
+  std::vector<std::size_t> order(offspring.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return problem_.better(rough[a], rough[b]); });
+  order.resize(std::size_t(config_.survivors));
+  std::sort(order.begin(), order.end());  // sampling order, so that ties keep it
+  std::vector<Genotype> best;
+  for (const std::size_t i : order) best.push_back(xs[i]);
+  const auto scores = evaluate_all(problem_, best);
+  std::vector<Individual> kept;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    kept.push_back(std::move(offspring[order[k]]));
+    kept.back().score = scores[k];
+  }
+  return kept;
+}
+
 Generation EvolutionStrategy::step(const Generation& prev) const {
   const int mu = int(prev.population.size());
   const int lambda = config_.lambda;
@@ -82,8 +102,12 @@ Generation EvolutionStrategy::step(const Generation& prev) const {
     xs[std::size_t(i)] = child.x;
     offspring[std::size_t(i)] = std::move(child);
   }
-  const auto scores = evaluate_all(problem_, xs);
-  for (int i = 0; i < lambda; ++i) offspring[std::size_t(i)].score = scores[std::size_t(i)];
+  if (config_.survivors > 0 && config_.survivors < lambda) {
+    offspring = screened(offspring, xs);
+  } else {
+    const auto scores = evaluate_all(problem_, xs);
+    for (int i = 0; i < lambda; ++i) offspring[std::size_t(i)].score = scores[std::size_t(i)];
+  }
 
   Generation next;
   next.index = prev.index + 1;

@@ -12,6 +12,12 @@ std::vector<Score> evaluate_all(const Problem& problem, const std::vector<Genoty
   return scores;
 }
 
+std::vector<Score> screen_all(const Problem& problem, const std::vector<Genotype>& xs) {
+  std::vector<Score> scores(xs.size());
+  tbb::parallel_for(std::size_t(0), xs.size(), [&](std::size_t i) { scores[i] = problem.screen(xs[i]); });
+  return scores;
+}
+
 Generation sample_population(const Problem& problem, std::uint64_t seed, int count) {
   Generation g;
   std::vector<Genotype> xs;

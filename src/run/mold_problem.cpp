@@ -15,8 +15,8 @@ using mold::axis_of;
 using mold::face_plane;
 
 MoldProblem::MoldProblem(const eval::Pipeline& pipeline, std::vector<double> weights, MutationRates rates,
-                         std::optional<mold::PenaltyVariant> penalty)
-    : pipeline_(pipeline), spec_(pipeline.scene().spec()), block_(pipeline.scene().block_bounds()),
+                         std::optional<mold::PenaltyVariant> penalty, const eval::Pipeline* screen)
+    : pipeline_(pipeline), screen_(screen), spec_(pipeline.scene().spec()), block_(pipeline.scene().block_bounds()),
       weights_(std::move(weights)), rates_(rates), initial_step_(0.1 * block_.size().minCoeff()) {
   ranking_.objectives = spec_.objectives;
   ranking_.penalty = spec_.penalty;
@@ -190,7 +190,20 @@ opt::Genotype MoldProblem::recombine(const opt::Genotype& a, const opt::Genotype
 }
 
 opt::Score MoldProblem::evaluate(const opt::Genotype& g) const {
-  const eval::Evaluation e = pipeline_.evaluate(genome(g));
+  opt::Score s = score(pipeline_, g);
+  ++evaluated_;
+  if (s.feasible) ++feasible_;
+  return s;
+}
+
+opt::Score MoldProblem::screen(const opt::Genotype& g) const {
+  if (!screen_) return evaluate(g);
+  ++screened_;
+  return score(*screen_, g);
+}
+
+opt::Score MoldProblem::score(const eval::Pipeline& pipeline, const opt::Genotype& g) const {
+  const eval::Evaluation e = pipeline.evaluate(genome(g));
   // "kind element element distance/margin; ..." for the run store.
   std::string detail;
   for (const auto& v : e.violations) {
@@ -201,8 +214,6 @@ opt::Score MoldProblem::evaluate(const opt::Genotype& g) const {
     std::snprintf(num, sizeof num, " %.6g/%.6g", v.distance, v.margin);
     detail += num;
   }
-  ++evaluated_;
-  if (e.feasible()) ++feasible_;
   return {e.objectives, e.violation, e.feasible(), eval::scalar_fitness(e, ranking_, weights_), std::move(detail)};
 }
 

@@ -48,7 +48,7 @@ opt::SmsConfig MoldOptimizer::sms_config(const mold::Scene& scene, const RunConf
 
 MoldOptimizer::MoldOptimizer(const MoldProblem& problem, const mold::Scene& scene, const RunConfig& config)
     : es_(problem, es_config(scene, config)), sms_(problem, sms_config(scene, config)),
-      pareto_(config.algorithm == "sms-emoa") {}
+      pareto_(config.algorithm == "sms-emoa"), final_cell_(config.final_cell) {}
 
 opt::Generation MoldOptimizer::run(const opt::Generation* start,
                                    const std::function<void(const opt::Generation&)>& on_generation) const {

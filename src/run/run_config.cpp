@@ -21,7 +21,8 @@ RunConfig parse_run_config(const std::string& text, const std::string& origin,
   }
   RunConfig c;
   if (root.IsNull()) return c;
-  r.expect_map(root, "", {"algorithm", "es", "evaluations", "seed", "weights", "mutation", "log_every", "ref", "penalty"});
+  r.expect_map(root, "", {"algorithm", "es", "evaluations", "seed", "weights", "mutation", "log_every", "ref", "penalty",
+                          "fidelity"});
   if (root["algorithm"]) {
     c.algorithm = r.text(root["algorithm"], "algorithm");
     if (c.algorithm != "es" && c.algorithm != "sms-emoa") r.fail(root["algorithm"], "algorithm", "expected es or sms-emoa");
@@ -60,6 +61,26 @@ RunConfig parse_run_config(const std::string& text, const std::string& origin,
       if (pos == objective_names.end()) r.fail(it->first, "weights." + key, "not an objective of this mold");
       c.weights[std::size_t(pos - objective_names.begin())] = r.number(it->second, "weights." + key, 0, 1e12);
     }
+  }
+  if (root["fidelity"]) {
+    const YAML::Node& f = root["fidelity"];
+    r.expect_map(f, "fidelity", {"screen", "elements_per_bore", "survivors", "final_cell"});
+    if (f["screen"]) {
+      const std::string s = r.text(f["screen"], "fidelity.screen");
+      if (s == "t1") c.screen_tier = mold::ThermalTier::T1;
+      else if (s == "t2") c.screen_tier = mold::ThermalTier::T2;
+      else if (s == "t2d") c.screen_tier = mold::ThermalTier::T2d;
+      else r.fail(f["screen"], "fidelity.screen", "expected t1, t2 or t2d (a line-sink tier); got '" + s + "'");
+    }
+    if (f["elements_per_bore"]) c.screen_elements = r.integer(f["elements_per_bore"], "fidelity.elements_per_bore", 1, 1000);
+    c.es.survivors = c.screen_tier ? c.es.mu : 0;
+    if (f["survivors"]) {
+      if (!c.screen_tier) r.fail(f["survivors"], "fidelity.survivors", "needs fidelity.screen");
+      c.es.survivors = r.integer(f["survivors"], "fidelity.survivors", 1, c.es.lambda);
+    }
+    if (!c.es.plus && c.es.survivors > 0 && c.es.survivors < c.es.mu)
+      r.fail(f, "fidelity.survivors", "a comma strategy needs survivors >= es.mu");
+    if (f["final_cell"]) c.final_cell = r.number(f["final_cell"], "fidelity.final_cell", 0, 100);
   }
   if (root["mutation"]) {
     const YAML::Node& m = root["mutation"];
@@ -100,6 +121,15 @@ std::string RunConfig::to_yaml(const std::vector<std::string>& objective_names) 
   out << YAML::Key << "seed" << YAML::Value << es.seed;
   out << YAML::Key << "log_every" << YAML::Value << log_every;
   if (penalty) out << YAML::Key << "penalty" << YAML::Value << mold::to_string(*penalty);
+  if (screen_tier || final_cell > 0) {
+    out << YAML::Key << "fidelity" << YAML::Value << YAML::Flow << YAML::BeginMap;
+    if (screen_tier)
+      out << YAML::Key << "screen" << YAML::Value << mold::to_string(*screen_tier) << YAML::Key << "survivors"
+          << YAML::Value << es.survivors;
+    if (screen_elements > 0) out << YAML::Key << "elements_per_bore" << YAML::Value << screen_elements;
+    if (final_cell > 0) out << YAML::Key << "final_cell" << YAML::Value << final_cell;
+    out << YAML::EndMap;
+  }
   if (!weights.empty()) {
     out << YAML::Key << "weights" << YAML::Value << YAML::Flow << YAML::BeginMap;
     for (std::size_t k = 0; k < weights.size() && k < objective_names.size(); ++k)

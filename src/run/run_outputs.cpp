@@ -2,6 +2,9 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
+
+#include "mtcs/eval/cavity_temperature.h"
 
 #include "mtcs/io/atomic_file.h"
 #include "mtcs/mold/decoder.h"
@@ -44,6 +47,18 @@ mold::Layout write_run_outputs(const std::string& out_dir, const mold::Scene& sc
       csv.stream() << "\n";
     }
     csv.commit();
+  }
+  if (optimizer.final_cell() > 0 && scene.spec().cavity) {
+    // Multi-fidelity's last step: the best layout by the finite volumes, as `mtcs thermal
+    // --tier fd --cell h` scores it.
+    eval::ThermalQuery query = eval::thermal_query(scene.spec());
+    query.tier = mold::ThermalTier::Fd;
+    query.cell = optimizer.final_cell();
+    const eval::CavityTemperature t3 = eval::cavity_temperature(scene, layout, query);
+    summary["t3"] = {{"cell_mm", query.cell}, {"mean", t3.summary.mean}, {"std", t3.summary.std},
+                     {"max", t3.summary.max}, {"seconds", t3.seconds}};
+    spdlog::info("best layout by finite volumes (T3, cell {} mm, {:.3g} s): mean {:.4g} C, std {:.4g} K, max {:.4g} C",
+                 query.cell, t3.seconds, t3.summary.mean, t3.summary.std, t3.summary.max);
   }
   if (o.polished)
     summary["polish"] = {{"evaluations", o.polished->evaluations}, {"improved", o.polished->improved},

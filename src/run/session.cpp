@@ -2,10 +2,27 @@
 
 #include <atomic>
 
+#include "mtcs/eval/thermal_tiers.h"
+
 namespace mtcs::run {
 namespace {
 
 std::atomic<long> scenes{0};
+
+// The pipeline that screens offspring: the config's tier (and elements per bore) in place of
+// the spec's; the tier-0 stages are the same.
+std::unique_ptr<const eval::Pipeline> screening_pipeline(const mold::Scene& scene, const RunConfig& config) {
+  if (!config.screen_tier) return nullptr;
+  const int elements = config.screen_elements;
+  eval::TemperatureSolverFactory factory = [tier = eval::temperature_solver(*config.screen_tier), elements](
+                                               const thermal::Setting& setting, const thermal::Samples& samples,
+                                               const mold::ThermalSpec& spec) {
+    mold::ThermalSpec screen = spec;
+    if (elements > 0) screen.elements_per_bore = elements;
+    return tier(setting, samples, screen);
+  };
+  return std::make_unique<const eval::Pipeline>(scene, factory);
+}
 
 }  // namespace
 
@@ -14,7 +31,9 @@ Session::Session(mold::MoldSpec spec, const std::function<RunConfig(const std::v
       pipeline_(std::make_unique<const eval::Pipeline>(*scene_)),
       names_(pipeline_->objective_names()),
       config_(config_for(names_)),
-      problem_(std::make_unique<const MoldProblem>(*pipeline_, config_.weights, config_.mutation, config_.penalty)) {
+      screen_pipeline_(screening_pipeline(*scene_, config_)),
+      problem_(std::make_unique<const MoldProblem>(*pipeline_, config_.weights, config_.mutation, config_.penalty,
+                                                   screen_pipeline_.get())) {
   ++scenes;
 }
 

@@ -9,7 +9,7 @@ using mtcs_test::run_mtcs_err;
 namespace fs = std::filesystem;
 
 TEST_CASE("mtcs optimize and replay: --quiet, default and --verbose logs", "[cli][log]") {
-  const std::string mold = MTCS_SOURCE_DIR "/molds/plate.yaml";
+  const std::string mold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";  // fast: wall distances
   const fs::path dir = mtcs_test::scratch("log_flags", "runs");
   fs::remove_all(dir);
   const auto out = [&](const std::string& name) { return " --evaluations 200 --out " + (dir / name).string(); };

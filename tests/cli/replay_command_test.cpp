@@ -41,7 +41,7 @@ double prism_volume(const fs::path& bores_csv) {
 TEST_CASE("mtcs replay writes a front plot per generation and an STL per final front member", "[cli][replay]") {
   const fs::path dir = scratch("run");
   fs::remove_all(dir);
-  REQUIRE(run_mtcs("optimize " MTCS_SOURCE_DIR "/molds/plate.yaml --algorithm sms-emoa --evaluations 400 --seed 2 --out " +
+  REQUIRE(run_mtcs("optimize " MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml --algorithm sms-emoa --evaluations 400 --seed 2 --out " +
                    dir.string() + " --quiet") == 0);
   REQUIRE(run_mtcs("replay " + dir.string()) == 0);
   const fs::path replay = dir / "replay";
@@ -81,7 +81,7 @@ TEST_CASE("mtcs replay: the run keeps its mold; moved, deleted or edited molds a
   fs::remove_all(dir);
   fs::create_directories(dir / "a" / "meshes");
   // A primitive mold (plate) and a mold with a mesh file (cup), each in a folder of its own.
-  fs::copy_file(MTCS_SOURCE_DIR "/molds/plate.yaml", dir / "a" / "plate.yaml");
+  fs::copy_file(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml", dir / "a" / "plate.yaml");  // fast: wall distances
   fs::copy_file(MTCS_SOURCE_DIR "/molds/cup.yaml", dir / "a" / "cup.yaml");
   fs::copy_file(MTCS_SOURCE_DIR "/molds/meshes/cup.off", dir / "a" / "meshes" / "cup.off");
   for (const std::string mold : {"plate", "cup"})

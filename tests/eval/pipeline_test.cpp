@@ -193,9 +193,13 @@ TEST_CASE("penalty variants order layouts as documented", "[eval]") {
   CHECK(opt::feasible_first(score(feasible), score(infeasible)));
   spec.penalty.variant = PenaltyVariant::StaticLinear;
   spec.penalty.weight = 1;
-  CHECK(eval::scalar_fitness(infeasible, spec, {}) == Approx(1.0 / 5 + 1.0 / 20 + 1.0 / 1000 + 0.25));
+  // The objectives (1 each) over the mold's scales.
+  REQUIRE(spec.objectives.use.size() == 3);
+  double scaled = 0;
+  for (const auto o : spec.objectives.use) scaled += 1 / spec.objectives.scale(o);
+  CHECK(eval::scalar_fitness(infeasible, spec, {}) == Approx(scaled + 0.25));
   spec.penalty.variant = PenaltyVariant::StaticQuadratic;
-  CHECK(eval::scalar_fitness(infeasible, spec, {}) == Approx(1.0 / 5 + 1.0 / 20 + 1.0 / 1000 + 0.0625));
+  CHECK(eval::scalar_fitness(infeasible, spec, {}) == Approx(scaled + 0.0625));
   spec.penalty.variant = PenaltyVariant::Death;
   CHECK(std::isinf(eval::scalar_fitness(infeasible, spec, {})));
 }

@@ -2,6 +2,7 @@
 // determinism: same seed, same generations, whatever the thread count.
 
 #include <catch2/catch.hpp>
+#include <atomic>
 #include <tbb/global_control.h>
 
 #include "mtcs/opt/evolution_strategy.h"
@@ -68,4 +69,84 @@ TEST_CASE("ES: resuming from a stored generation ends where the uninterrupted ru
   CHECK(resumed.index == full.index);
   CHECK(resumed.population.front().x == full.population.front().x);
   CHECK(resumed.population.front().score.value == full.population.front().score.value);
+}
+
+namespace {
+
+// A test function whose screen is a stand-in for a cheaper tier: the function itself, or its
+// negation (a screen that ranks backwards). Counts the calls of each.
+class Screened final : public Problem {
+ public:
+  Screened(const Problem& f, bool backwards) : f_(f), backwards_(backwards) {}
+  std::string name() const override { return f_.name(); }
+  Genotype sample(Rng& rng) const override { return f_.sample(rng); }
+  std::size_t step_sizes(const Genotype& g) const override { return f_.step_sizes(g); }
+  std::size_t dimension(const Genotype& g) const override { return f_.dimension(g); }
+  std::size_t rotation_angles(const Genotype& g) const override { return f_.rotation_angles(g); }
+  std::vector<double> initial_steps(const Genotype& g) const override { return f_.initial_steps(g); }
+  Genotype recombine(const Genotype& a, const Genotype& b, Rng& rng) const override { return f_.recombine(a, b, rng); }
+  bool better(const Score& a, const Score& b) const override { return f_.better(a, b); }
+  void mutate(Genotype& g, const std::vector<double>& steps, Rng& rng) const override { f_.mutate(g, steps, rng); }
+  Score evaluate(const Genotype& g) const override {
+    ++evaluated;
+    return f_.evaluate(g);
+  }
+  Score screen(const Genotype& g) const override {
+    ++screened;
+    Score s = f_.evaluate(g);
+    if (backwards_) s.value = -s.value;
+    return s;
+  }
+  mutable std::atomic<long> evaluated{0}, screened{0};
+
+ private:
+  const Problem& f_;
+  bool backwards_;
+};
+
+}  // namespace
+
+TEST_CASE("ES multi-fidelity: with a faithful screen, survivors >= mu give the same generations for fewer evaluations",
+          "[opt][es][fidelity]") {
+  // (mu + lambda) keeps at most mu offspring, and the screen ranks them as evaluate does: the
+  // best mu offspring are all that can enter, so screening changes the cost, not the run.
+  const auto f = make_test_function("sphere", 5);
+  EsConfig c;
+  c.evaluations = 2010;
+  c.seed = 7;
+  const EvolutionStrategy plain(*f, c);
+  c.survivors = c.mu;
+  const Screened screened(*f, false);
+  const EvolutionStrategy multi(screened, c);
+  std::vector<std::vector<double>> a, b;
+  const Generation end_a = run(plain, nullptr, [&](const Generation& g) {
+    for (const auto& i : g.population) a.push_back(i.x);
+  });
+  const Generation end_b = run(multi, nullptr, [&](const Generation& g) {
+    for (const auto& i : g.population) b.push_back(i.x);
+  });
+  CHECK(a == b);
+  CHECK(end_a.evaluations == end_b.evaluations);
+  const long generations = end_b.index;
+  CHECK(generations == 50);
+  CHECK(screened.screened == generations * c.lambda);
+  CHECK(screened.evaluated == c.mu + generations * c.survivors);
+}
+
+TEST_CASE("ES multi-fidelity: only the screen's best survive, and the population holds evaluate's scores",
+          "[opt][es][fidelity]") {
+  // A backwards screen lets only the worst offspring through: the run must do worse than the
+  // faithful one, and every stored score is still the true one.
+  const auto f = make_test_function("sphere", 5);
+  EsConfig c;
+  c.evaluations = 2010;
+  c.seed = 3;
+  c.survivors = 5;
+  const Screened faithful(*f, false), backwards(*f, true);
+  const Generation good = run(EvolutionStrategy(faithful, c), nullptr, {});
+  const Generation bad = run(EvolutionStrategy(backwards, c), nullptr, [&](const Generation& g) {
+    for (const auto& i : g.population) CHECK(i.score.value == f->evaluate(i.x).value);
+  });
+  CHECK(good.population.front().score.value < 1e-3 * bad.population.front().score.value);
+  CHECK(backwards.evaluated == c.mu + bad.index * c.survivors);
 }

@@ -44,7 +44,11 @@ TEST_CASE("MoldProblem ranks an infeasible layout as its penalty variant says", 
   CHECK(cd.objectives == s.objectives);
   CHECK(cd.violation == s.violation);
 
-  const double scales[] = {5, 20, 1000};  // plate.yaml: uniformity, worst_covered, cost
+  // The mold's scale of each of its objectives (plate.yaml: temperature_std, temperature_max, cost).
+  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml");
+  std::vector<double> scales;
+  for (const auto o : spec.objectives.use) scales.push_back(spec.objectives.scale(o));
+  REQUIRE(scales.size() == s.objectives.size());
   const opt::Score linear = ranked(mold::PenaltyVariant::StaticLinear, 3, &s);
   CHECK(linear.feasible);
   CHECK(linear.violation == 0);

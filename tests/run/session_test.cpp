@@ -17,7 +17,8 @@ using namespace mtcs;
 
 namespace {
 
-const std::string kMold = MTCS_SOURCE_DIR "/molds/plate.yaml";
+// The plate scored by wall distances: these runs optimise, and the temperatures would make them ~50x slower.
+const std::string kMold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";
 
 // mtcs ARGS in this process, through the cli library (the command's own code path).
 int run_in_process(std::vector<std::string> args) {
@@ -103,4 +104,38 @@ TEST_CASE("SMS-EMOA on the mold: same seed, same populations, with 1 thread or 2
     return log;
   };
   CHECK(record(1) == record(2));
+}
+
+TEST_CASE("run config fidelity: the screen scores by its tier, evaluate by the spec's", "[run][session][fidelity]") {
+  const std::string block = MTCS_SOURCE_DIR "/molds/thermal_block.yaml";
+  const run::Session plain(mold::load_mold_spec(block), run::RunOverrides{});
+  mold::MoldSpec t1_spec = mold::load_mold_spec(block);
+  t1_spec.thermal.tier = mold::ThermalTier::T1;
+  const run::Session t1(std::move(t1_spec), run::RunOverrides{});
+  const run::Session multi(mold::load_mold_spec(block), "fidelity: {screen: t1, survivors: 7, final_cell: 3}\n", "test");
+  REQUIRE(multi.config().es.survivors == 7);
+  CHECK(multi.config().final_cell == 3);
+  // Written back and read again: a resumed run screens the same way.
+  const auto& names = multi.objective_names();
+  const run::RunConfig again = run::parse_run_config(multi.config().to_yaml(names), "again", names);
+  CHECK(again.screen_tier == mold::ThermalTier::T1);
+  CHECK(again.es.survivors == 7);
+  CHECK(again.final_cell == 3);
+  opt::Rng rng(11);
+  int differ = 0;
+  for (int i = 0; i < 10; ++i) {
+    const opt::Genotype g = plain.problem().sample(rng);
+    const opt::Score full = multi.problem().evaluate(g), rough = multi.problem().screen(g);
+    CHECK(full.objectives == plain.problem().evaluate(g).objectives);
+    CHECK(rough.objectives == t1.problem().evaluate(g).objectives);
+    differ += rough.objectives != full.objectives;
+  }
+  CHECK(differ == 10);
+  CHECK(multi.problem().screened() == 10);
+  try {
+    run::parse_run_config("fidelity: {screen: fd}\n", "cfg.yaml", names);
+    FAIL("no error");
+  } catch (const io::InputError& e) {
+    CHECK(std::string(e.what()).find("fidelity.screen") != std::string::npos);
+  }
 }

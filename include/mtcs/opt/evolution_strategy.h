@@ -25,6 +25,10 @@ struct EsConfig {
   double min_step = 1e-300, max_step = 1e300;
   // Baseline: offspring are fresh samples (no inheritance); selection as configured.
   bool random_search = false;
+  // Multi-fidelity: > 0: every offspring is scored by Problem::screen, and only the best
+  // `survivors` of them are scored by Problem::evaluate and enter selection; the population
+  // holds evaluate's scores only. 0: every offspring is evaluated.
+  int survivors = 0;
 };
 
 class EvolutionStrategy {
@@ -37,6 +41,9 @@ class EvolutionStrategy {
   const EsConfig& config() const { return config_; }
 
  private:
+  // The offspring that survive screening, with evaluate's scores.
+  std::vector<Individual> screened(std::vector<Individual>& offspring, const std::vector<Genotype>& xs) const;
+
   const Problem& problem_;
   EsConfig config_;
 };

@@ -23,6 +23,8 @@ struct Generation {
 
 // Evaluates in parallel (TBB); results in input order, whatever the thread count.
 std::vector<Score> evaluate_all(const Problem& problem, const std::vector<Genotype>& xs);
+// The same with Problem::screen.
+std::vector<Score> screen_all(const Problem& problem, const std::vector<Genotype>& xs);
 // `count` samples drawn from the generators of generation 0, evaluated in parallel, in
 // sampling order (unsorted).
 Generation sample_population(const Problem& problem, std::uint64_t seed, int count);

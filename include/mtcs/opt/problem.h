@@ -51,6 +51,9 @@ class Problem {
   virtual Genotype recombine(const Genotype& a, const Genotype& b, Rng& rng) const;
   // Thread-safe.
   virtual Score evaluate(const Genotype& g) const = 0;
+  // A cheaper, rougher score for screening offspring (multi-fidelity ES: EsConfig::survivors);
+  // the default is evaluate itself. Thread-safe.
+  virtual Score screen(const Genotype& g) const { return evaluate(g); }
   // Strict weak order of scores; the default compares values.
   virtual bool better(const Score& a, const Score& b) const { return a.value < b.value; }
   // The score SMS-EMOA ranks by. The default is the score itself, ranked by constrained

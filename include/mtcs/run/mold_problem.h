@@ -28,8 +28,9 @@ struct MutationRates {
 class MoldProblem final : public opt::Problem {
  public:
   // `penalty`: the constraint-handling variant the layouts are ranked by (default: the spec's).
+  // `screen`: the cheaper pipeline of a multi-fidelity run (screen() uses it), or none.
   MoldProblem(const eval::Pipeline& pipeline, std::vector<double> weights, MutationRates rates,
-              std::optional<mold::PenaltyVariant> penalty = std::nullopt);
+              std::optional<mold::PenaltyVariant> penalty = std::nullopt, const eval::Pipeline* screen = nullptr);
 
   std::string name() const override { return "mold"; }
   opt::Genotype sample(opt::Rng& rng) const override;
@@ -40,6 +41,8 @@ class MoldProblem final : public opt::Problem {
   void mutate(opt::Genotype& g, const std::vector<double>& steps, opt::Rng& rng) const override;
   opt::Genotype recombine(const opt::Genotype& a, const opt::Genotype& b, opt::Rng& rng) const override;
   opt::Score evaluate(const opt::Genotype& g) const override;
+  // The screening pipeline's score (the same as evaluate without one).
+  opt::Score screen(const opt::Genotype& g) const override;
   bool better(const opt::Score& a, const opt::Score& b) const override;
   // Constrained domination as it is; the penalty variants rank every layout as feasible, by each
   // objective plus the variant's penalty term (in scaled units: the same term on each).
@@ -50,6 +53,8 @@ class MoldProblem final : public opt::Problem {
   // Layouts evaluated so far, and how many of them were feasible.
   long evaluated() const { return evaluated_; }
   long feasible_evaluated() const { return feasible_; }
+  // Layouts scored by the screening pipeline only.
+  long screened() const { return screened_; }
 
   mold::Genome genome(const opt::Genotype& g) const;
   opt::Genotype encode(const mold::Genome& genome) const;
@@ -58,8 +63,10 @@ class MoldProblem final : public opt::Problem {
   mold::Circuit random_circuit(opt::Rng& rng) const;
   // Puts a port back on its face (nearest allowed one) and interior points inside the block.
   void repair(mold::Circuit& c) const;
+  opt::Score score(const eval::Pipeline& pipeline, const opt::Genotype& g) const;
 
   const eval::Pipeline& pipeline_;
+  const eval::Pipeline* screen_;
   const mold::MoldSpec& spec_;
   // The spec's objectives and penalty with this problem's variant: what the ranking reads
   // (no geometry: a variant costs no copy of the meshes).
@@ -70,7 +77,7 @@ class MoldProblem final : public opt::Problem {
   MutationRates rates_;
   const eval::DrillAccess* access_ = nullptr;  // set: AM-guided directions
   double initial_step_;
-  mutable std::atomic<long> evaluated_{0}, feasible_{0};
+  mutable std::atomic<long> evaluated_{0}, feasible_{0}, screened_{0};
 };
 
 }  // namespace mtcs::run

@@ -39,6 +39,8 @@ class MoldOptimizer {
   // SMS-EMOA's population size and reference point (raw objective units).
   int mu() const { return sms_.config().mu; }
   const opt::Point& raw_reference() const { return sms_.config().ref; }
+  // The finite-volume cell (mm) the best layout is re-scored at (RunConfig::final_cell; 0: not).
+  double final_cell() const { return final_cell_; }
   // From a stored generation (resume) or a fresh population to the budget; on_generation sees
   // every ES generation and every SMS-EMOA step.
   opt::Generation run(const opt::Generation* start, const std::function<void(const opt::Generation&)>& on_generation) const;
@@ -50,6 +52,7 @@ class MoldOptimizer {
   opt::EvolutionStrategy es_;
   opt::SmsEmoa sms_;
   bool pareto_;
+  double final_cell_;
 };
 
 }  // namespace mtcs::run

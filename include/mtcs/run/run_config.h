@@ -21,6 +21,11 @@ struct RunConfig {
   int log_every = 10;           // generations between log lines when not on a terminal
   // The constraint handling the layouts are ranked by; unset: the mold spec's penalty.variant.
   std::optional<mold::PenaltyVariant> penalty;
+  // Multi-fidelity (configs/README.md, "fidelity"): offspring are screened by this tier and
+  // es.survivors of them re-scored by the spec's tier; unset: no screening.
+  std::optional<mold::ThermalTier> screen_tier;
+  int screen_elements = 0;  // M of the screening tier; 0: the spec's elements_per_bore
+  double final_cell = 0;    // mm: the best layout re-scored by finite volumes (T3); 0: not
 
   std::string to_yaml(const std::vector<std::string>& objective_names) const;
 };
