@@ -5,7 +5,7 @@
 
 #include "mtcs/eval/drill_access.h"
 #include "mtcs/eval/thermal_model.h"
-#include "thermal_tiers.h"
+#include "mtcs/eval/thermal_tiers.h"
 #include "mtcs/mold/decoder.h"
 #include "stages.h"
 

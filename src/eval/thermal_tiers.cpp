@@ -1,4 +1,4 @@
-#include "thermal_tiers.h"
+#include "mtcs/eval/thermal_tiers.h"
 
 #include <memory>
 
