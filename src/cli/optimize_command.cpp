@@ -27,7 +27,9 @@
 #include "mtcs/opt/benchmark_problems.h"
 #include "mtcs/opt/sms_emoa.h"
 #include "mtcs/store/run_store.h"
+#include "mtcs/run/interruption.h"
 #include "mtcs/run/polish.h"
+#include "mtcs/run/progress_line.h"
 #include "mtcs/run/run_outputs.h"
 #include "mtcs/run/run_record.h"
 #include "mtcs/run/session.h"
@@ -100,30 +102,24 @@ int run_test_problem(const Options& o) {
 // One status line on a terminal, a log line every few generations otherwise.
 class Progress {
  public:
-  Progress(int log_every, long budget)
-      : quiet_(!spdlog::should_log(spdlog::level::info)), tty_(::isatty(2)), log_every_(log_every), budget_(budget) {}
+  Progress(const run::MoldOptimizer& optimizer, int log_every)
+      : optimizer_(optimizer), quiet_(!spdlog::should_log(spdlog::level::info)), tty_(::isatty(2)), log_every_(log_every) {}
   void operator()(const opt::Generation& g, double seconds, long evals_this_session) {
-    if (quiet_) return;
-    const double rate = seconds > 0 ? double(evals_this_session) / seconds : 0;
-    int feasible = 0;
-    for (const auto& ind : g.population) feasible += ind.score.feasible;
-    const double eta = rate > 0 ? double(budget_ - g.evaluations) / rate : 0;
-    char line[200];
-    std::snprintf(line, sizeof line, "gen %5d | %9ld evals | %8.0f evals/s | best %.6g%s | feasible %3.0f%% | ETA %.0f s",
-                  g.index, g.evaluations, rate, g.population.front().score.value,
-                  g.population.front().score.feasible ? "" : " (infeasible)",
-                  100.0 * feasible / double(g.population.size()), eta);
-    if (tty_) std::fprintf(stderr, "\r%s\033[K", line);
-    else if (g.index % log_every_ == 0) spdlog::info(line);
+    // SMS-EMOA's generations are its stored steps, every mu.
+    const int generation = optimizer_.pareto() ? g.index / optimizer_.mu() : g.index;
+    if (quiet_ || (!tty_ && generation % log_every_ != 0)) return;
+    const std::string line = run::progress_line(optimizer_, g, seconds, evals_this_session);
+    if (tty_) std::fprintf(stderr, "\r%s\033[K", line.c_str());
+    else spdlog::info(line);
   }
   void done() const {
     if (!quiet_ && tty_) std::fprintf(stderr, "\n");
   }
 
  private:
+  const run::MoldOptimizer& optimizer_;
   bool quiet_, tty_;
   int log_every_;
-  long budget_;
 };
 
 int run_optimize(const Options& o) {
@@ -163,8 +159,10 @@ int run_optimize(const Options& o) {
   const run::MoldOptimizer optimizer(problem, scene, config);
   spdlog::debug("mold {}: {} surface samples; run config:\n{}", mold_path, session.pipeline().surface_samples(),
                 config.to_yaml(names));
-  Progress progress(config.log_every, config.es.evaluations);
-  const run::StoredRun stored = run::run_stored(optimizer, problem, *db, progress);
+  if (optimizer.pareto()) spdlog::info(run::hypervolume_basis(optimizer, names));
+  Progress progress(optimizer, config.log_every);
+  const run::Interruption interruption;  // Ctrl-C: stop after this generation, write, say how to resume
+  const run::StoredRun stored = run::run_stored(optimizer, problem, *db, progress, [&] { return interruption.requested(); });
   const opt::Generation& last = stored.last;
   const double seconds = stored.seconds;
   progress.done();
@@ -172,7 +170,8 @@ int run_optimize(const Options& o) {
   // The best layout, for CAD and for re-scoring with mtcs evaluate; optionally polished.
   const opt::Individual& first = last.population.front();
   run::RunOutcome outcome{last, first.score, problem.genome(first.x), seconds, mold_path, std::nullopt, first.score.value};
-  if (o.polish > 0) {
+  outcome.interrupted = stored.interrupted;
+  if (o.polish > 0 && !stored.interrupted) {
     outcome.polished = run::polish(problem, scene, outcome.genome, o.polish);
     if (outcome.polished->improved) outcome.genome = outcome.polished->genome, outcome.best = outcome.polished->score;
     spdlog::info("polish (COBYLA, {} evaluations): objective {:.6g}{}", outcome.polished->evaluations, outcome.best.value,
@@ -187,7 +186,12 @@ int run_optimize(const Options& o) {
   spdlog::info("results in {}/: best.layout.yaml (mtcs evaluate {} --layout {}/best.layout.yaml), bores.csv, bores.stl, "
                "summary.json, run.sqlite",
                out_dir, mold_path, out_dir);
-  return 0;
+  if (!stored.interrupted) return 0;
+  // Said whatever the log level: the run is not finished.
+  std::fprintf(stderr, "interrupted after generation %d (%ld of %ld evaluations): the best layout so far is in %s/\n"
+                       "continue with: mtcs optimize --resume %s\n",
+               last.index, last.evaluations, optimizer.budget(), out_dir.c_str(), out_dir.c_str());
+  return interruption.exit_code();
 }
 
 }  // namespace

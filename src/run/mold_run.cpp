@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "mtcs/io/input_error.h"
+#include "mtcs/opt/run.h"
 
 namespace mtcs::run {
 
@@ -41,18 +42,39 @@ opt::SmsConfig MoldOptimizer::sms_config(const mold::Scene& scene, const RunConf
   c.seed = config.es.seed;
   // The reference point in raw units, from the scaled one of the config.
   const auto& obj = scene.spec().objectives;
-  const std::vector<double> scaled = scaled_reference(config, obj.use.size());
+  const std::vector<double> scaled = run::scaled_reference(config, obj.use.size());
   for (std::size_t k = 0; k < obj.use.size(); ++k) c.ref.push_back(scaled[k] * obj.scale(obj.use[k]));
   return c;
 }
 
 MoldOptimizer::MoldOptimizer(const MoldProblem& problem, const mold::Scene& scene, const RunConfig& config)
     : es_(problem, es_config(scene, config)), sms_(problem, sms_config(scene, config)),
-      pareto_(config.algorithm == "sms-emoa") {}
+      pareto_(config.algorithm == "sms-emoa") {
+  const auto& obj = scene.spec().objectives;
+  for (const auto o : obj.use) scales_.push_back(obj.scale(o));
+}
+
+std::vector<double> MoldOptimizer::scaled_reference() const {
+  std::vector<double> r = raw_reference();
+  for (std::size_t k = 0; k < r.size(); ++k) r[k] /= scales_[k];
+  return r;
+}
+
+double MoldOptimizer::scaled_hypervolume(const std::vector<opt::Point>& raw_front) const {
+  std::vector<opt::Point> front = raw_front;
+  for (auto& p : front)
+    for (std::size_t k = 0; k < p.size(); ++k) p[k] /= scales_[k];
+  return opt::hypervolume(front, scaled_reference());
+}
 
 opt::Generation MoldOptimizer::run(const opt::Generation* start,
-                                   const std::function<void(const opt::Generation&)>& on_generation) const {
-  return pareto_ ? opt::run(sms_, start, on_generation) : opt::run(es_, start, on_generation);
+                                   const std::function<void(const opt::Generation&)>& on_generation,
+                                   const std::function<bool()>& stop) const {
+  std::function<bool(const opt::Generation&)> at_generation_end;
+  if (stop)
+    at_generation_end = [&](const opt::Generation& g) { return (!pareto_ || g.index % mu() == 0) && stop(); };
+  return pareto_ ? opt::run_to_budget(sms_, start, on_generation, at_generation_end)
+                 : opt::run_to_budget(es_, start, on_generation, at_generation_end);
 }
 
 }  // namespace mtcs::run

@@ -25,6 +25,7 @@ mold::Layout write_run_outputs(const std::string& out_dir, const mold::Scene& sc
   summary["feasible"] = o.best.feasible;
   summary["seconds"] = o.seconds;
   summary["generations"] = o.last.index;
+  summary["interrupted"] = o.interrupted;
   summary["mold"] = o.mold_path;
   for (std::size_t k = 0; k < names.size() && k < o.best.objectives.size(); ++k)
     summary["objectives"][names[k]] = o.best.objectives[k];

@@ -39,9 +39,19 @@ class MoldOptimizer {
   // SMS-EMOA's population size and reference point (raw objective units).
   int mu() const { return sms_.config().mu; }
   const opt::Point& raw_reference() const { return sms_.config().ref; }
+  // Whether g has spent the budget.
+  bool done(const opt::Generation& g) const { return pareto_ ? sms_.done(g) : es_.done(g); }
+  long budget() const { return sms_.config().evaluations; }
+  // Hypervolumes are reported in scaled objectives (objective / its scale in the spec): the
+  // scales, the reference point so scaled, and the hypervolume of a front of raw points.
+  const std::vector<double>& scales() const { return scales_; }
+  std::vector<double> scaled_reference() const;
+  double scaled_hypervolume(const std::vector<opt::Point>& raw_front) const;
   // From a stored generation (resume) or a fresh population to the budget; on_generation sees
-  // every ES generation and every SMS-EMOA step.
-  opt::Generation run(const opt::Generation* start, const std::function<void(const opt::Generation&)>& on_generation) const;
+  // every ES generation and every SMS-EMOA step. With `stop`, it ends early once stop() is true
+  // at the end of a generation (SMS-EMOA: of mu steps, the generations the store keeps).
+  opt::Generation run(const opt::Generation* start, const std::function<void(const opt::Generation&)>& on_generation,
+                      const std::function<bool()>& stop = {}) const;
 
  private:
   static opt::EsConfig es_config(const mold::Scene& scene, const RunConfig& config);
@@ -50,6 +60,7 @@ class MoldOptimizer {
   opt::EvolutionStrategy es_;
   opt::SmsEmoa sms_;
   bool pareto_;
+  std::vector<double> scales_;
 };
 
 }  // namespace mtcs::run

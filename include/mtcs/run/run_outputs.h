@@ -20,6 +20,7 @@ struct RunOutcome {
   std::string mold_path;
   std::optional<Polished> polished;  // when a polish ran
   double before_polish = 0;          // the objective it started from
+  bool interrupted = false;          // stopped before the budget (Ctrl-C): best so far
 };
 
 // Writes the files into out_dir (each whole or not at all); returns the best layout decoded.
