@@ -27,7 +27,7 @@ nlohmann::ordered_json to_json(const eval::Evaluation& e, const eval::Pipeline& 
   j["violation"] = e.violation;
   j["violations"] = nlohmann::ordered_json::array();
   for (const auto& v : e.violations) {
-    j["violations"].push_back({{"kind", v.kind},
+    j["violations"].push_back({{"kind", eval::to_string(v.kind)},
                                {"elements", v.elements},
                                {"distance", v.distance},
                                {"margin", v.margin},
@@ -43,11 +43,18 @@ nlohmann::ordered_json to_json(const eval::Evaluation& e, const eval::Pipeline& 
 std::string found_and_needed(const eval::Violation& v) {
   std::ostringstream s;
   s << std::setprecision(10);
-  if (v.kind == "depth_ratio") s << "depth/diameter " << v.distance << ", at most " << v.margin;
-  else if (v.kind == "entry_angle") s << "entry angle " << v.distance << " deg, at most " << v.margin << " deg";
-  else if (v.kind == "entry_face") s << "drilled from a face that is not allowed";
-  else if (v.kind == "inlet_face" || v.kind == "outlet_face") s << v.distance << " mm from the nearest allowed face";
-  else s << "found " << v.distance << " mm, needs " << v.margin << " mm";
+  using K = eval::ViolationKind;
+  switch (v.kind) {
+    case K::DepthRatio: s << "depth/diameter " << v.distance << ", at most " << v.margin; break;
+    case K::EntryAngle: s << "entry angle " << v.distance << " deg, at most " << v.margin << " deg"; break;
+    case K::EntryFace: s << "drilled from a face that is not allowed"; break;
+    case K::InletFace:
+    case K::OutletFace: s << v.distance << " mm from the nearest allowed face"; break;
+    case K::BoreBore:
+    case K::BoreKeepout:
+    case K::BoreCavity:
+    case K::BoreSurface: s << "found " << v.distance << " mm, needs " << v.margin << " mm"; break;
+  }
   return s.str();
 }
 
@@ -63,7 +70,7 @@ void print_text(const eval::Evaluation& e, const eval::Pipeline& pipeline, const
   std::cout << "\n" << (e.feasible() ? "feasible" : "infeasible") << ": " << e.violations.size()
             << " violated constraint(s), total violation " << e.violation << "\n";
   for (const auto& v : e.violations) {
-    std::cout << "  " << std::setw(14) << v.kind << " ";
+    std::cout << "  " << std::setw(14) << eval::to_string(v.kind) << " ";
     for (const auto& el : v.elements) std::cout << el << " ";
     std::cout << found_and_needed(v) << " at (" << v.where.x() << ", " << v.where.y() << ", " << v.where.z() << ") mm\n";
   }

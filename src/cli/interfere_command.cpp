@@ -52,7 +52,7 @@ int print_layout_interference(const std::string& mold_path, const std::string& l
     out["distance"] = r.found.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.nearest);
     auto& list = out["violations"] = nlohmann::ordered_json::array();
     for (const auto& v : r.found)
-      list.push_back({{"kind", v.kind},
+      list.push_back({{"kind", eval::to_string(v.kind)},
                       {"bore", v.elements.at(0)},
                       {"against", v.elements.size() > 1 ? v.elements[1] : ""},
                       {"interferes", v.distance <= 0},
@@ -70,7 +70,7 @@ int print_layout_interference(const std::string& mold_path, const std::string& l
   std::cout << "\n" << std::left << std::setw(13) << "kind" << std::setw(10) << "bore" << std::setw(18) << "against"
             << std::right << std::setw(12) << "distance" << std::setw(11) << "clearance" << "  where\n";
   for (const auto& v : r.found) {
-    std::cout << std::left << std::setw(13) << v.kind << std::setw(10) << v.elements.at(0) << std::setw(18)
+    std::cout << std::left << std::setw(13) << eval::to_string(v.kind) << std::setw(10) << v.elements.at(0) << std::setw(18)
               << (v.elements.size() > 1 ? v.elements[1] : "") << std::right << std::fixed << std::setprecision(4)
               << std::setw(12) << v.distance << std::setw(11) << v.margin << "  (" << std::setprecision(3)
               << v.where.x() << ", " << v.where.y() << ", " << v.where.z() << ")"

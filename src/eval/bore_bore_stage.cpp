@@ -42,7 +42,7 @@ class BoreBoreStage final : public Stage {
         const auto d = geometry::distance(a.hole, b.hole, request);
         if (d.bounded || d.distance >= margin_) continue;
         const bool ordered = items[i].index < items[j].index;
-        add_clearance(out, "bore_bore", ordered ? std::vector{a.name(), b.name()} : std::vector{b.name(), a.name()},
+        add_clearance(out, ViolationKind::BoreBore, ordered ? std::vector{a.name(), b.name()} : std::vector{b.name(), a.name()},
                       d.distance, margin_, (d.witness_a + d.witness_b) / 2);
       }
     }
@@ -56,11 +56,11 @@ class BoreBoreStage final : public Stage {
 
 std::unique_ptr<Stage> make_bore_bore_stage(const mold::Scene& scene) { return std::make_unique<BoreBoreStage>(scene); }
 
-void add_clearance(Evaluation& out, std::string kind, std::vector<std::string> elements, double distance,
+void add_clearance(Evaluation& out, ViolationKind kind, std::vector<std::string> elements, double distance,
                    double margin, const geometry::Vec3& where) {
   if (!(distance < margin) || margin <= 0) return;
   Violation v;
-  v.kind = std::move(kind);
+  v.kind = kind;
   v.elements = std::move(elements);
   v.distance = distance;
   v.margin = margin;

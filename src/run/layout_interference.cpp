@@ -18,7 +18,8 @@ LayoutInterference layout_interference(const eval::Pipeline& pipeline, const mol
   r.bores = layout.bores.size();
   r.nearest = std::numeric_limits<double>::infinity();
   for (const auto& v : e.violations)
-    if (v.kind == "bore_cavity" || v.kind == "bore_keepout" || v.kind == "bore_bore") {
+    if (v.kind == eval::ViolationKind::BoreCavity || v.kind == eval::ViolationKind::BoreKeepout ||
+        v.kind == eval::ViolationKind::BoreBore) {
       r.found.push_back(v);
       r.crossing += v.distance <= 0;
       r.nearest = std::min(r.nearest, v.distance);
