@@ -32,6 +32,7 @@
 #include "mtcs/run/progress_line.h"
 #include "mtcs/run/run_outputs.h"
 #include "mtcs/run/run_record.h"
+#include "mtcs/run/shop_layout.h"
 #include "mtcs/run/session.h"
 #include "mtcs/run/stored_run.h"
 #include "option_error.h"
@@ -177,13 +178,16 @@ int run_optimize(const Options& o) {
     spdlog::info("polish (COBYLA, {} evaluations): objective {:.6g}{}", outcome.polished->evaluations, outcome.best.value,
                  outcome.polished->improved ? "" : " (no improvement)");
   }
+  // What is written is rounded to the tolerance and tidied, and scored as written.
+  outcome.genome = run::shop_layout(scene, outcome.genome);
+  outcome.best = problem.evaluate(problem.encode(outcome.genome));
   const mold::Layout layout = run::write_run_outputs(out_dir, scene, optimizer, names, config.es.seed, outcome);
   const opt::Score& best = outcome.best;
   const mold::Genome& genome = outcome.genome;
   spdlog::info("{} best layout: {} bores in {} circuits, objective {:.6g}, {} evaluations in {:.6g} s",
                best.feasible ? "feasible" : "INFEASIBLE", layout.bores.size(), genome.circuits.size(),
                best.value, last.evaluations, seconds);
-  spdlog::info("results in {}/: best.layout.yaml (mtcs evaluate {} --layout {}/best.layout.yaml), bores.csv, bores.stl, "
+  spdlog::info("results in {}/: best.layout.yaml (mtcs evaluate {} --layout {}/best.layout.yaml), bores.csv, holes.csv, bores.stl, "
                "summary.json, run.sqlite",
                out_dir, mold_path, out_dir);
   if (!stored.interrupted) return 0;
@@ -204,7 +208,9 @@ Command add_optimize_command(CLI::App& app) {
       "SMS-EMOA (--algorithm sms-emoa: a Pareto front, front.csv), or SMS-EMOA on a test problem.\n"
       "Every generation is stored in DIR/run.sqlite; an interrupted run (even kill -9) continues\n"
       "with --resume DIR and ends exactly as an uninterrupted one. Results in DIR: run.sqlite,\n"
-      "best.layout.yaml (edit and re-score with mtcs evaluate), bores.csv, bores.stl, summary.json.\n"
+      "best.layout.yaml (coordinates to 0.01 mm; edit and re-score with mtcs evaluate), bores.csv,\n"
+      "holes.csv (the hole table: entry, direction, diameter, depth, plug, mm), bores.stl, summary.json.\n"
+      "Ctrl-C finishes the current generation, writes these and prints the --resume command.\n"
       "Example: mtcs optimize molds/plate.yaml --config configs/es_default.yaml --out runs/plate --seed 1");
   sub->add_option("mold", o->mold, "mold spec (YAML)");
   sub->add_option("--config", o->config, "run config (YAML, see configs/)");

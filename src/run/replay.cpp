@@ -15,6 +15,7 @@
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/opt/sms_emoa.h"
+#include "mtcs/run/shop_layout.h"
 
 namespace mtcs::run {
 
@@ -171,8 +172,8 @@ ReplayResult write_replay(const Session& session, const store::RunStore& db, con
   const opt::Generation& last = kept.back();
   for (const auto& m : front) {
     const int r = m["rank"];
-    const mold::Genome genome = problem.genome(last.population[std::size_t(r)].x);
-    const mold::Layout layout = mold::decode(session.scene(), genome);
+    const mold::Genome genome = shop_layout(session.scene(), problem.genome(last.population[std::size_t(r)].x));
+    const mold::Layout layout = shop_plan(mold::decode(session.scene(), genome));
     const std::string stem = "front_" + std::to_string(last.index) + "_rank" + std::to_string(r);
     mold::save_layout((out / (stem + ".layout.yaml")).string(), genome);
     mold::save_bores_csv((out / (stem + ".bores.csv")).string(), layout);

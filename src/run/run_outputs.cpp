@@ -8,6 +8,7 @@
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/opt/hypervolume.h"
 #include "mtcs/opt/sms_emoa.h"
+#include "mtcs/run/shop_layout.h"
 
 namespace mtcs::run {
 
@@ -15,9 +16,11 @@ mold::Layout write_run_outputs(const std::string& out_dir, const mold::Scene& sc
                                const std::vector<std::string>& names, std::uint64_t seed, const RunOutcome& o) {
   namespace fs = std::filesystem;
   const mold::Layout layout = mold::decode(scene, o.genome);
+  const mold::Layout plan = shop_plan(layout, o.tolerance);
   mold::save_layout((fs::path(out_dir) / "best.layout.yaml").string(), o.genome);
-  mold::save_bores_csv((fs::path(out_dir) / "bores.csv").string(), layout);
-  mold::save_bores_stl((fs::path(out_dir) / "bores.stl").string(), layout);
+  mold::save_bores_csv((fs::path(out_dir) / "bores.csv").string(), plan);
+  mold::save_holes_csv((fs::path(out_dir) / "holes.csv").string(), plan);
+  mold::save_bores_stl((fs::path(out_dir) / "bores.stl").string(), plan);
   nlohmann::ordered_json summary;
   summary["seed"] = seed;
   summary["evaluations"] = o.last.evaluations;
@@ -27,6 +30,7 @@ mold::Layout write_run_outputs(const std::string& out_dir, const mold::Scene& sc
   summary["generations"] = o.last.index;
   summary["interrupted"] = o.interrupted;
   summary["mold"] = o.mold_path;
+  summary["tolerance_mm"] = o.tolerance;  // coordinates in the layout and hole tables are rounded to it
   for (std::size_t k = 0; k < names.size() && k < o.best.objectives.size(); ++k)
     summary["objectives"][names[k]] = o.best.objectives[k];
   summary["violation"] = o.best.violation;
@@ -34,8 +38,10 @@ mold::Layout write_run_outputs(const std::string& out_dir, const mold::Scene& sc
     const auto front = opt::SmsEmoa::front(o.last);
     summary["algorithm"] = "sms-emoa";
     summary["front_size"] = front.size();
-    summary["hypervolume"] = opt::hypervolume(front, optimizer.raw_reference());
-    summary["reference_point"] = optimizer.raw_reference();
+    // As every output gives it: in scaled objectives (objective / its scale), with that reference point.
+    summary["hypervolume"] = optimizer.scaled_hypervolume(front);
+    summary["reference_point"] = optimizer.scaled_reference();
+    for (std::size_t k = 0; k < names.size(); ++k) summary["objective_scales"][names[k]] = optimizer.scales()[k];
     // front.csv: the final feasible non-dominated objective vectors, for plotting.
     io::AtomicFile csv((fs::path(out_dir) / "front.csv").string());
     for (std::size_t k = 0; k < names.size(); ++k) csv.stream() << (k ? "," : "") << names[k];

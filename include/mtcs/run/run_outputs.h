@@ -1,6 +1,6 @@
 #pragma once
 // What `mtcs optimize` leaves beside run.sqlite: best.layout.yaml (editable, re-scorable),
-// bores.csv, bores.stl, summary.json, and for SMS-EMOA front.csv.
+// bores.csv, holes.csv (the shop's hole table), bores.stl, summary.json, and for SMS-EMOA front.csv.
 
 #include <optional>
 #include <string>
@@ -9,6 +9,7 @@
 #include "mtcs/mold/layout.h"
 #include "mtcs/run/mold_run.h"
 #include "mtcs/run/polish.h"
+#include "mtcs/run/shop_layout.h"
 
 namespace mtcs::run {
 
@@ -21,6 +22,7 @@ struct RunOutcome {
   std::optional<Polished> polished;  // when a polish ran
   double before_polish = 0;          // the objective it started from
   bool interrupted = false;          // stopped before the budget (Ctrl-C): best so far
+  double tolerance = kCoordinateTolerance;  // mm, of the written coordinates (genome: already rounded)
 };
 
 // Writes the files into out_dir (each whole or not at all); returns the best layout decoded.
