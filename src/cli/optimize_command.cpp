@@ -190,6 +190,7 @@ int run_optimize(const Options& o) {
   spdlog::info("results in {}/: best.layout.yaml (mtcs evaluate {} --layout {}/best.layout.yaml), bores.csv, holes.csv, bores.stl, "
                "summary.json, run.sqlite",
                out_dir, mold_path, out_dir);
+  for (const std::string& w : run::front_warnings(optimizer, last)) spdlog::warn(w);
   if (!stored.interrupted) return 0;
   // Said whatever the log level: the run is not finished.
   std::fprintf(stderr, "interrupted after generation %d (%ld of %ld evaluations): the best layout so far is in %s/\n"
@@ -231,7 +232,8 @@ Command add_optimize_command(CLI::App& app) {
                   "es (one weighted objective) or sms-emoa (a Pareto front; writes front.csv)")->capture_default_str()
       ->check(CLI::IsMember({"es", "sms-emoa"}));
   sub->add_option("--ref", o->ref,
-                  "SMS-EMOA reference point, r1,r2,...: test problems 1.1 each; molds in scaled objectives, 4 each")
+                  "SMS-EMOA reference point, r1,r2,...: test problems 1.1 each; molds in scaled objectives\n"
+                  "(objective / scale), default twice the worst of the initial population")
       ->delimiter(',');
   sub->add_flag("--json", o->json, "test problems: the summary as one line of JSON");
   return {sub, [o, sub] {

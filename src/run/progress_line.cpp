@@ -34,7 +34,7 @@ std::string hypervolume_basis(const MoldOptimizer& optimizer, const std::vector<
     s << (k ? ", " : "") << names[k] << " / " << optimizer.scales()[k];
   s << "), reference point [";
   for (std::size_t k = 0; k < ref.size(); ++k) s << (k ? ", " : "") << ref[k];
-  s << "]";
+  s << "]: " << optimizer.reference_origin();
   return s.str();
 }
 

@@ -1,9 +1,11 @@
 #include "mtcs/run/run_outputs.h"
 
 #include <filesystem>
+#include <set>
 #include <nlohmann/json.hpp>
 
 #include "mtcs/io/atomic_file.h"
+#include "mtcs/io/number_text.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/opt/hypervolume.h"
@@ -11,6 +13,19 @@
 #include "mtcs/run/shop_layout.h"
 
 namespace mtcs::run {
+
+std::vector<std::string> front_warnings(const MoldOptimizer& optimizer, const opt::Generation& last) {
+  if (!optimizer.pareto()) return {};
+  const auto front = opt::SmsEmoa::front(last);
+  std::vector<std::string> out;
+  if (front.empty()) return {"no feasible layout in the final population: the front is empty"};
+  if (optimizer.scaled_hypervolume(front) == 0)
+    out.push_back("the front's hypervolume is 0: every point lies outside the reference point; give --ref r1,r2,... "
+                  "(scaled objectives) beyond the front.csv values / their scales");
+  if (std::set<opt::Point>(front.begin(), front.end()).size() == 1)
+    out.push_back("the front collapsed to one design: try more --evaluations or a larger es.mu");
+  return out;
+}
 
 mold::Layout write_run_outputs(const std::string& out_dir, const mold::Scene& scene, const MoldOptimizer& optimizer,
                                const std::vector<std::string>& names, std::uint64_t seed, const RunOutcome& o) {
@@ -41,13 +56,15 @@ mold::Layout write_run_outputs(const std::string& out_dir, const mold::Scene& sc
     // As every output gives it: in scaled objectives (objective / its scale), with that reference point.
     summary["hypervolume"] = optimizer.scaled_hypervolume(front);
     summary["reference_point"] = optimizer.scaled_reference();
+    summary["reference_point_origin"] = optimizer.reference_origin();
+    summary["warnings"] = front_warnings(optimizer, o.last);
     for (std::size_t k = 0; k < names.size(); ++k) summary["objective_scales"][names[k]] = optimizer.scales()[k];
     // front.csv: the final feasible non-dominated objective vectors, for plotting.
     io::AtomicFile csv((fs::path(out_dir) / "front.csv").string());
     for (std::size_t k = 0; k < names.size(); ++k) csv.stream() << (k ? "," : "") << names[k];
     csv.stream() << "\n";
     for (const auto& f : front) {
-      for (std::size_t k = 0; k < f.size(); ++k) csv.stream() << (k ? "," : "") << f[k];
+      for (std::size_t k = 0; k < f.size(); ++k) csv.stream() << (k ? "," : "") << io::shortest(f[k]);
       csv.stream() << "\n";
     }
     csv.commit();

@@ -175,9 +175,9 @@ TEST_CASE("issue 16: summary.json gives the front's hypervolume in scaled object
   const fs::path scaled = scratch("shop", "scaled_front.txt");
   {
     std::ofstream f(scaled);
-    f << "# ref";
+    f << std::setprecision(17) << "# ref";
     for (const auto& r : summary["reference_point"]) f << ' ' << r.get<double>();
-    f << '\n' << std::setprecision(17);
+    f << '\n';
     for (const auto& p : front)
       for (const char* o : {"uniformity", "worst_covered", "cost"})
         f << num(p, o) / summary["objective_scales"][o].get<double>() << (std::string(o) == "cost" ? "\n" : " ");
@@ -185,5 +185,8 @@ TEST_CASE("issue 16: summary.json gives the front's hypervolume in scaled object
   const fs::path hv = scratch("shop", "hv.txt");
   REQUIRE(run_mtcs("hypervolume " + scaled.string() + " > " + hv.string()) == 0);
   CHECK(std::stod(read_text(hv)) == Approx(summary["hypervolume"].get<double>()).epsilon(1e-12));
-  CHECK(summary["reference_point"] == nlohmann::json::array({4, 4, 4}));
+  // Derived from the mold (issue 16 item 3) and said so; the front lies inside it.
+  CHECK(summary["reference_point_origin"].get<std::string>().find("initial population") != std::string::npos);
+  CHECK(summary["hypervolume"].get<double>() > 0);
+  CHECK(summary["warnings"].empty());
 }

@@ -16,16 +16,18 @@ TEST_CASE("issue 16: SMS-EMOA's progress line gives the hypervolume in scaled ob
   o.algorithm = "sms-emoa";
   o.seed = 5;
   o.evaluations = 200;
+  o.ref = {40, 40, 40};
   const run::Session session(MTCS_SOURCE_DIR "/molds/plate.yaml", o);
   const run::MoldOptimizer optimizer(session.problem(), session.scene(), session.config());
   const opt::Generation g = optimizer.run(nullptr, {});
   const auto front = opt::SmsEmoa::front(g);
   REQUIRE_FALSE(front.empty());
   // The reference: raw hypervolume over the product of the scales (plate: 5, 20, 1000), against
-  // the default reference point of 4 per scaled objective.
+  // the given reference point of 40 per scaled objective.
   const double scales = 5.0 * 20 * 1000;
-  CHECK(optimizer.scaled_reference() == std::vector<double>{4, 4, 4});
-  const double hv = opt::hypervolume(front, {4 * 5.0, 4 * 20.0, 4 * 1000.0}) / scales;
+  CHECK(optimizer.scaled_reference() == std::vector<double>{40, 40, 40});
+  const double hv = opt::hypervolume(front, {40 * 5.0, 40 * 20.0, 40 * 1000.0}) / scales;
+  REQUIRE(hv > 0);
   CHECK(optimizer.scaled_hypervolume(front) == Approx(hv).epsilon(1e-12));
   char expected[80];
   std::snprintf(expected, sizeof expected, "HV %.6g | front %zu |", hv, front.size());
@@ -33,5 +35,5 @@ TEST_CASE("issue 16: SMS-EMOA's progress line gives the hypervolume in scaled ob
   CHECK_THAT(line, Catch::Contains(expected));
   CHECK_THAT(line, !Catch::Contains("best"));
   CHECK_THAT(run::hypervolume_basis(optimizer, session.objective_names()),
-             Catch::Contains("uniformity / 5, worst_covered / 20, cost / 1000), reference point [4, 4, 4]"));
+             Catch::Contains("uniformity / 5, worst_covered / 20, cost / 1000), reference point [40, 40, 40]: given"));
 }

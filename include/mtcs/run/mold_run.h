@@ -28,8 +28,14 @@ struct RunOverrides {
 // Throws io::InputError naming the field (e.g. "ref" without one value per objective).
 RunConfig resolve_run_config(const RunOverrides& overrides, const std::vector<std::string>& objective_names);
 
-// The reference point in scaled objectives (objective / its scale): the config's, or 4 each.
-std::vector<double> scaled_reference(const RunConfig& config, std::size_t objectives);
+// The reference point in scaled objectives (objective / its scale): the config's (--ref), or
+// one that fits the mold: twice the worst value of each objective over the initial population
+// of the config's seed (a fixed 4 each left new molds' fronts outside it: hypervolume 0); 4
+// where that population has no finite value.
+std::vector<double> scaled_reference(const RunConfig& config, const MoldProblem& problem,
+                                     const mold::Objectives& objectives);
+// How that reference point was chosen, for the outputs.
+std::string reference_origin(const RunConfig& config);
 
 class MoldOptimizer {
  public:
@@ -39,6 +45,7 @@ class MoldOptimizer {
   // SMS-EMOA's population size and reference point (raw objective units).
   int mu() const { return sms_.config().mu; }
   const opt::Point& raw_reference() const { return sms_.config().ref; }
+  const std::string& reference_origin() const { return reference_origin_; }
   // Whether g has spent the budget.
   bool done(const opt::Generation& g) const { return pareto_ ? sms_.done(g) : es_.done(g); }
   long budget() const { return sms_.config().evaluations; }
@@ -55,12 +62,13 @@ class MoldOptimizer {
 
  private:
   static opt::EsConfig es_config(const mold::Scene& scene, const RunConfig& config);
-  static opt::SmsConfig sms_config(const mold::Scene& scene, const RunConfig& config);
+  static opt::SmsConfig sms_config(const MoldProblem& problem, const mold::Scene& scene, const RunConfig& config);
 
   opt::EvolutionStrategy es_;
   opt::SmsEmoa sms_;
   bool pareto_;
   std::vector<double> scales_;
+  std::string reference_origin_;
 };
 
 }  // namespace mtcs::run

@@ -25,6 +25,10 @@ struct RunOutcome {
   double tolerance = kCoordinateTolerance;  // mm, of the written coordinates (genome: already rounded)
 };
 
+// What a designer must hear about a Pareto front: hypervolume 0 (every point outside the
+// reference point) or a front of a single design. Empty for the ES and for a healthy front.
+std::vector<std::string> front_warnings(const MoldOptimizer& optimizer, const opt::Generation& last);
+
 // Writes the files into out_dir (each whole or not at all); returns the best layout decoded.
 mold::Layout write_run_outputs(const std::string& out_dir, const mold::Scene& scene, const MoldOptimizer& optimizer,
                                const std::vector<std::string>& objective_names, std::uint64_t seed,
