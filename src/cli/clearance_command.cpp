@@ -26,7 +26,8 @@ Command add_clearance_command(CLI::App& app) {
       "triangle mesh (STL, OFF, OBJ or PLY): 0 when a cylinder touches the part, crosses it or\n"
       "lies inside it.\n"
       "Input columns (by header name, extra columns ignored): id,p0x,p0y,p0z,p1x,p1y,p1z,r\n"
-      "  (axis end points = end disk centres, radius; the mesh's own coordinates).\n"
+      "  (axis end points = end disk centres, radius; the mesh's own coordinates), or name and\n"
+      "  diameter instead of id and r: the bores.csv of mtcs optimize reads as it is.\n"
       "Output: id,distance,bounded  (bounded=1: only distance >= U was proved; the value is a\n"
       "lower bound >= U).");
   sub->footer(

@@ -59,9 +59,14 @@ int run_compare(const Options& o) {
   refuse_nonempty_folder(o.out);
   // One Scene for every variant: the variant is part of each run's config, not of the mold.
   const run::Session session(o.mold, {o.config, o.algorithm, o.ref, std::nullopt, o.evaluations});
-  const run::RunConfig& config = session.config();
+  // One reference point for every variant and seed (derived from seed 1's initial population
+  // unless given), so that their hypervolumes compare.
+  run::RunConfig config = session.config();
   const std::vector<std::string>& names = session.objective_names();
-  const std::vector<double> ref = run::scaled_reference(config, names.size());
+  run::RunConfig first_seed = config;
+  first_seed.es.seed = 1;
+  config.ref = run::scaled_reference(first_seed, session.problem(), session.spec().objectives);
+  const std::vector<double>& ref = config.ref;
   std::optional<tbb::global_control> limit;
   if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
   make_output_folder(o.out);

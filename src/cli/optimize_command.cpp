@@ -26,9 +26,12 @@
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/opt/benchmark_problems.h"
 #include "mtcs/store/run_store.h"
+#include "mtcs/run/interruption.h"
 #include "mtcs/run/polish.h"
+#include "mtcs/run/progress_line.h"
 #include "mtcs/run/run_outputs.h"
 #include "mtcs/run/run_record.h"
+#include "mtcs/run/shop_layout.h"
 #include "mtcs/run/session.h"
 #include "mtcs/run/stored_run.h"
 #include "mtcs/run/test_problem_run.h"
@@ -80,30 +83,24 @@ int run_test_problem(const Options& o) {
 // One status line on a terminal, a log line every few generations otherwise.
 class Progress {
  public:
-  Progress(int log_every, long budget)
-      : quiet_(!spdlog::should_log(spdlog::level::info)), tty_(::isatty(2)), log_every_(log_every), budget_(budget) {}
+  Progress(const run::MoldOptimizer& optimizer, int log_every)
+      : optimizer_(optimizer), quiet_(!spdlog::should_log(spdlog::level::info)), tty_(::isatty(2)), log_every_(log_every) {}
   void operator()(const opt::Generation& g, double seconds, long evals_this_session) {
-    if (quiet_) return;
-    const double rate = seconds > 0 ? double(evals_this_session) / seconds : 0;
-    int feasible = 0;
-    for (const auto& ind : g.population) feasible += ind.score.feasible;
-    const double eta = rate > 0 ? double(budget_ - g.evaluations) / rate : 0;
-    char line[200];
-    std::snprintf(line, sizeof line, "gen %5d | %9ld evals | %8.0f evals/s | best %.6g%s | feasible %3.0f%% | ETA %.0f s",
-                  g.index, g.evaluations, rate, g.population.front().score.value,
-                  g.population.front().score.feasible ? "" : " (infeasible)",
-                  100.0 * feasible / double(g.population.size()), eta);
-    if (tty_) std::fprintf(stderr, "\r%s\033[K", line);
-    else if (g.index % log_every_ == 0) spdlog::info(line);
+    // SMS-EMOA's generations are its stored steps, every mu.
+    const int generation = optimizer_.pareto() ? g.index / optimizer_.mu() : g.index;
+    if (quiet_ || (!tty_ && generation % log_every_ != 0)) return;
+    const std::string line = run::progress_line(optimizer_, g, seconds, evals_this_session);
+    if (tty_) std::fprintf(stderr, "\r%s\033[K", line.c_str());
+    else spdlog::info(line);
   }
   void done() const {
     if (!quiet_ && tty_) std::fprintf(stderr, "\n");
   }
 
  private:
+  const run::MoldOptimizer& optimizer_;
   bool quiet_, tty_;
   int log_every_;
-  long budget_;
 };
 
 int run_optimize(const Options& o) {
@@ -143,8 +140,10 @@ int run_optimize(const Options& o) {
   const run::MoldOptimizer optimizer(problem, scene, config);
   spdlog::debug("mold {}: {} surface samples; run config:\n{}", mold_path, session.pipeline().surface_samples(),
                 config.to_yaml(names));
-  Progress progress(config.log_every, config.es.evaluations);
-  const run::StoredRun stored = run::run_stored(optimizer, problem, *db, progress);
+  if (optimizer.pareto()) spdlog::info(run::hypervolume_basis(optimizer, names));
+  Progress progress(optimizer, config.log_every);
+  const run::Interruption interruption;  // Ctrl-C: stop after this generation, write, say how to resume
+  const run::StoredRun stored = run::run_stored(optimizer, problem, *db, progress, [&] { return interruption.requested(); });
   const opt::Generation& last = stored.last;
   const double seconds = stored.seconds;
   progress.done();
@@ -152,22 +151,32 @@ int run_optimize(const Options& o) {
   // The best layout, for CAD and for re-scoring with mtcs evaluate; optionally polished.
   const opt::Individual& first = last.population.front();
   run::RunOutcome outcome{last, first.score, problem.genome(first.x), seconds, mold_path, std::nullopt, first.score.value};
-  if (o.polish > 0) {
+  outcome.interrupted = stored.interrupted;
+  if (o.polish > 0 && !stored.interrupted) {
     outcome.polished = run::polish(problem, scene, outcome.genome, o.polish);
     if (outcome.polished->improved) outcome.genome = outcome.polished->genome, outcome.best = outcome.polished->score;
     spdlog::info("polish (COBYLA, {} evaluations): objective {:.6g}{}", outcome.polished->evaluations, outcome.best.value,
                  outcome.polished->improved ? "" : " (no improvement)");
   }
+  // What is written is rounded to the tolerance and tidied, and scored as written.
+  outcome.genome = run::shop_layout(scene, outcome.genome);
+  outcome.best = problem.evaluate(problem.encode(outcome.genome));
   const mold::Layout layout = run::write_run_outputs(out_dir, scene, optimizer, names, config.es.seed, outcome);
   const opt::Score& best = outcome.best;
   const mold::Genome& genome = outcome.genome;
   spdlog::info("{} best layout: {} bores in {} circuits, objective {:.6g}, {} evaluations in {:.6g} s",
                best.feasible ? "feasible" : "INFEASIBLE", layout.bores.size(), genome.circuits.size(),
                best.value, last.evaluations, seconds);
-  spdlog::info("results in {}/: best.layout.yaml (mtcs evaluate {} --layout {}/best.layout.yaml), bores.csv, bores.stl, "
+  spdlog::info("results in {}/: best.layout.yaml (mtcs evaluate {} --layout {}/best.layout.yaml), bores.csv, holes.csv, bores.stl, "
                "summary.json, run.sqlite",
                out_dir, mold_path, out_dir);
-  return 0;
+  for (const std::string& w : run::front_warnings(optimizer, last)) spdlog::warn(w);
+  if (!stored.interrupted) return 0;
+  // Said whatever the log level: the run is not finished.
+  std::fprintf(stderr, "interrupted after generation %d (%ld of %ld evaluations): the best layout so far is in %s/\n"
+                       "continue with: mtcs optimize --resume %s\n",
+               last.index, last.evaluations, optimizer.budget(), out_dir.c_str(), out_dir.c_str());
+  return interruption.exit_code();
 }
 
 }  // namespace
@@ -180,7 +189,9 @@ Command add_optimize_command(CLI::App& app) {
       "SMS-EMOA (--algorithm sms-emoa: a Pareto front, front.csv), or SMS-EMOA on a test problem.\n"
       "Every generation is stored in DIR/run.sqlite; an interrupted run (even kill -9) continues\n"
       "with --resume DIR and ends exactly as an uninterrupted one. Results in DIR: run.sqlite,\n"
-      "best.layout.yaml (edit and re-score with mtcs evaluate), bores.csv, bores.stl, summary.json.\n"
+      "best.layout.yaml (coordinates to 0.01 mm; edit and re-score with mtcs evaluate), bores.csv,\n"
+      "holes.csv (the hole table: entry, direction, diameter, depth, plug, mm), bores.stl, summary.json.\n"
+      "Ctrl-C finishes the current generation, writes these and prints the --resume command.\n"
       "Example: mtcs optimize molds/plate.yaml --config configs/es_default.yaml --out runs/plate --seed 1");
   sub->add_option("mold", o->mold, "mold spec (YAML)");
   sub->add_option("--config", o->config, "run config (YAML, see configs/)");
@@ -201,7 +212,8 @@ Command add_optimize_command(CLI::App& app) {
                   "es (one weighted objective) or sms-emoa (a Pareto front; writes front.csv)")->capture_default_str()
       ->check(CLI::IsMember({"es", "sms-emoa"}));
   sub->add_option("--ref", o->ref,
-                  "SMS-EMOA reference point, r1,r2,...: test problems 1.1 each; molds in scaled objectives, 4 each")
+                  "SMS-EMOA reference point, r1,r2,...: test problems 1.1 each; molds in scaled objectives\n"
+                  "(objective / scale), default twice the worst of the initial population")
       ->delimiter(',');
   sub->add_flag("--json", o->json, "test problems: the summary as one line of JSON");
   return {sub, [o, sub] {

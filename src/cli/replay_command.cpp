@@ -6,7 +6,6 @@
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 #include <filesystem>
-#include <iostream>
 #include <sstream>
 #include <memory>
 
@@ -26,7 +25,7 @@ namespace fs = std::filesystem;
 
 struct Options {
   std::string dir, mold;
-  std::optional<int> generation;
+  run::ReplayChoice choice;
   bool verify = false;
   bool plots = true;
 };
@@ -40,16 +39,20 @@ int run_replay(const Options& o) {
   std::string mold_note;
   const run::Session session(run::stored_mold_spec(meta, o.mold, &mold_note), meta.at("config"), db_path + ":config");
   if (!mold_note.empty()) spdlog::warn(mold_note);
-  const fs::path out = fs::path(o.dir) / "replay";
-  const run::Replay r = run::replay_fronts(db, session, o.generation, out.string());
-  if (r.generations == 0) throw io::InputError(db_path, 0, 0, "generation", "no such stored generation");
-  spdlog::info("replayed {} generation(s), {} individuals: {} objective mismatch(es); fronts in {}/", r.generations, r.checked,
-               r.mismatches, out.string());
+
   std::ostringstream plot_log;
+  bool plotted = false;
+  const run::ReplayResult r = run::write_replay(session, db, o.dir, o.choice, [&](const fs::path& folder) {
+    if (o.plots) plotted = render_plot("plot_fronts.py", {(folder / "frames.json").string()}, plot_log);
+  });
+  const fs::path& out = r.folder;
+  spdlog::info("re-evaluated {} individuals: {} objective mismatch(es); {} generation(s) replayed, fronts in {}/{}",
+               r.checked, r.mismatches, r.generations, out.string(),
+               o.choice.all || o.choice.every || o.choice.generation ? "" : " (a sample: --every N or --all for more)");
   if (!o.plots)
     spdlog::info("no front plots (--no-plots); render them with: {}",
                  plot_command("plot_fronts.py", {(out / "frames.json").string()}));
-  else if (render_plot("plot_fronts.py", {(out / "frames.json").string()}, plot_log))
+  else if (plotted)
     spdlog::info("front plots: {0}/front_*.png (an animation: ffmpeg -framerate 10 -pattern_type glob -i '{0}/front_*.png' "
                  "front.mp4)",
                  out.string());
@@ -64,20 +67,24 @@ Command add_replay_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   CLI::App* sub = app.add_subcommand(
       "replay",
-      "Re-evaluate the populations of a stored mold run; write each generation's feasible\n"
-      "non-dominated front (DIR/replay/front_G.csv and .json), its plot (front_000G.png, numbered by\n"
+      "Re-evaluate the populations of a stored mold run; for a sample of generations (--every,\n"
+      "--all) write the feasible non-dominated front (DIR/replay/front_G.csv and .json), its plot (front_000G.png, numbered by\n"
       "generation, the same axes in every plot: an animation; when /usr/bin/python3 has matplotlib)\n"
       "and the last front's layouts (front_G_rankR.layout.yaml, .bores.csv, .bores.stl: every bore\n"
-      "a closed cylinder mesh).\n"
+      "a closed cylinder mesh). DIR/replay is replaced whole at the end (never half-written).\n"
       "--verify: exit 1 unless every re-evaluated objective equals the stored one bit for bit.\n"
       "Example: mtcs replay runs/demo-plate --verify");
   sub->add_option("dir", o->dir, "run folder (with run.sqlite)")->required();
-  sub->add_option("--generation", o->generation, "only this stored generation");
+  sub->add_option("--generation", o->choice.generation, "only this stored generation");
+  sub->add_option("--every", o->choice.every, "files for every N-th stored generation and the last (default: about " +
+                                                  std::to_string(run::kReplaySample) + " evenly spaced)")
+      ->check(CLI::Range(1, 1000000000));
+  sub->add_flag("--all", o->choice.all, "files for every stored generation");
   sub->add_option("--mold", o->mold,
                   "the run's mold at a new place (default: the spec text stored in the run, or for a mold with\n"
                   "mesh files the stored path); a mold that differs from the run's is named with what changed");
   add_log_flags(sub);
-  sub->add_flag("--verify", o->verify, "fail unless the replay reproduces every objective exactly");
+  sub->add_flag("--verify", o->verify, "fail unless every stored generation re-evaluates to its objectives exactly");
   sub->add_flag("!--no-plots", o->plots, "no PNGs (about 0.1 s per generation); frames.json is still written");
   return {sub, [o] { return run_replay(*o); }};
 }

@@ -22,7 +22,9 @@ class SurfaceStage final : public Stage {
       const double cosine = std::max(0.1, std::cos(b.entry_angle_deg * 3.14159265358979323846 / 180));
       const double skip = (margin_ + b.hole.radius) / cosine;
       const double d = scene_.surface_clearance(b.hole, skip, margin_, b.through ? skip : 0.0);
-      add_clearance(out, ViolationKind::BoreSurface, {b.name(), "block"}, d, margin_, b.hole.p1);
+      if (d < margin_)
+        add_clearance(out, ViolationKind::BoreSurface, {b.name(), "block"}, d, margin_,
+                      scene_.surface_place(b.hole, skip, b.through ? skip : 0.0));
     }
   }
 
@@ -30,6 +32,19 @@ class SurfaceStage final : public Stage {
   const mold::Scene& scene_;
   double margin_;
 };
+
+// The inlet (where the circuit's first bore's flow starts) or outlet (where its last ends).
+geometry::Vec3 port_place(const mold::Layout& layout, const mold::PortProblem& p) {
+  const mold::Bore* first = nullptr;
+  const mold::Bore* last = nullptr;
+  for (const mold::Bore& b : layout.bores) {
+    if (b.circuit != p.circuit) continue;
+    if (!first) first = &b;
+    last = &b;
+  }
+  if (!first) return geometry::Vec3::Zero();
+  return p.inlet ? first->flow_start : last->flow_end;
+}
 
 // Drilling limits: depth/diameter ratio, entry face and angle, inlet/outlet faces.
 class DrillingStage final : public Stage {
@@ -50,7 +65,7 @@ class DrillingStage final : public Stage {
     }
     for (const mold::PortProblem& p : layout.ports) {
       const std::string c = "c" + std::to_string(p.circuit);
-      out.violations.push_back({p.inlet ? ViolationKind::InletFace : ViolationKind::OutletFace, {c}, p.off_face, 0, p.off_face, geometry::Vec3::Zero()});
+      out.violations.push_back({p.inlet ? ViolationKind::InletFace : ViolationKind::OutletFace, {c}, p.off_face, 0, p.off_face, port_place(layout, p)});
     }
   }
 

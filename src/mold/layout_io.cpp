@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "mtcs/io/atomic_file.h"
+#include "mtcs/io/number_text.h"
 #include "mtcs/mesh/mesh_io.h"
 #include "mtcs/io/yaml_reader.h"
 
@@ -48,9 +49,12 @@ void save_layout(const std::string& path, const Genome& genome) {
   out.SetDoublePrecision(17);
   out << YAML::BeginMap << YAML::Key << "circuits" << YAML::Value << YAML::BeginSeq;
   for (const Circuit& c : genome.circuits) {
-    out << YAML::BeginMap << YAML::Key << "diameter" << YAML::Value << c.diameter;
+    out << YAML::BeginMap << YAML::Key << "diameter" << YAML::Value << io::shortest(c.diameter);
     out << YAML::Key << "waypoints" << YAML::Value << YAML::BeginSeq;
-    for (const Vec3& p : c.waypoints) out << YAML::Flow << YAML::BeginSeq << p.x() << p.y() << p.z() << YAML::EndSeq;
+    // The fewest digits that read back exactly: a rounded layout reads 35.12, not 35.119999999999997.
+    for (const Vec3& p : c.waypoints)
+      out << YAML::Flow << YAML::BeginSeq << io::shortest(p.x()) << io::shortest(p.y()) << io::shortest(p.z())
+          << YAML::EndSeq;
     out << YAML::EndSeq << YAML::EndMap;
   }
   out << YAML::EndSeq << YAML::EndMap;
@@ -62,11 +66,33 @@ void save_layout(const std::string& path, const Genome& genome) {
 void save_bores_csv(const std::string& path, const Layout& layout) {
   io::AtomicFile file(path);
   auto& out = file.stream();
+  const auto n = [](double v) { return io::shortest(v); };
   out << "name,circuit,segment,p0x,p0y,p0z,p1x,p1y,p1z,diameter,entry_face,plugged,dead_end\n";
   for (const Bore& b : layout.bores) {
-    out << b.name() << ',' << b.circuit << ',' << b.segment << ',' << b.hole.p0.x() << ',' << b.hole.p0.y() << ','
-        << b.hole.p0.z() << ',' << b.hole.p1.x() << ',' << b.hole.p1.y() << ',' << b.hole.p1.z() << ','
-        << b.diameter << ',' << to_string(b.entry_face) << ',' << (b.plugged ? 1 : 0) << ',' << b.dead_end << '\n';
+    out << b.name() << ',' << b.circuit << ',' << b.segment << ',' << n(b.hole.p0.x()) << ',' << n(b.hole.p0.y()) << ','
+        << n(b.hole.p0.z()) << ',' << n(b.hole.p1.x()) << ',' << n(b.hole.p1.y()) << ',' << n(b.hole.p1.z()) << ','
+        << n(b.diameter) << ',' << to_string(b.entry_face) << ',' << (b.plugged ? 1 : 0) << ',' << n(b.dead_end) << '\n';
+  }
+  file.commit();
+}
+
+void save_holes_csv(const std::string& path, const Layout& layout) {
+  io::AtomicFile file(path);
+  auto& out = file.stream();
+  const auto n = [](double v) { return io::shortest(v); };
+  out << "hole,circuit,entry_x,entry_y,entry_z,direction_x,direction_y,direction_z,diameter,depth,entry_face,"
+         "plug_x,plug_y,plug_z\n";
+  for (const Bore& b : layout.bores) {
+    const Vec3 axis = b.hole.p1 - b.hole.p0;
+    const double depth = axis.norm();
+    const Vec3 u = depth > 0 ? Vec3(axis / depth) : Vec3::Zero();
+    // Directions along an axis print as 1, 0, -1; others to a millionth.
+    const auto dir = [&](double v) { return n(std::round(v * 1e6) / 1e6); };
+    out << b.name() << ',' << b.circuit << ',' << n(b.hole.p0.x()) << ',' << n(b.hole.p0.y()) << ',' << n(b.hole.p0.z())
+        << ',' << dir(u.x()) << ',' << dir(u.y()) << ',' << dir(u.z()) << ',' << n(b.diameter) << ',' << n(depth) << ','
+        << to_string(b.entry_face);
+    if (b.plugged) out << ',' << n(b.hole.p0.x()) << ',' << n(b.hole.p0.y()) << ',' << n(b.hole.p0.z()) << '\n';
+    else out << ",,,\n";
   }
   file.commit();
 }

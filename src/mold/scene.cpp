@@ -1,6 +1,7 @@
 #include "mtcs/mold/scene.h"
 
 #include <cmath>
+#include <limits>
 
 namespace mtcs::mold {
 
@@ -57,6 +58,38 @@ double Scene::surface_clearance(const geometry::Cylinder& c, double skip, double
     d = std::min(d, block_bounds_.max[k] - std::max(s0[k], s1[k]) - reach);
   }
   return d;
+}
+
+Vec3 Scene::surface_place(const geometry::Cylinder& c, double skip, double skip_end) const {
+  const Vec3 axis = c.p1 - c.p0;
+  const double len = axis.norm();
+  if (len == 0) return c.p0;
+  const Vec3 u = axis / len;
+  const Vec3 s0 = c.p0 + std::min(skip, len) * u, s1 = c.p1 - std::min(skip_end, len) * u;
+  if (block_bvh_) {
+    if (!block_bvh_->contains(s0)) return s0;
+    if (!block_bvh_->contains(s1)) return s1;
+    const auto d = block_bvh_->cylinder_distance({s0, s1, c.radius}, std::numeric_limits<double>::infinity());
+    return (d.on_cylinder + d.on_triangle) / 2;
+  }
+  // Box: the face with the least steel in front of the checked stretch, at the stretch's end
+  // nearest to it; the bore's wall is `reach` closer to the face than the axis.
+  double best = std::numeric_limits<double>::infinity();
+  Vec3 place = s0;
+  for (int k = 0; k < 3; ++k) {
+    const double reach = c.radius * std::sqrt(std::max(0.0, 1 - u[k] * u[k]));
+    for (const bool high : {false, true}) {
+      const Vec3& end = (s0[k] < s1[k]) != high ? s0 : s1;
+      const double plane = high ? block_bounds_.max[k] : block_bounds_.min[k];
+      const double gap = (high ? plane - end[k] : end[k] - plane) - reach;
+      if (gap >= best) continue;
+      best = gap;
+      place = end;
+      const double wall = high ? end[k] + reach : end[k] - reach;
+      place[k] = (wall + plane) / 2;
+    }
+  }
+  return place;
 }
 
 }  // namespace mtcs::mold

@@ -121,8 +121,9 @@ Generation EvolutionStrategy::step(const Generation& prev) const {
 }
 
 Generation run(const EvolutionStrategy& es, const Generation* start,
-               const std::function<void(const Generation&)>& on_generation) {
-  return run_to_budget(es, start, on_generation);
+               const std::function<void(const Generation&)>& on_generation,
+               const std::function<bool(const Generation&)>& stop) {
+  return run_to_budget(es, start, on_generation, stop);
 }
 
 }  // namespace mtcs::opt

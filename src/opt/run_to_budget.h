@@ -1,6 +1,7 @@
 #pragma once
 // The loop every optimiser of opt shares: from a stored generation (resume) or a fresh initial
-// one, step until the budget is spent, reporting each generation (storage, progress).
+// one, step until the budget is spent, reporting each generation (storage, progress), or until
+// `stop` says so after a generation (an interruption: the run can resume from there).
 
 #include <functional>
 
@@ -10,10 +11,11 @@ namespace mtcs::opt {
 
 template <class Algorithm>
 Generation run_to_budget(const Algorithm& algorithm, const Generation* start,
-                         const std::function<void(const Generation&)>& on_generation) {
+                         const std::function<void(const Generation&)>& on_generation,
+                         const std::function<bool(const Generation&)>& stop = {}) {
   Generation g = start ? *start : algorithm.initial();
   if (!start && on_generation) on_generation(g);
-  while (!algorithm.done(g)) {
+  while (!algorithm.done(g) && !(stop && stop(g))) {
     g = algorithm.step(g);
     if (on_generation) on_generation(g);
   }

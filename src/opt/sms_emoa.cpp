@@ -119,8 +119,9 @@ std::vector<Point> SmsEmoa::front(const Generation& g) {
   return out;
 }
 
-Generation run(const SmsEmoa& algorithm, const Generation* start, const std::function<void(const Generation&)>& on_step) {
-  return run_to_budget(algorithm, start, on_step);
+Generation run(const SmsEmoa& algorithm, const Generation* start, const std::function<void(const Generation&)>& on_step,
+               const std::function<bool(const Generation&)>& stop) {
+  return run_to_budget(algorithm, start, on_step, stop);
 }
 
 }  // namespace mtcs::opt

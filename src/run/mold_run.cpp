@@ -1,8 +1,12 @@
 #include "mtcs/run/mold_run.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "mtcs/io/input_error.h"
+#include "mtcs/opt/population.h"
+#include "mtcs/opt/sms_emoa.h"
 
 namespace mtcs::run {
 
@@ -22,8 +26,22 @@ RunConfig resolve_run_config(const RunOverrides& o, const std::vector<std::strin
   return config;
 }
 
-std::vector<double> scaled_reference(const RunConfig& config, std::size_t objectives) {
-  return config.ref.empty() ? std::vector<double>(objectives, 4.0) : config.ref;
+std::vector<double> scaled_reference(const RunConfig& config, const MoldProblem& problem, const mold::Objectives& obj) {
+  if (!config.ref.empty()) return config.ref;
+  std::vector<double> worst(obj.use.size(), -std::numeric_limits<double>::infinity());
+  const opt::Generation initial = opt::sample_population(problem, config.es.seed, config.es.mu);
+  for (const auto& ind : initial.population)
+    for (std::size_t k = 0; k < worst.size() && k < ind.score.objectives.size(); ++k)
+      if (std::isfinite(ind.score.objectives[k])) worst[k] = std::max(worst[k], ind.score.objectives[k] / obj.scale(obj.use[k]));
+  std::vector<double> ref;
+  for (const double w : worst) ref.push_back(std::isfinite(w) && w > 0 ? 2 * w : 4.0);
+  return ref;
+}
+
+std::string reference_origin(const RunConfig& config) {
+  if (!config.ref.empty()) return "given (--ref or the run config's ref)";
+  return "twice the worst value of each objective in the initial population (seed " + std::to_string(config.es.seed) +
+         ", " + std::to_string(config.es.mu) + " layouts)";
 }
 
 opt::EsConfig MoldOptimizer::es_config(const mold::Scene& scene, const RunConfig& config) {
@@ -34,25 +52,49 @@ opt::EsConfig MoldOptimizer::es_config(const mold::Scene& scene, const RunConfig
   return c;
 }
 
-opt::SmsConfig MoldOptimizer::sms_config(const mold::Scene& scene, const RunConfig& config) {
+opt::SmsConfig MoldOptimizer::sms_config(const MoldProblem& problem, const mold::Scene& scene, const RunConfig& config) {
   opt::SmsConfig c;
   c.mu = config.es.mu;
   c.evaluations = config.es.evaluations;
   c.seed = config.es.seed;
   // The reference point in raw units, from the scaled one of the config.
   const auto& obj = scene.spec().objectives;
-  const std::vector<double> scaled = scaled_reference(config, obj.use.size());
+  // Only SMS-EMOA needs it: the ES's runs evaluate no extra population.
+  const std::vector<double> scaled = config.algorithm == "sms-emoa" ? run::scaled_reference(config, problem, obj)
+                                     : config.ref.empty() ? std::vector<double>(obj.use.size(), 4.0) : config.ref;
   for (std::size_t k = 0; k < obj.use.size(); ++k) c.ref.push_back(scaled[k] * obj.scale(obj.use[k]));
   return c;
 }
 
 MoldOptimizer::MoldOptimizer(const MoldProblem& problem, const mold::Scene& scene, const RunConfig& config)
-    : es_(problem, es_config(scene, config)), sms_(problem, sms_config(scene, config)),
-      pareto_(config.algorithm == "sms-emoa"), final_cell_(config.final_cell) {}
+    : es_(problem, es_config(scene, config)), sms_(problem, sms_config(problem, scene, config)),
+      pareto_(config.algorithm == "sms-emoa"), final_cell_(config.final_cell),
+      reference_origin_(run::reference_origin(config)) {
+  const auto& obj = scene.spec().objectives;
+  for (const auto o : obj.use) scales_.push_back(obj.scale(o));
+}
+
+std::vector<double> MoldOptimizer::scaled_reference() const {
+  std::vector<double> r = raw_reference();
+  for (std::size_t k = 0; k < r.size(); ++k) r[k] /= scales_[k];
+  return r;
+}
+
+double MoldOptimizer::scaled_hypervolume(const std::vector<opt::Point>& raw_front) const {
+  std::vector<opt::Point> front = raw_front;
+  for (auto& p : front)
+    for (std::size_t k = 0; k < p.size(); ++k) p[k] /= scales_[k];
+  return opt::hypervolume(front, scaled_reference());
+}
 
 opt::Generation MoldOptimizer::run(const opt::Generation* start,
-                                   const std::function<void(const opt::Generation&)>& on_generation) const {
-  return pareto_ ? opt::run(sms_, start, on_generation) : opt::run(es_, start, on_generation);
+                                   const std::function<void(const opt::Generation&)>& on_generation,
+                                   const std::function<bool()>& stop) const {
+  std::function<bool(const opt::Generation&)> at_generation_end;
+  if (stop)
+    at_generation_end = [&](const opt::Generation& g) { return (!pareto_ || g.index % mu() == 0) && stop(); };
+  return pareto_ ? opt::run(sms_, start, on_generation, at_generation_end)
+                 : opt::run(es_, start, on_generation, at_generation_end);
 }
 
 }  // namespace mtcs::run

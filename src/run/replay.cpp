@@ -1,27 +1,35 @@
 #include "mtcs/run/replay.h"
 
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+
 #include <algorithm>
-#include <filesystem>
 #include <limits>
 #include <nlohmann/json.hpp>
 
 #include "mtcs/io/atomic_file.h"
+#include "mtcs/io/input_error.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/opt/sms_emoa.h"
+#include "mtcs/run/shop_layout.h"
 
 namespace mtcs::run {
-namespace {
 
 namespace fs = std::filesystem;
 
-// Per objective, [lowest, highest] over the feasible fronts of every stored generation: the
+namespace {
+
+// Per objective, [lowest, highest] over the feasible fronts of the replayed generations: the
 // axes of every plot, so that an animation of them holds still.
-nlohmann::ordered_json front_limits(const store::RunStore& db, std::size_t objectives) {
+nlohmann::ordered_json front_limits(const std::vector<opt::Generation>& generations, std::size_t objectives) {
   std::vector<std::pair<double, double>> limits(objectives, {std::numeric_limits<double>::infinity(),
                                                              -std::numeric_limits<double>::infinity()});
-  for (const auto& s : db.summaries())
-    for (const auto& p : opt::SmsEmoa::front(*db.generation(s.index)))
+  for (const auto& g : generations)
+    for (const auto& p : opt::SmsEmoa::front(g))
       for (std::size_t k = 0; k < objectives && k < p.size(); ++k)
         limits[k] = {std::min(limits[k].first, p[k]), std::max(limits[k].second, p[k])};
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
@@ -29,79 +37,155 @@ nlohmann::ordered_json front_limits(const store::RunStore& db, std::size_t objec
   return out;
 }
 
+// A folder that takes the place of `target` on commit, and is removed if never committed.
+class StagedFolder {
+ public:
+  explicit StagedFolder(fs::path target)
+      : target_(std::move(target)),
+        staged_(target_.parent_path() / ("." + target_.filename().string() + ".tmp-" + std::to_string(::getpid()))) {
+    remove_abandoned();
+    fs::remove_all(staged_);
+    fs::create_directories(staged_);
+  }
+  ~StagedFolder() {
+    std::error_code ec;
+    if (!committed_) fs::remove_all(staged_, ec);
+  }
+  const fs::path& path() const { return staged_; }
+  void commit() {
+    // The previous folder steps aside first: a rename cannot replace a non-empty folder.
+    const fs::path old = target_.parent_path() / ("." + target_.filename().string() + ".old-" + std::to_string(::getpid()));
+    if (fs::exists(target_)) fs::rename(target_, old);
+    fs::rename(staged_, target_);
+    committed_ = true;
+    std::error_code ec;
+    fs::remove_all(old, ec);
+  }
+
+ private:
+  // What a replay killed with -9 left: staged or set-aside folders of processes that are gone.
+  void remove_abandoned() const {
+    const std::string stem = "." + target_.filename().string() + ".";
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(target_.parent_path(), ec)) {
+      const std::string name = entry.path().filename().string();
+      if (name.rfind(stem, 0) != 0) continue;
+      const std::size_t dash = name.rfind('-');
+      if (dash == std::string::npos || name.find_first_not_of("0123456789", dash + 1) != std::string::npos) continue;
+      const long pid = std::atol(name.c_str() + dash + 1);
+      if (pid > 0 && ::kill(pid_t(pid), 0) != 0 && errno == ESRCH) fs::remove_all(entry.path(), ec);
+    }
+  }
+
+  fs::path target_, staged_;
+  bool committed_ = false;
+};
+
+// A generation's feasible non-dominated members: front_G.csv and the JSON list of them.
+nlohmann::ordered_json write_front(const opt::Generation& g, const std::vector<std::string>& names, const fs::path& out) {
+  nlohmann::ordered_json front = nlohmann::ordered_json::array();
+  io::AtomicFile csv((out / ("front_" + std::to_string(g.index) + ".csv")).string());
+  csv.stream() << "rank";
+  for (const auto& n : names) csv.stream() << ',' << n;
+  csv.stream() << '\n';
+  const auto points = opt::SmsEmoa::front(g);
+  for (std::size_t r = 0; r < g.population.size(); ++r) {
+    const auto& ind = g.population[r];
+    if (!ind.score.feasible || std::find(points.begin(), points.end(), ind.score.objectives) == points.end()) continue;
+    csv.stream() << r;
+    nlohmann::ordered_json member{{"rank", r}};
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      csv.stream() << ',' << ind.score.objectives[k];
+      member["objectives"][names[k]] = ind.score.objectives[k];
+    }
+    csv.stream() << '\n';
+    front.push_back(member);
+  }
+  csv.commit();
+  io::AtomicFile json((out / ("front_" + std::to_string(g.index) + ".json")).string());
+  json.stream() << nlohmann::ordered_json{{"generation", g.index}, {"evaluations", g.evaluations}, {"front", front}}.dump(2)
+                << '\n';
+  json.commit();
+  return front;
+}
+
 }  // namespace
 
-Replay replay_fronts(const store::RunStore& db, const Session& session, std::optional<int> generation,
-                     const std::string& out_dir) {
-  const mold::Scene& scene = session.scene();
+std::vector<int> replayed_generations(const std::vector<int>& stored, const ReplayChoice& choice,
+                                      const std::string& db_path) {
+  if (choice.generation) {
+    if (std::find(stored.begin(), stored.end(), *choice.generation) == stored.end())
+      throw io::InputError(db_path, 0, 0, "generation", "no such stored generation");
+    return {*choice.generation};
+  }
+  if (stored.empty()) throw io::InputError(db_path, 0, 0, "generation", "no stored generation");
+  const std::size_t n = stored.size();
+  const std::size_t every =
+      choice.all ? 1 : choice.every > 0 ? std::size_t(choice.every) : (n + kReplaySample - 1) / std::size_t(kReplaySample);
+  std::vector<int> out;
+  for (std::size_t i = 0; i < n; i += every) out.push_back(stored[i]);
+  if (out.back() != stored.back()) out.push_back(stored.back());
+  return out;
+}
+
+ReplayResult write_replay(const Session& session, const store::RunStore& db, const std::string& dir,
+                          const ReplayChoice& choice, const std::function<void(const fs::path&)>& before_commit) {
+  const std::string db_path = (fs::path(dir) / "run.sqlite").string();
   const std::vector<std::string>& names = session.objective_names();
   const MoldProblem& problem = session.problem();
-  std::vector<int> indices;
-  const auto summaries = db.summaries();
-  for (const auto& s : summaries)
-    if (!generation || s.index == *generation) indices.push_back(s.index);
-  if (indices.empty()) return {};
-  const fs::path out = out_dir;
-  fs::create_directories(out);
-  // The plots: one PNG per replayed generation, numbered by generation with the width of the
-  // run's largest index (so that they sort), and axes that fit every stored front.
-  const std::size_t width = std::max<std::size_t>(4, std::to_string(summaries.back().index).size());
-  nlohmann::ordered_json frames{{"objectives", names}, {"limits", front_limits(db, names.size())},
-                                {"frames", nlohmann::ordered_json::array()}};
-  long checked = 0, mismatches = 0;
-  for (const int index : indices) {
-    const opt::Generation g = *db.generation(index);
-    nlohmann::ordered_json front = nlohmann::ordered_json::array();
-    io::AtomicFile csv((out / ("front_" + std::to_string(index) + ".csv")).string());
-    csv.stream() << "rank";
-    for (const auto& n : names) csv.stream() << ',' << n;
-    csv.stream() << '\n';
-    const auto points = opt::SmsEmoa::front(g);
-    for (std::size_t r = 0; r < g.population.size(); ++r) {
-      const auto& ind = g.population[r];
+  std::vector<int> stored;
+  for (const auto& s : db.summaries()) stored.push_back(s.index);
+  const std::vector<int> indices = replayed_generations(stored, choice, db_path);
+
+  ReplayResult result;
+  result.folder = fs::path(dir) / "replay";
+  std::vector<opt::Generation> kept;
+  // Every stored generation is re-evaluated (or the one asked for); the sample is kept for files.
+  for (const int index : choice.generation ? indices : stored) {
+    opt::Generation g = *db.generation(index);
+    for (const auto& ind : g.population) {
       const opt::Score again = problem.evaluate(ind.x);
-      ++checked;
-      if (again.objectives != ind.score.objectives || again.violation != ind.score.violation) ++mismatches;
-      if (!ind.score.feasible ||
-          std::find(points.begin(), points.end(), ind.score.objectives) == points.end())
-        continue;
-      csv.stream() << r;
-      nlohmann::ordered_json member{{"rank", r}};
-      for (std::size_t k = 0; k < names.size(); ++k) {
-        csv.stream() << ',' << ind.score.objectives[k];
-        member["objectives"][names[k]] = ind.score.objectives[k];
-      }
-      csv.stream() << '\n';
-      front.push_back(member);
+      ++result.checked;
+      if (again.objectives != ind.score.objectives || again.violation != ind.score.violation) ++result.mismatches;
     }
-    csv.commit();
-    io::AtomicFile json((out / ("front_" + std::to_string(index) + ".json")).string());
-    json.stream() << nlohmann::ordered_json{{"generation", index}, {"evaluations", g.evaluations}, {"front", front}}.dump(2)
-                  << '\n';
-    json.commit();
-    std::string number = std::to_string(index);
+    if (std::binary_search(indices.begin(), indices.end(), index)) kept.push_back(std::move(g));
+  }
+
+  StagedFolder folder(result.folder);
+  const fs::path& out = folder.path();
+  // The plots: one PNG per replayed generation, numbered by generation with the width of the
+  // run's largest index (so that they sort), and axes that fit every replayed front.
+  const std::size_t width = std::max<std::size_t>(4, std::to_string(stored.back()).size());
+  nlohmann::ordered_json frames{{"objectives", names}, {"limits", front_limits(kept, names.size())},
+                                {"frames", nlohmann::ordered_json::array()}};
+  nlohmann::ordered_json front;
+  for (const opt::Generation& g : kept) {
+    front = write_front(g, names, out);
+    std::string number = std::to_string(g.index);
     number.insert(0, width - std::min(width, number.size()), '0');
-    frames["frames"].push_back({{"generation", index},
+    frames["frames"].push_back({{"generation", g.index},
                                 {"evaluations", g.evaluations},
-                                {"front", "front_" + std::to_string(index) + ".json"},
+                                {"front", "front_" + std::to_string(g.index) + ".json"},
                                 {"png", "front_" + number + ".png"}});
-    if (index == indices.back()) {
-      // The layouts of the last replayed front, for CAD and re-scoring: one STL per member.
-      for (const auto& m : front) {
-        const int r = m["rank"];
-        const mold::Genome genome = problem.genome(g.population[std::size_t(r)].x);
-        const mold::Layout layout = mold::decode(scene, genome);
-        const std::string stem = "front_" + std::to_string(index) + "_rank" + std::to_string(r);
-        mold::save_layout((out / (stem + ".layout.yaml")).string(), genome);
-        mold::save_bores_csv((out / (stem + ".bores.csv")).string(), layout);
-        mold::save_bores_stl((out / (stem + ".bores.stl")).string(), layout);
-      }
-    }
+  }
+  // The layouts of the last replayed front, for CAD and re-scoring: one STL per member.
+  const opt::Generation& last = kept.back();
+  for (const auto& m : front) {
+    const int r = m["rank"];
+    const mold::Genome genome = shop_layout(session.scene(), problem.genome(last.population[std::size_t(r)].x));
+    const mold::Layout layout = shop_plan(mold::decode(session.scene(), genome));
+    const std::string stem = "front_" + std::to_string(last.index) + "_rank" + std::to_string(r);
+    mold::save_layout((out / (stem + ".layout.yaml")).string(), genome);
+    mold::save_bores_csv((out / (stem + ".bores.csv")).string(), layout);
+    mold::save_bores_stl((out / (stem + ".bores.stl")).string(), layout);
   }
   io::AtomicFile frames_file((out / "frames.json").string());
   frames_file.stream() << frames.dump(1) << '\n';
   frames_file.commit();
-  return {long(indices.size()), checked, mismatches};
+  if (before_commit) before_commit(out);
+  folder.commit();
+  result.generations = kept.size();
+  return result;
 }
 
 }  // namespace mtcs::run

@@ -1,26 +1,44 @@
 #include "mtcs/run/run_outputs.h"
 
 #include <filesystem>
+#include <set>
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
 #include "mtcs/eval/cavity_temperature.h"
 
 #include "mtcs/io/atomic_file.h"
+#include "mtcs/io/number_text.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/opt/hypervolume.h"
 #include "mtcs/opt/sms_emoa.h"
+#include "mtcs/run/shop_layout.h"
 
 namespace mtcs::run {
+
+std::vector<std::string> front_warnings(const MoldOptimizer& optimizer, const opt::Generation& last) {
+  if (!optimizer.pareto()) return {};
+  const auto front = opt::SmsEmoa::front(last);
+  std::vector<std::string> out;
+  if (front.empty()) return {"no feasible layout in the final population: the front is empty"};
+  if (optimizer.scaled_hypervolume(front) == 0)
+    out.push_back("the front's hypervolume is 0: every point lies outside the reference point; give --ref r1,r2,... "
+                  "(scaled objectives) beyond the front.csv values / their scales");
+  if (std::set<opt::Point>(front.begin(), front.end()).size() == 1)
+    out.push_back("the front collapsed to one design: try more --evaluations or a larger es.mu");
+  return out;
+}
 
 mold::Layout write_run_outputs(const std::string& out_dir, const mold::Scene& scene, const MoldOptimizer& optimizer,
                                const std::vector<std::string>& names, std::uint64_t seed, const RunOutcome& o) {
   namespace fs = std::filesystem;
   const mold::Layout layout = mold::decode(scene, o.genome);
+  const mold::Layout plan = shop_plan(layout, o.tolerance);
   mold::save_layout((fs::path(out_dir) / "best.layout.yaml").string(), o.genome);
-  mold::save_bores_csv((fs::path(out_dir) / "bores.csv").string(), layout);
-  mold::save_bores_stl((fs::path(out_dir) / "bores.stl").string(), layout);
+  mold::save_bores_csv((fs::path(out_dir) / "bores.csv").string(), plan);
+  mold::save_holes_csv((fs::path(out_dir) / "holes.csv").string(), plan);
+  mold::save_bores_stl((fs::path(out_dir) / "bores.stl").string(), plan);
   nlohmann::ordered_json summary;
   summary["seed"] = seed;
   summary["evaluations"] = o.last.evaluations;
@@ -28,7 +46,9 @@ mold::Layout write_run_outputs(const std::string& out_dir, const mold::Scene& sc
   summary["feasible"] = o.best.feasible;
   summary["seconds"] = o.seconds;
   summary["generations"] = o.last.index;
+  summary["interrupted"] = o.interrupted;
   summary["mold"] = o.mold_path;
+  summary["tolerance_mm"] = o.tolerance;  // coordinates in the layout and hole tables are rounded to it
   for (std::size_t k = 0; k < names.size() && k < o.best.objectives.size(); ++k)
     summary["objectives"][names[k]] = o.best.objectives[k];
   summary["violation"] = o.best.violation;
@@ -36,14 +56,18 @@ mold::Layout write_run_outputs(const std::string& out_dir, const mold::Scene& sc
     const auto front = opt::SmsEmoa::front(o.last);
     summary["algorithm"] = "sms-emoa";
     summary["front_size"] = front.size();
-    summary["hypervolume"] = opt::hypervolume(front, optimizer.raw_reference());
-    summary["reference_point"] = optimizer.raw_reference();
+    // As every output gives it: in scaled objectives (objective / its scale), with that reference point.
+    summary["hypervolume"] = optimizer.scaled_hypervolume(front);
+    summary["reference_point"] = optimizer.scaled_reference();
+    summary["reference_point_origin"] = optimizer.reference_origin();
+    summary["warnings"] = front_warnings(optimizer, o.last);
+    for (std::size_t k = 0; k < names.size(); ++k) summary["objective_scales"][names[k]] = optimizer.scales()[k];
     // front.csv: the final feasible non-dominated objective vectors, for plotting.
     io::AtomicFile csv((fs::path(out_dir) / "front.csv").string());
     for (std::size_t k = 0; k < names.size(); ++k) csv.stream() << (k ? "," : "") << names[k];
     csv.stream() << "\n";
     for (const auto& f : front) {
-      for (std::size_t k = 0; k < f.size(); ++k) csv.stream() << (k ? "," : "") << f[k];
+      for (std::size_t k = 0; k < f.size(); ++k) csv.stream() << (k ? "," : "") << io::shortest(f[k]);
       csv.stream() << "\n";
     }
     csv.commit();

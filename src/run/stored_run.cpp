@@ -6,7 +6,8 @@
 namespace mtcs::run {
 
 StoredRun run_stored(const MoldOptimizer& optimizer, const MoldProblem& problem, store::RunStore& db,
-                     const std::function<void(const opt::Generation&, double, long)>& on_stored) {
+                     const std::function<void(const opt::Generation&, double, long)>& on_stored,
+                     const std::function<bool()>& stop) {
   const bool pareto = optimizer.pareto();
   const auto previous = db.last();
   const double seconds_before = previous ? db.summaries().back().seconds : 0;
@@ -20,12 +21,13 @@ StoredRun run_stored(const MoldOptimizer& optimizer, const MoldProblem& problem,
     const double s = elapsed();
     db.save(g, seconds_before + s);
     if (on_stored) on_stored(g, s, g.evaluations - evals_before);
-  });
+  }, stop);
   if (pareto) {
     if (r.last.index % optimizer.mu() != 0) db.save(r.last, seconds_before + elapsed());  // the last steps
     std::stable_sort(r.last.population.begin(), r.last.population.end(),
                      [&](const opt::Individual& a, const opt::Individual& b) { return problem.better(a.score, b.score); });
   }
+  r.interrupted = !optimizer.done(r.last);
   r.seconds = seconds_before + elapsed();
   return r;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // A CSV of solid cylinders (bores), one a row: id,p0x,p0y,p0z,p1x,p1y,p1z,r. Columns are found
 // by header name; the certified cases' dist_lo, dist_hi, category are read when present, other
-// extra columns are ignored.
+// extra columns are ignored. The bores.csv of mtcs optimize reads as such a file too: `name` for
+// id and `diameter` (halved) for r when those columns are absent.
 
 #include <optional>
 #include <string>

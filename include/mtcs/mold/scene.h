@@ -29,6 +29,9 @@ class Scene {
   // its axis from p0 (its entry) and the last `skip_end` mm before p1 (an open far end of a
   // through-bore). Negative when the axis leaves the block.
   double surface_clearance(const geometry::Cylinder& c, double skip, double cap, double skip_end = 0) const;
+  // Where that clearance is smallest: midway between the bore's wall and the block's surface
+  // (or the end of the axis that left the block). For the report of a violation, not the hot path.
+  geometry::Vec3 surface_place(const geometry::Cylinder& c, double skip, double skip_end = 0) const;
 
   const mesh::TriangleBvh* cavity_bvh() const { return cavity_bvh_.get(); }
   const mesh::TriangleBvh* keep_out_bvh(std::size_t k) const { return keep_out_bvh_[k].get(); }

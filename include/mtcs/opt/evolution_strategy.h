@@ -49,8 +49,9 @@ class EvolutionStrategy {
 };
 
 // Runs to the budget from `start` (or a fresh initial population), calling `on_generation`
-// after each generation (for storage and progress).
+// after each generation (for storage and progress), or until `stop` says so after a generation.
 Generation run(const EvolutionStrategy& es, const Generation* start,
-               const std::function<void(const Generation&)>& on_generation);
+               const std::function<void(const Generation&)>& on_generation,
+               const std::function<bool(const Generation&)>& stop = {});
 
 }  // namespace mtcs::opt

@@ -44,6 +44,8 @@ class SmsEmoa {
   SmsConfig config_;
 };
 
-Generation run(const SmsEmoa& algorithm, const Generation* start, const std::function<void(const Generation&)>& on_step);
+// Runs to the budget (or until `stop` says so after a step: an interruption the run resumes from).
+Generation run(const SmsEmoa& algorithm, const Generation* start, const std::function<void(const Generation&)>& on_step,
+               const std::function<bool(const Generation&)>& stop = {});
 
 }  // namespace mtcs::opt

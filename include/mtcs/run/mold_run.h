@@ -28,8 +28,14 @@ struct RunOverrides {
 // Throws io::InputError naming the field (e.g. "ref" without one value per objective).
 RunConfig resolve_run_config(const RunOverrides& overrides, const std::vector<std::string>& objective_names);
 
-// The reference point in scaled objectives (objective / its scale): the config's, or 4 each.
-std::vector<double> scaled_reference(const RunConfig& config, std::size_t objectives);
+// The reference point in scaled objectives (objective / its scale): the config's (--ref), or
+// one that fits the mold: twice the worst value of each objective over the initial population
+// of the config's seed (a fixed 4 each left new molds' fronts outside it: hypervolume 0); 4
+// where that population has no finite value.
+std::vector<double> scaled_reference(const RunConfig& config, const MoldProblem& problem,
+                                     const mold::Objectives& objectives);
+// How that reference point was chosen, for the outputs.
+std::string reference_origin(const RunConfig& config);
 
 class MoldOptimizer {
  public:
@@ -41,18 +47,31 @@ class MoldOptimizer {
   const opt::Point& raw_reference() const { return sms_.config().ref; }
   // The finite-volume cell (mm) the best layout is re-scored at (RunConfig::final_cell; 0: not).
   double final_cell() const { return final_cell_; }
+  const std::string& reference_origin() const { return reference_origin_; }
+  // Whether g has spent the budget.
+  bool done(const opt::Generation& g) const { return pareto_ ? sms_.done(g) : es_.done(g); }
+  long budget() const { return sms_.config().evaluations; }
+  // Hypervolumes are reported in scaled objectives (objective / its scale in the spec): the
+  // scales, the reference point so scaled, and the hypervolume of a front of raw points.
+  const std::vector<double>& scales() const { return scales_; }
+  std::vector<double> scaled_reference() const;
+  double scaled_hypervolume(const std::vector<opt::Point>& raw_front) const;
   // From a stored generation (resume) or a fresh population to the budget; on_generation sees
-  // every ES generation and every SMS-EMOA step.
-  opt::Generation run(const opt::Generation* start, const std::function<void(const opt::Generation&)>& on_generation) const;
+  // every ES generation and every SMS-EMOA step. With `stop`, it ends early once stop() is true
+  // at the end of a generation (SMS-EMOA: of mu steps, the generations the store keeps).
+  opt::Generation run(const opt::Generation* start, const std::function<void(const opt::Generation&)>& on_generation,
+                      const std::function<bool()>& stop = {}) const;
 
  private:
   static opt::EsConfig es_config(const mold::Scene& scene, const RunConfig& config);
-  static opt::SmsConfig sms_config(const mold::Scene& scene, const RunConfig& config);
+  static opt::SmsConfig sms_config(const MoldProblem& problem, const mold::Scene& scene, const RunConfig& config);
 
   opt::EvolutionStrategy es_;
   opt::SmsEmoa sms_;
   bool pareto_;
   double final_cell_;
+  std::vector<double> scales_;
+  std::string reference_origin_;
 };
 
 }  // namespace mtcs::run

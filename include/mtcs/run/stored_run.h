@@ -10,12 +10,15 @@
 namespace mtcs::run {
 
 struct StoredRun {
-  opt::Generation last;  // population best first (SMS-EMOA's too: by the problem's ranking)
-  double seconds = 0;    // wall time of the whole run, earlier sessions included
+  opt::Generation last;      // population best first (SMS-EMOA's too: by the problem's ranking)
+  double seconds = 0;        // wall time of the whole run, earlier sessions included
+  bool interrupted = false;  // stopped before the budget: resume continues it
 };
 
-// on_stored sees each stored generation with the seconds and evaluations of this session.
+// on_stored sees each stored generation with the seconds and evaluations of this session. With
+// `stop`, the run ends at the first stored generation after stop() turns true.
 StoredRun run_stored(const MoldOptimizer& optimizer, const MoldProblem& problem, store::RunStore& db,
-                     const std::function<void(const opt::Generation&, double seconds, long evaluations)>& on_stored);
+                     const std::function<void(const opt::Generation&, double seconds, long evaluations)>& on_stored,
+                     const std::function<bool()>& stop = {});
 
 }  // namespace mtcs::run

@@ -1,0 +1,21 @@
+#pragma once
+// The layout a shop receives (`best.layout.yaml`, the replay's front layouts): waypoints rounded
+// to a stated tolerance (default 0.01 mm), repeated waypoints dropped and waypoints on a straight
+// run merged, as long as the drilling plan stays the one that was found. Coordinates on a block
+// face stay exact, so that ports stay on their faces. The written layout is the one re-scored.
+
+#include "mtcs/mold/genome.h"
+#include "mtcs/mold/layout.h"
+#include "mtcs/mold/scene.h"
+
+namespace mtcs::run {
+
+inline constexpr double kCoordinateTolerance = 0.01;  // mm
+
+mold::Genome shop_layout(const mold::Scene& scene, const mold::Genome& genome, double tolerance = kCoordinateTolerance);
+
+// The drilling plan for the hole tables (bores.csv, holes.csv, bores.stl): hole ends, lengths
+// and dead ends rounded to the tolerance (the drill point's overshoot is not a round number).
+mold::Layout shop_plan(const mold::Layout& layout, double tolerance = kCoordinateTolerance);
+
+}  // namespace mtcs::run

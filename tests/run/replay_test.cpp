@@ -1,0 +1,114 @@
+// Issue 16, item 4: replay writes its folder whole or not at all (a temporary folder renamed at
+// the end; what a killed replay left is cleared), and by default files for a sample of the
+// stored generations, with --every N and --all for more.
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <numeric>
+
+#include <unistd.h>
+
+#include "mtcs/io/input_error.h"
+#include "mtcs/run/replay.h"
+#include "mtcs/run/stored_run.h"
+
+using namespace mtcs;
+namespace fs = std::filesystem;
+
+namespace {
+
+run::ReplayChoice every(int n) {
+  run::ReplayChoice c;
+  c.every = n;
+  return c;
+}
+run::ReplayChoice all() {
+  run::ReplayChoice c;
+  c.all = true;
+  return c;
+}
+run::ReplayChoice only(int generation) {
+  run::ReplayChoice c;
+  c.generation = generation;
+  return c;
+}
+
+std::vector<int> steps(int first, int last, int step) {
+  std::vector<int> v;
+  for (int i = first; i <= last; i += step) v.push_back(i);
+  return v;
+}
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<std::string> hidden_entries(const fs::path& dir) {
+  std::vector<std::string> out;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename().string().front() == '.') out.push_back(e.path().filename().string());
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("issue 16: replay files a sample of generations by default, --every N and --all on request", "[run][replay][issue16]") {
+  const std::vector<int> stored = steps(0, 600, 10);  // 61 stored generations
+  // About kReplaySample: every second one here (61 / 50 rounded up), from the first, and the last.
+  CHECK(run::replayed_generations(stored, {}, "run.sqlite") == steps(0, 600, 20));
+  std::vector<int> every7 = steps(0, 560, 70);
+  every7.push_back(600);  // the last one always
+  CHECK(run::replayed_generations(stored, every(7), "run.sqlite") == every7);
+  CHECK(run::replayed_generations(stored, all(), "run.sqlite") == stored);
+  CHECK(run::replayed_generations(stored, only(40), "run.sqlite") == std::vector<int>{40});
+  CHECK_THROWS_AS(run::replayed_generations(stored, only(41), "run.sqlite"), io::InputError);
+  // 6 000 stored steps (a 1.3 s SMS-EMOA run stored every 10): 50 frames, not 600.
+  CHECK(run::replayed_generations(steps(0, 5990, 10), {}, "run.sqlite").size() <= std::size_t(run::kReplaySample) + 1);
+}
+
+TEST_CASE("issue 16: replay writes DIR/replay whole or not at all", "[run][replay][issue16]") {
+  const fs::path dir = fs::temp_directory_path() / ("mtcs_replay_run_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  run::RunOverrides o;
+  o.algorithm = "sms-emoa";
+  o.seed = 3;
+  o.evaluations = 300;
+  const run::Session session(MTCS_SOURCE_DIR "/molds/plate.yaml", o);
+  const run::MoldOptimizer optimizer(session.problem(), session.scene(), session.config());
+  store::RunStore db = store::RunStore::create((dir / "run.sqlite").string(), {{"mold", "plate"}});
+  run::run_stored(optimizer, session.problem(), db, {});
+  REQUIRE(db.summaries().size() == 30);  // steps 0, 10, ..., 290 (the initial population counts 10)
+
+  const auto first = run::write_replay(session, db, dir.string(), {});
+  CHECK(first.mismatches == 0);
+  CHECK(first.checked == 30 * 10);  // every stored generation re-evaluated
+  CHECK(first.generations == 30);
+  const std::string frames = read_text(dir / "replay" / "frames.json");
+  CHECK(nlohmann::json::parse(frames)["frames"].size() == 30);
+  CHECK(hidden_entries(dir).empty());
+
+  // A replay that fails before its end (here the plots step throws) leaves the previous folder
+  // as it was and no temporary behind.
+  CHECK_THROWS(run::write_replay(session, db, dir.string(), every(10),
+                                 [](const fs::path&) { throw std::runtime_error("plotting failed"); }));
+  CHECK(read_text(dir / "replay" / "frames.json") == frames);
+  CHECK(hidden_entries(dir).empty());
+
+  // What a replay killed with -9 left (a staged folder of a process that is gone) is cleared,
+  // and the new replay replaces the old folder whole: no front of the old sample remains.
+  fs::create_directories(dir / ".replay.tmp-999999999");
+  std::ofstream(dir / ".replay.tmp-999999999" / "front_10.csv") << "partial";
+  const auto second = run::write_replay(session, db, dir.string(), every(10));
+  CHECK(second.generations == 4);  // 0, 100, 200 and the last, 290
+  CHECK(nlohmann::json::parse(read_text(dir / "replay" / "frames.json"))["frames"].size() == 4);
+  CHECK_FALSE(fs::exists(dir / "replay" / "front_20.csv"));
+  CHECK(fs::exists(dir / "replay" / "front_100.csv"));
+  CHECK(hidden_entries(dir).empty());
+  fs::remove_all(dir);
+}
