@@ -21,7 +21,7 @@ using namespace mtcs_test;
 
 namespace {
 
-const std::string kMold = MTCS_SOURCE_DIR "/molds/plate.yaml";
+const std::string kMold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";
 
 std::size_t stored_generations(const fs::path& dir) {
   try {

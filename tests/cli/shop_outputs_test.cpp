@@ -16,7 +16,7 @@ using namespace mtcs_test;
 
 namespace {
 
-const std::string kMold = MTCS_SOURCE_DIR "/molds/plate.yaml";
+const std::string kMold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";
 
 std::vector<std::map<std::string, std::string>> read_csv(const fs::path& p) {
   std::ifstream in(p);

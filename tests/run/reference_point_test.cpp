@@ -25,7 +25,7 @@ run::RunOverrides sms(long evaluations, std::vector<double> ref = {}) {
 
 TEST_CASE("issue 16: SMS-EMOA's default reference point is twice the worst of the run's own initial population",
           "[run][issue16]") {
-  const run::Session session(MTCS_SOURCE_DIR "/molds/plate.yaml", sms(400));
+  const run::Session session(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml", sms(400));
   const run::MoldOptimizer optimizer(session.problem(), session.scene(), session.config());
   // The population the run starts from, as the run reports it.
   std::optional<opt::Generation> initial;
@@ -33,7 +33,9 @@ TEST_CASE("issue 16: SMS-EMOA's default reference point is twice the worst of th
     if (!initial) initial = g;
   });
   REQUIRE(initial);
-  const std::vector<double> scales{5, 20, 1000};  // plate.yaml
+  std::vector<double> scales;  // the mold's own
+  for (const auto o : session.spec().objectives.use) scales.push_back(session.spec().objectives.scale(o));
+  REQUIRE(scales.size() == 3);
   std::vector<double> worst(3, 0);
   for (const auto& ind : initial->population)
     for (int k = 0; k < 3; ++k) worst[std::size_t(k)] = std::max(worst[std::size_t(k)], ind.score.objectives[std::size_t(k)] / scales[std::size_t(k)]);
@@ -47,7 +49,7 @@ TEST_CASE("issue 16: SMS-EMOA's default reference point is twice the worst of th
 
 TEST_CASE("issue 16: a front with hypervolume 0 or of a single design is warned about", "[run][issue16]") {
   // A reference point every layout lies beyond.
-  const run::Session session(MTCS_SOURCE_DIR "/molds/plate.yaml", sms(100, {1e-6, 1e-6, 1e-6}));
+  const run::Session session(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml", sms(100, {1e-6, 1e-6, 1e-6}));
   const run::MoldOptimizer optimizer(session.problem(), session.scene(), session.config());
   CHECK_THAT(optimizer.reference_origin(), Catch::Contains("given"));
   opt::Generation last = optimizer.run(nullptr, {});
