@@ -180,13 +180,15 @@ RunStore RunStore::create(const std::string& path, const std::map<std::string, s
        "  feasible_share REAL, seconds REAL);"
        "CREATE TABLE individual(generation INTEGER, rank INTEGER, genotype BLOB, steps BLOB,"
        "  objectives BLOB, violation REAL, feasible INTEGER, value REAL, violations TEXT,"
-       "  PRIMARY KEY(generation, rank));"
-       "COMMIT;");
-  Statement ins(s.db_, "INSERT INTO meta(key, value) VALUES(?, ?)");
-  for (const auto& [k, v] : meta) {
-    ins.bind(1, k).bind(2, v).step();
-    ins.reset();
+       "  PRIMARY KEY(generation, rank));");
+  {  // tables and meta in one transaction: a reader never sees a store without its program
+    Statement ins(s.db_, "INSERT INTO meta(key, value) VALUES(?, ?)");
+    for (const auto& [k, v] : meta) {
+      ins.bind(1, k).bind(2, v).step();
+      ins.reset();
+    }
   }
+  exec(s.db_, "COMMIT;");
   return s;
 }
 

@@ -204,3 +204,19 @@ TEST_CASE("run store defect: a malformed page met after the quick check is bad i
   fs::copy_file(MTCS_TEST_DATA "/store/fuzz_malformed_meta.sqlite", p);
   CHECK_THAT(refused(p), Catch::Contains("run store"));
 }
+
+TEST_CASE("run store faults: mtcs optimize on a run in use is refused, exit 2, 'in use'", "[store][faults]") {
+  const fs::path p = whole_store("cli_in_use", 2);
+  const fs::path dir = p.parent_path();
+  const std::string before = bytes(p);
+  {
+    const RunStore writer = RunStore::resume(p.string());  // this process writes the run
+    auto r = mtcs_test::run_mtcs_err("store_faults", "optimize --resume " + dir.string());
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("the run is in use"));
+    r = mtcs_test::run_mtcs_err("store_faults", "optimize " MTCS_SOURCE_DIR "/molds/plate.yaml --out " + dir.string());
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("in use"));
+  }
+  CHECK(bytes(p) == before);
+}
