@@ -51,7 +51,7 @@ void skip_comment(std::istream& in) {
 
 // ASCII OFF as CGAL's File_scanner_OFF reads it (a vertex or a face a line after the counts):
 // CGAL casts a face's size and indices from double to size_t, undefined for negative or huge
-// values; binary OFF and the n-dimensional variants are refused.
+// values; binary OFF and the variants (COFF, NOFF, STOFF, 4OFF, nOFF) are refused.
 void check_off(const std::string& path, const std::string& text) {
   std::istringstream in(text);
   Lines lines(text);
@@ -59,11 +59,14 @@ void check_off(const std::string& path, const std::string& text) {
   std::string keyword;
   const std::streamoff keyword_at = in.tellg();
   if (!(in >> keyword)) return;
-  // CGAL's keywords, [ST][C][N][4][n]OFF; it also took "OFF]" and then read garbage counts.
+  // Plain OFF only. CGAL's variants with colours, normals and texture ([ST][C][N][4][n]OFF)
+  // overflowed a heap buffer on a short colour line (COFF), and CGAL took "OFF]" and then read
+  // garbage counts.
   static const std::regex off_keyword("(ST)?C?N?4?n?OFF");
   if (!std::regex_match(keyword, off_keyword))
     fail(path, lines.at(keyword_at), "not an OFF file: it starts with '" + keyword.substr(0, 40) + "', not OFF");
-  if (keyword.find('n') != std::string::npos) fail(path, lines.at(in.tellg()), "the n-dimensional OFF variant " + keyword + " is not supported");
+  if (keyword != "OFF")
+    fail(path, lines.at(keyword_at), "the OFF variant " + keyword + " is not supported: plain OFF only");
   std::vector<long long> counts;
   while (counts.size() < 3) {  // read as CGAL does: numbers from the stream, not words
     skip_comment(in);
