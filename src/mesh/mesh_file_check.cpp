@@ -111,7 +111,8 @@ void check_off(const std::string& path, const std::string& text) {
 
 // PLY header: CGAL's reader takes a negative element count as a huge one (reading on at the
 // end of the file for hours), adds a property to the last element (undefined before the first)
-// and reads a vertex's x, y, z as float or double whatever their declared type (a null
+// allocates a list as long as its count says (4.7 GB from one int32 count), and reads a
+// vertex's x, y, z as float or double whatever their declared type (a null
 // dereference for an integer type).
 void check_ply(const std::string& path, const std::string& text) {
   std::istringstream in(text);
@@ -134,6 +135,12 @@ void check_ply(const std::string& path, const std::string& text) {
     if (word != "property") continue;
     if (element.empty()) fail(path, lineno, "a property before any element");
     words >> type >> name;
+    if (type == "list") {  // name is the count's type: CGAL allocates what the count says
+      const bool small = name == "uchar" || name == "uint8" || name == "char" || name == "int8" || name == "ushort" ||
+                         name == "uint16" || name == "short" || name == "int16";
+      if (!small) fail(path, lineno, "a list counted in " + name + ": up to 16 bits (uchar, ushort) are supported");
+      continue;
+    }
     const bool real = type == "float" || type == "double" || type == "float32" || type == "float64";
     if (element == "vertex" && (name == "x" || name == "y" || name == "z") && !real)
       fail(path, lineno, "vertex property " + name + " must be float or double, not " + type);

@@ -127,3 +127,10 @@ TEST_CASE("mesh reader defect: the OFF variants with colours or normals are refu
   for (const std::string variant : {"NOFF", "STOFF", "4OFF", "CNOFF"})
     CHECK_THAT(error_of(write("variant.off", variant + "\n4 4 0\n")), Catch::Contains("variant " + variant));
 }
+
+// fuzz_mesh_ply, oom (round 5): "property list int32 int vertex_indices": CGAL allocated a list
+// as long as a 32-bit count said (malloc of 4.7 GB from a 1 kB file).
+TEST_CASE("mesh reader defect: a PLY list counted in 32 bits is refused at its line", "[mesh][fuzz-defect]") {
+  const auto path = write("list32.ply", "ply\nformat ascii 1.0\nelement face 1\nproperty list int32 int vertex_indices\nend_header\n3 0 1 2\n");
+  CHECK_THAT(error_of(path), Catch::StartsWith(path + ":4: a list counted in int32"));
+}
