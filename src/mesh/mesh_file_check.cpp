@@ -141,6 +141,7 @@ void check_ply(const std::string& path, const std::string& text) {
       if (!small) fail(path, lineno, "a list counted in " + name + ": up to 16 bits (uchar, ushort) are supported");
       continue;
     }
+    for (std::string more; words >> more;) name = more;  // CGAL names a property by its last word
     const bool real = type == "float" || type == "double" || type == "float32" || type == "float64";
     if (element == "vertex" && (name == "x" || name == "y" || name == "z") && !real)
       fail(path, lineno, "vertex property " + name + " must be float or double, not " + type);

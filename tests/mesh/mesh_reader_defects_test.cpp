@@ -134,3 +134,11 @@ TEST_CASE("mesh reader defect: a PLY list counted in 32 bits is refused at its l
   const auto path = write("list32.ply", "ply\nformat ascii 1.0\nelement face 1\nproperty list int32 int vertex_indices\nend_header\n3 0 1 2\n");
   CHECK_THAT(error_of(path), Catch::StartsWith(path + ":4: a list counted in int32"));
 }
+
+// fuzz_mesh_ply, crash-48a04839 (smoke run): "property fproperty double x": the property's name
+// is its last word (x) and its type the garbage "fproperty": the null dereference of crash-48ea8ea7.
+TEST_CASE("mesh reader defect: a vertex coordinate of an unknown type is refused", "[mesh][fuzz-defect]") {
+  const auto path = write("garbage_type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty fproperty double x\n"
+                                              "property double y\nproperty double z\nend_header\n0 0 0\n");
+  CHECK_THAT(error_of(path), Catch::StartsWith(path + ":4: vertex property x must be float or double, not fproperty"));
+}
