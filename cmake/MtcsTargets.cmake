@@ -6,6 +6,11 @@ function(mtcs_target_defaults target)
     target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer)
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)
   endif()
+  if(MTCS_FUZZ)  # coverage for libFuzzer; the fuzz targets link the fuzzer itself
+    target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer
+                                             -Wno-unknown-warning-option)
+    target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+  endif()
 endfunction()
 
 # One module of DESIGN.md: library mtcs_NAME (alias mtcs::NAME) over include/mtcs/NAME and

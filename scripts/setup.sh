@@ -9,6 +9,7 @@ PACKAGES=(
   libyaml-cpp-dev libspdlog-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev
   libsqlite3-dev libtbb-dev libfcl-dev libccd-dev libbenchmark-dev libpagmo-dev
   python3 python3-matplotlib
+  clang-14 libfuzzer-14-dev
 )
 
 missing=()

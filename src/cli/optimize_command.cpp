@@ -111,8 +111,10 @@ int run_optimize(const Options& o) {
   std::map<std::string, std::string> meta;
   if (!o.resume.empty()) {
     if (!fs::exists(db_path)) throw io::InputError(db_path, 0, 0, "", "no run to resume here");
-    db = store::RunStore::open(db_path);
+    db = store::RunStore::resume(db_path);
     meta = db->meta();
+    for (const char* key : {"mold", "mold_hash", "config"})
+      if (!meta.count(key)) throw io::InputError(db_path, 0, 0, key, "missing from the store: not a mold run to resume");
     mold_path = meta.at("mold");
     config_text = meta.at("config");
   }
@@ -128,6 +130,8 @@ int run_optimize(const Options& o) {
   const run::RunConfig& config = session.config();
   if (o.resume.empty()) {
     make_output_folder(out_dir);
+    if (store::RunStore::in_use(db_path))
+      throw io::InputError(db_path, 0, 0, "", "the run here is in use: another process writes it; choose --out");
     if (fs::exists(db_path))
       throw io::InputError(db_path, 0, 0, "", "a run exists here: resume it with --resume " + out_dir + " or choose --out");
     meta = run::mold_run_meta(mold_path, session);

@@ -42,9 +42,10 @@ TriangleDistanceResult distance(const Cylinder& cylinder, const Box& box, const 
   DistanceRequest rq = request;
   for (const auto& [order, k] : faces) {
     const int axis = k / 2, u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const bool lower = k % 2 == 0;  // a plain local: clang 14 cannot capture structured bindings
     const auto corner = [&](double su, double sv) {
       Vec3 p;
-      p[axis] = k % 2 == 0 ? box.min[axis] : box.max[axis];
+      p[axis] = lower ? box.min[axis] : box.max[axis];
       p[u] = su;
       p[v] = sv;
       return p;

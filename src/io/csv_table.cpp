@@ -73,6 +73,8 @@ double CsvTable::number(int j, std::string_view name) const {
   const Field& f = field(j, name);
   double v = 0;
   const auto [ptr, ec] = std::from_chars(f.text.data(), f.text.data() + f.text.size(), v);
+  if (ec == std::errc::result_out_of_range && ptr == f.text.data() + f.text.size())
+    throw InputError(path_, lineno_, f.column, std::string(name), "'" + std::string(f.text) + "' is beyond the range of a double");
   if (f.text.empty() || ec != std::errc() || ptr != f.text.data() + f.text.size())
     throw InputError(path_, lineno_, f.column, std::string(name), "expected a number, got '" + std::string(f.text) + "'");
   if (!std::isfinite(v)) throw InputError(path_, lineno_, f.column, std::string(name), "value is not finite");

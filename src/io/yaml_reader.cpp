@@ -57,6 +57,8 @@ double YamlReader::number(const YAML::Node& n, const std::string& path, double l
   const std::string& s = n.Scalar();
   double v = 0;
   const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec == std::errc::result_out_of_range && ptr == s.data() + s.size())
+    fail(n, path, "'" + s + "' is beyond the range of a double");
   if (s.empty() || ec != std::errc() || ptr != s.data() + s.size() || !std::isfinite(v))
     fail(n, path, "expected a number, got '" + s + "'");
   if (v < lo || v > hi) {
@@ -95,9 +97,11 @@ std::string YamlReader::text(const YAML::Node& n, const std::string& path) const
 
 geometry::Vec3 YamlReader::vec3(const YAML::Node& n, const std::string& path) const {
   if (!n.IsSequence() || n.size() != 3) fail(n, path, "expected three numbers [x, y, z]");
-  const double inf = std::numeric_limits<double>::max();
-  return {number(n[0], path + "[0]", -inf, inf), number(n[1], path + "[1]", -inf, inf),
-          number(n[2], path + "[2]", -inf, inf)};
+  // Positions in mm within 1000 km: differences, squares and grid counts stay finite (1e308
+  // was accepted and turned into infinities and NaN downstream).
+  const double far = kMaxCoordinate;
+  return {number(n[0], path + "[0]", -far, far), number(n[1], path + "[1]", -far, far),
+          number(n[2], path + "[2]", -far, far)};
 }
 
 }  // namespace mtcs::io

@@ -10,10 +10,18 @@
 #include <filesystem>
 #include <fstream>
 
+#include "mesh_file_check.h"
+
 namespace mtcs::mesh {
 
 TriangleMesh read_mesh(const std::string& path) {
   if (!std::filesystem::exists(path)) throw MeshError("mesh file not found: " + path);
+  if (!std::filesystem::is_regular_file(path)) throw MeshError("not a regular file: " + path);
+  // Refused before reading: CGAL's readers hold the whole polygon soup in memory.
+  if (std::filesystem::file_size(path) > kMaxMeshFileBytes)
+    throw MeshError(path + ": " + std::to_string(std::filesystem::file_size(path)) + " bytes, more than the " +
+                    std::to_string(kMaxMeshFileBytes) + " bytes a mesh file may have");
+  check_mesh_file(path);
   std::vector<CGAL::Epick::Point_3> points;
   std::vector<std::vector<std::size_t>> polygons;
   bool ok = false;
@@ -24,6 +32,11 @@ TriangleMesh read_mesh(const std::string& path) {
   }
   if (!ok) throw MeshError("cannot read mesh " + path + " (STL, OFF, OBJ or PLY expected, by extension)");
   TriangleMesh m;
+  std::size_t triangles = 0;
+  for (const auto& poly : polygons) triangles += poly.size() >= 3 ? poly.size() - 2 : 0;
+  if (triangles > kMaxMeshTriangles || points.size() > kMaxMeshTriangles)
+    throw MeshError(path + ": " + std::to_string(triangles) + " triangles and " + std::to_string(points.size()) +
+                    " vertices, more than the " + std::to_string(kMaxMeshTriangles) + " a mesh may have");
   m.vertices.reserve(points.size());
   for (const auto& p : points) m.vertices.emplace_back(p.x(), p.y(), p.z());
   for (std::size_t f = 0; f < polygons.size(); ++f) {

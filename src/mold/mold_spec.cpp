@@ -2,10 +2,12 @@
 
 #include "mtcs/mold/mold_spec.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 
 #include "mtcs/mesh/mesh_io.h"
 #include "mtcs/io/yaml_reader.h"
@@ -14,6 +16,7 @@ namespace mtcs::mold {
 
 using io::YamlReader;
 using io::indexed;
+using geometry::Vec3;
 namespace {
 
 constexpr double kHuge = 1e12;
@@ -116,6 +119,30 @@ Box parse_patch(const YamlReader& r, const YAML::Node& n, const Box& block, Face
   return b;
 }
 
+// How many surface samples (sample_box, sample_patch) or sub-triangles (sample_mesh) the cavity
+// asks for, in double: a limit before any loop counts them in int.
+double surface_sample_estimate(const Cavity& c) {
+  const double h = c.sample_spacing;
+  const auto cells = [h](double length) { return std::max(1.0, std::ceil(length / h)); };
+  if (c.mesh) {
+    double pieces = 0;
+    const auto& m = c.mesh->mesh;
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+      const Vec3 a = m.corner(t, 0), b = m.corner(t, 1), d = m.corner(t, 2);
+      const double k = cells(2 * std::max({(b - a).norm(), (d - b).norm(), (a - d).norm()}));
+      pieces += k * k;
+    }
+    return pieces;
+  }
+  const Vec3 size = c.box->size();
+  if (c.is_patch()) {
+    int lo = 0;
+    size.minCoeff(&lo);
+    return cells(size[(lo + 1) % 3]) * cells(size[(lo + 2) % 3]);
+  }
+  return 2 * (cells(size.x()) * cells(size.y()) + cells(size.y()) * cells(size.z()) + cells(size.z()) * cells(size.x()));
+}
+
 Cavity parse_cavity(const YamlReader& r, const YAML::Node& n, const Box& block) {
   r.expect_map(n, "cavity", {"mesh", "translate", "box", "patch", "sample_spacing", "wall_thickness"});
   Cavity c;
@@ -135,6 +162,13 @@ Cavity parse_cavity(const YamlReader& r, const YAML::Node& n, const Box& block) 
   if (n["translate"] && !n["mesh"]) r.fail(n["translate"], "cavity.translate", "translate applies to a mesh only");
   if (n["sample_spacing"]) c.sample_spacing = r.number(n["sample_spacing"], "cavity.sample_spacing", 1e-3, kHuge);
   if (n["wall_thickness"]) c.wall_thickness = r.number(n["wall_thickness"], "cavity.wall_thickness", 1e-6, kHuge);
+  const double samples = surface_sample_estimate(c);
+  if (!(samples <= kMaxSurfaceSamples)) {
+    std::ostringstream msg;
+    msg << "the cavity's surface at this spacing needs about " << samples << " samples, more than "
+        << kMaxSurfaceSamples << "; raise sample_spacing";
+    r.fail(n["sample_spacing"] ? n["sample_spacing"] : n, n["sample_spacing"] ? "cavity.sample_spacing" : "cavity", msg.str());
+  }
   return c;
 }
 

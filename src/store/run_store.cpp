@@ -1,10 +1,15 @@
 #include "mtcs/store/run_store.h"
 
+#include <fcntl.h>
 #include <sqlite3.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
+
+#include "mtcs/io/input_error.h"
 
 namespace mtcs::store {
 namespace {
@@ -39,9 +44,12 @@ class Statement {
     return p ? reinterpret_cast<const char*>(p) : "";
   }
   std::vector<double> doubles(int i) const {
-    const int bytes = sqlite3_column_bytes(stmt_, i);
-    std::vector<double> v(std::size_t(bytes) / sizeof(double));
-    if (bytes > 0) std::memcpy(v.data(), sqlite3_column_blob(stmt_, i), std::size_t(bytes));
+    const void* blob = sqlite3_column_blob(stmt_, i);
+    const auto bytes = std::size_t(sqlite3_column_bytes(stmt_, i));
+    if (bytes % sizeof(double) != 0)
+      throw std::runtime_error("run store: a stored vector of " + std::to_string(bytes) + " bytes, not whole doubles");
+    std::vector<double> v(bytes / sizeof(double));
+    if (bytes > 0) std::memcpy(v.data(), blob, bytes);
     return v;
   }
 
@@ -68,25 +76,103 @@ sqlite3* open_db(const std::string& path, int flags) {
   if (sqlite3_open_v2(path.c_str(), &db, flags, nullptr) != SQLITE_OK) {
     const std::string msg = db ? sqlite3_errmsg(db) : "cannot open";
     sqlite3_close(db);
-    throw std::runtime_error("run store " + path + ": " + msg);
+    throw io::InputError(path, 0, 0, "", "cannot open the run store: " + msg);
   }
-  exec(db, "PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL;");
+  sqlite3_busy_timeout(db, 10000);  // a reader may meet a writer's checkpoint
   return db;
+}
+
+[[noreturn]] void bad_store(const std::string& path, const std::string& what) {
+  throw io::InputError(path, 0, 0, "", what + "; the file is left as it is");
+}
+
+// Refuses a file that is not a whole run store of mtcs, reading only: SQLite's quick check
+// (truncated or overwritten pages), the tables and columns the store reads, the program.
+// Every SQLite error on the way (a page that only a later query meets) is bad input too.
+void check_store(sqlite3* db, const std::string& path) {
+  try {
+    Statement check(db, "PRAGMA quick_check");
+    check.step();
+    if (check.text(0) != "ok") bad_store(path, "the run store is corrupted (" + check.text(0) + ")");
+    try {
+      Statement(db, "SELECT key, value FROM meta LIMIT 0");
+      Statement(db, "SELECT idx, evaluations, best, feasible_share, seconds FROM generation LIMIT 0");
+      Statement(db,
+                "SELECT generation, rank, genotype, steps, objectives, violation, feasible, value, violations"
+                " FROM individual LIMIT 0");
+    } catch (const std::runtime_error& e) {
+      bad_store(path, "not a run store of mtcs (" + std::string(e.what()) + ")");
+    }
+    Statement program(db, "SELECT value FROM meta WHERE key = 'program'");
+    if (!program.step() || program.text(0).rfind("mtcs", 0) != 0)
+      bad_store(path, "not a run store of mtcs (no 'program' entry naming mtcs in its meta table)");
+  } catch (const io::InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    bad_store(path, "not a readable run store (" + std::string(e.what()) + ")");
+  }
+}
+
+// The advisory lock of a writing store: an open descriptor of "<store>.lock" with flock held.
+int lock_store(const std::string& path) {
+  const std::string lock_path = path + ".lock";
+  const int fd = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) throw std::runtime_error("run store " + path + ": cannot open its lock file " + lock_path);
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd);
+    throw io::InputError(path, 0, 0, "",
+                         "the run is in use: another process writes this run store (stop it, or wait for it to end)");
+  }
+  return fd;
+}
+
+// The public reads turn SQLite's errors (a page corrupted after the open's check) into bad input.
+template <class F>
+auto reading(const std::string& path, F&& read) {
+  try {
+    return read();
+  } catch (const io::InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    bad_store(path, std::string("cannot read the run store: ") + e.what());
+  }
 }
 
 }  // namespace
 
-RunStore::RunStore(sqlite3* db) : db_(db) {}
-RunStore::RunStore(RunStore&& o) noexcept : db_(o.db_) { o.db_ = nullptr; }
+RunStore::RunStore(sqlite3* db, std::string path, int lock_fd) : db_(db), path_(std::move(path)), lock_fd_(lock_fd) {}
+RunStore::RunStore(RunStore&& o) noexcept : db_(o.db_), path_(std::move(o.path_)), lock_fd_(o.lock_fd_) {
+  o.db_ = nullptr;
+  o.lock_fd_ = -1;
+}
 RunStore& RunStore::operator=(RunStore&& o) noexcept {
   std::swap(db_, o.db_);
+  std::swap(path_, o.path_);
+  std::swap(lock_fd_, o.lock_fd_);
   return *this;
 }
-RunStore::~RunStore() { sqlite3_close(db_); }
+RunStore::~RunStore() {
+  sqlite3_close(db_);
+  if (lock_fd_ >= 0) ::close(lock_fd_);  // closing drops the flock
+}
+
+bool RunStore::in_use(const std::string& path) {
+  const int fd = ::open((path + ".lock").c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool held = ::flock(fd, LOCK_SH | LOCK_NB) != 0;
+  ::close(fd);
+  return held;
+}
 
 RunStore RunStore::create(const std::string& path, const std::map<std::string, std::string>& meta) {
-  if (std::filesystem::exists(path)) throw std::runtime_error("run store " + path + " exists already");
-  RunStore s(open_db(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE));
+  const int lock = lock_store(path);
+  if (std::filesystem::exists(path)) {
+    ::close(lock);
+    throw io::InputError(path, 0, 0, "", "a run store exists here already");
+  }
+  RunStore s(nullptr, path, lock);
+  s.db_ = open_db(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
+  exec(s.db_, "PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL;");
   exec(s.db_,
        "BEGIN;"
        "CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);"
@@ -94,31 +180,48 @@ RunStore RunStore::create(const std::string& path, const std::map<std::string, s
        "  feasible_share REAL, seconds REAL);"
        "CREATE TABLE individual(generation INTEGER, rank INTEGER, genotype BLOB, steps BLOB,"
        "  objectives BLOB, violation REAL, feasible INTEGER, value REAL, violations TEXT,"
-       "  PRIMARY KEY(generation, rank));"
-       "COMMIT;");
-  Statement ins(s.db_, "INSERT INTO meta(key, value) VALUES(?, ?)");
-  for (const auto& [k, v] : meta) {
-    ins.bind(1, k).bind(2, v).step();
-    ins.reset();
+       "  PRIMARY KEY(generation, rank));");
+  {  // tables and meta in one transaction: a reader never sees a store without its program
+    Statement ins(s.db_, "INSERT INTO meta(key, value) VALUES(?, ?)");
+    for (const auto& [k, v] : meta) {
+      ins.bind(1, k).bind(2, v).step();
+      ins.reset();
+    }
   }
+  exec(s.db_, "COMMIT;");
   return s;
 }
 
 RunStore RunStore::open(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw std::runtime_error("run store " + path + " not found");
-  return RunStore(open_db(path, SQLITE_OPEN_READWRITE));
+  if (!std::filesystem::is_regular_file(path)) throw io::InputError(path, 0, 0, "", "no run store here");
+  RunStore s(open_db(path, SQLITE_OPEN_READONLY), path, -1);
+  check_store(s.db_, path);
+  return s;
+}
+
+RunStore RunStore::resume(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path)) throw io::InputError(path, 0, 0, "", "no run store here");
+  const int lock = lock_store(path);
+  RunStore s(nullptr, path, lock);
+  // Checked through a read-only connection first: nothing is written to a file that is no store.
+  check_store(RunStore::open(path).db_, path);
+  s.db_ = open_db(path, SQLITE_OPEN_READWRITE);
+  exec(s.db_, "PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL;");
+  return s;
 }
 
 std::map<std::string, std::string> RunStore::meta() const {
-  std::map<std::string, std::string> m;
-  Statement q(db_, "SELECT key, value FROM meta");
-  while (q.step()) m[q.text(0)] = q.text(1);
-  return m;
+  return reading(path_, [&] {
+    std::map<std::string, std::string> m;
+    Statement q(db_, "SELECT key, value FROM meta");
+    while (q.step()) m[q.text(0)] = q.text(1);
+    return m;
+  });
 }
 
 void RunStore::save(const opt::Generation& g, double seconds) {
-  exec(db_, "BEGIN IMMEDIATE;");
   try {
+    exec(db_, "BEGIN IMMEDIATE;");
     int feasible = 0;
     Statement ins(db_,
                   "INSERT INTO individual(generation, rank, genotype, steps, objectives, violation, feasible, value,"
@@ -136,44 +239,52 @@ void RunStore::save(const opt::Generation& g, double seconds) {
     gen.bind(3, g.population.empty() ? 0.0 : g.population.front().score.value);
     gen.bind(4, g.population.empty() ? 0.0 : double(feasible) / double(g.population.size())).bind(5, seconds).step();
     exec(db_, "COMMIT;");
-  } catch (...) {
-    exec(db_, "ROLLBACK;");
-    throw;
+  } catch (const std::exception& e) {
+    sqlite3_exec(db_, "ROLLBACK;", nullptr, nullptr, nullptr);  // keeps the last whole generation
+    throw std::runtime_error(path_ + ": cannot save generation " + std::to_string(g.index) + ": " + e.what());
   }
 }
 
 std::optional<opt::Generation> RunStore::generation(int index) const {
-  Statement g(db_, "SELECT evaluations FROM generation WHERE idx = ?");
-  g.bind(1, index);
-  if (!g.step()) return std::nullopt;
-  opt::Generation out;
-  out.index = index;
-  out.evaluations = g.integer(0);
-  Statement q(db_,
-              "SELECT genotype, steps, objectives, violation, feasible, value, violations FROM individual"
-              " WHERE generation = ? ORDER BY rank");
-  q.bind(1, index);
-  while (q.step()) {
-    opt::Individual ind;
-    ind.x = q.doubles(0);
-    ind.steps = q.doubles(1);
-    ind.score = {q.doubles(2), q.real(3), q.integer(4) != 0, q.real(5), q.text(6)};
-    out.population.push_back(std::move(ind));
-  }
-  return out;
+  return reading(path_, [&]() -> std::optional<opt::Generation> {
+    Statement g(db_, "SELECT evaluations FROM generation WHERE idx = ?");
+    g.bind(1, index);
+    if (!g.step()) return std::nullopt;
+    opt::Generation out;
+    out.index = index;
+    out.evaluations = g.integer(0);
+    Statement q(db_,
+                "SELECT genotype, steps, objectives, violation, feasible, value, violations FROM individual"
+                " WHERE generation = ? ORDER BY rank");
+    q.bind(1, index);
+    while (q.step()) {
+      opt::Individual ind;
+      ind.x = q.doubles(0);
+      ind.steps = q.doubles(1);
+      ind.score = {q.doubles(2), q.real(3), q.integer(4) != 0, q.real(5), q.text(6)};
+      out.population.push_back(std::move(ind));
+    }
+    return out;
+  });
 }
 
 std::optional<opt::Generation> RunStore::last() const {
-  Statement m(db_, "SELECT idx FROM generation ORDER BY idx DESC LIMIT 1");
-  if (!m.step()) return std::nullopt;
-  return generation(int(m.integer(0)));
+  const std::optional<long> index = reading(path_, [&]() -> std::optional<long> {
+    Statement m(db_, "SELECT idx FROM generation ORDER BY idx DESC LIMIT 1");
+    if (!m.step()) return std::nullopt;
+    return m.integer(0);
+  });
+  if (!index) return std::nullopt;
+  return generation(int(*index));
 }
 
 std::vector<GenerationSummary> RunStore::summaries() const {
-  std::vector<GenerationSummary> out;
-  Statement q(db_, "SELECT idx, evaluations, best, feasible_share, seconds FROM generation ORDER BY idx");
-  while (q.step()) out.push_back({int(q.integer(0)), q.integer(1), q.real(2), q.real(3), q.real(4)});
-  return out;
+  return reading(path_, [&] {
+    std::vector<GenerationSummary> out;
+    Statement q(db_, "SELECT idx, evaluations, best, feasible_share, seconds FROM generation ORDER BY idx");
+    while (q.step()) out.push_back({int(q.integer(0)), q.integer(1), q.real(2), q.real(3), q.real(4)});
+    return out;
+  });
 }
 
 }  // namespace mtcs::store

@@ -14,6 +14,9 @@
 
 namespace mtcs::io {
 
+// The largest coordinate vec3 accepts (mm).
+inline constexpr double kMaxCoordinate = 1e9;
+
 // "path[i]".
 std::string indexed(const std::string& path, std::size_t i);
 

@@ -3,6 +3,7 @@
 // I/O (the only place in mtcs that includes CGAL's I/O headers); writing STL, OBJ and PLY.
 
 #include <array>
+#include <cstdint>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -15,6 +16,11 @@ class MeshError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// Limits of read_mesh, checked before (file size) and after (counts) reading: a clear error
+// rather than memory exhaustion or overflowing int indices.
+inline constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t(2) << 30;  // 2 GiB
+inline constexpr std::size_t kMaxMeshTriangles = 20'000'000;
 
 // Reads a polygon mesh (faces with more than three corners are fanned into triangles, which is
 // right for the convex faces CAD exporters write). Throws MeshError naming the file.

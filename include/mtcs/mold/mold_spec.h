@@ -46,6 +46,10 @@ struct Block {
 // steel from outside (the reference block of shared/cases/thermal), no void. A patch is stored
 // as a flat box (zero extent along the face's normal) in `box`, with `patch_face` set, so code
 // that only needs the cavity's bounds reads `box` alike.
+// The most cavity-surface samples (sub-triangles for a mesh) a spec may ask for: beyond it the
+// reader says to raise sample_spacing instead of exhausting memory or overflowing counts.
+inline constexpr double kMaxSurfaceSamples = 2e7;
+
 struct Cavity {
   std::optional<Box> box;
   std::optional<MeshSource> mesh;

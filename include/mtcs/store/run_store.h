@@ -5,6 +5,10 @@
 // violated constraints in words, feasibility — with a summary. One transaction per generation,
 // so a run killed at any moment (kill -9 included) keeps every complete generation and resumes
 // from the last. Numbers are stored as their exact bits: a resumed run continues bit for bit.
+// A store that is not one (truncated, corrupted, another program's file) is bad input:
+// io::InputError naming the file, and nothing is written to it. A writing store (create,
+// resume) holds an advisory lock (flock on "<store>.lock") for its life, so a second writer is
+// refused with "in use"; the kernel drops the lock when the process dies, kill -9 included.
 
 #include <map>
 #include <memory>
@@ -28,10 +32,15 @@ struct GenerationSummary {
 
 class RunStore {
  public:
-  // Creates a new store (fails if the file exists) with the run's metadata.
+  // Creates a new store (fails if the file exists or another process writes there) with the
+  // run's metadata; meta must name the "program" ("mtcs ...").
   static RunStore create(const std::string& path, const std::map<std::string, std::string>& meta);
-  // Opens an existing store to read or resume it.
+  // Opens an existing store to read it (replay, tests), read only, while a run may be writing.
   static RunStore open(const std::string& path);
+  // Opens an existing store to continue writing it: refused while another process writes it.
+  static RunStore resume(const std::string& path);
+  // Whether a process writes the store at `path` now (holds its lock).
+  static bool in_use(const std::string& path);
 
   RunStore(RunStore&&) noexcept;
   RunStore& operator=(RunStore&&) noexcept;
@@ -44,8 +53,10 @@ class RunStore {
   std::vector<GenerationSummary> summaries() const;
 
  private:
-  explicit RunStore(sqlite3* db);
+  RunStore(sqlite3* db, std::string path, int lock_fd);
   sqlite3* db_ = nullptr;
+  std::string path_;
+  int lock_fd_ = -1;  // the advisory lock of a writing store
 };
 
 }  // namespace mtcs::store

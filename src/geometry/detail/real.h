@@ -30,7 +30,7 @@ struct Limits {
 };
 template <>
 struct Limits<quad> {
-  static quad infinity() { return __builtin_huge_valq(); }
+  static quad infinity() { return quad(std::numeric_limits<double>::infinity()); }  // clang has no __builtin_huge_valq
   // FLT128_MAX and FLT128_EPSILON, spelled without the Q suffix that -Wpedantic rejects.
   static quad max() { return scalbnq(quad(1.0) - scalbnq(quad(1.0), -113), 16384); }
   static quad epsilon() { return scalbnq(quad(1.0), -112); }

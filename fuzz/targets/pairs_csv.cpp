@@ -1,0 +1,13 @@
+// Fuzz target: the cylinder-pair CSV reader. Bad input must end in io::InputError, nothing else.
+#include "fuzz_file.h"
+#include "mtcs/io/input_error.h"
+#include "mtcs/io/pairs_csv.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const mtcs::fuzz::InputFile file(data, size, "pairs.csv");
+  try {
+    (void)mtcs::io::read_pairs_csv(file.path());
+  } catch (const mtcs::io::InputError&) {
+  }
+  return 0;
+}

@@ -1,0 +1,144 @@
+// Mesh files on which CGAL's readers ran into undefined behaviour, found by the libFuzzer
+// targets (fuzz/, experiments/fuzz/README.md), and the reader's size limits: each is refused
+// with a MeshError naming the file and line, before CGAL reads it.
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+#include "mtcs/mesh/mesh_io.h"
+
+using mtcs::mesh::MeshError;
+using mtcs::mesh::read_mesh;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string write(const std::string& name, const std::string& text) {
+  const fs::path dir = fs::temp_directory_path() / ("mtcs_mesh_defects_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / name, std::ios::binary) << text;
+  return (dir / name).string();
+}
+
+std::string error_of(const std::string& path) {
+  try {
+    read_mesh(path);
+  } catch (const MeshError& e) {
+    return e.what();
+  }
+  FAIL("no error for " << path);
+  return "";
+}
+
+const std::string kTetraVertices = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+
+}  // namespace
+
+// fuzz_mesh_off, crash-cbfd5a7b: CGAL's File_scanner_OFF casts a face's index from double to
+// size_t, undefined behaviour for -47 (UBSan: "-47 is outside the range of representable values").
+TEST_CASE("mesh reader defect: a negative face index in OFF is refused at its line", "[mesh][fuzz-defect]") {
+  const auto path = write("negative.off", "OFF\n4 4 0\n" + kTetraVertices + "3 0 2 1\n3 0 1 3\n3 0 -47 2\n3 1 2 3\n");
+  const std::string e = error_of(path);
+  CHECK_THAT(e, Catch::StartsWith(path + ":9: face 2 refers to vertex -47"));
+  // A negative corner count and an index past the vertices, likewise.
+  CHECK_THAT(error_of(write("size.off", "OFF\n4 1 0\n" + kTetraVertices + "-3 0 1 2\n")), Catch::Contains(":7: face 0 has a corner count"));
+  CHECK_THAT(error_of(write("past.off", "OFF\n4 1 0\n" + kTetraVertices + "3 0 1 1e300\n")), Catch::Contains("not one of the 4 vertices"));
+  // Comments and counts on the keyword's line keep the line numbers right.
+  CHECK_THAT(error_of(write("comment.off", "# made by hand\nOFF 4 1 0\n# vertices\n" + kTetraVertices + "\n3 0 1 -2\n")),
+             Catch::Contains(":9: face 0 refers to vertex -2"));
+}
+
+// fuzz_mesh_ply, crash-08c18110: CGAL's PLY_reader adds a property to elements.back() of an
+// empty list (UBSan: "applying non-zero offset to null pointer") when a property comes first.
+TEST_CASE("mesh reader defect: a PLY property before any element is refused at its line", "[mesh][fuzz-defect]") {
+  const auto path = write("orphan.ply", "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n0\n");
+  CHECK_THAT(error_of(path), Catch::StartsWith(path + ":3: a property before any element"));
+}
+
+TEST_CASE("mesh reader: binary and n-dimensional OFF are refused as unsupported", "[mesh][fuzz-defect]") {
+  CHECK_THAT(error_of(write("binary.off", std::string("OFF BINARY\n\0\0\0\4", 15))), Catch::Contains("binary OFF is not supported"));
+  CHECK_THAT(error_of(write("ndim.off", "nOFF\n3\n4 1 0\n")), Catch::Contains("variant nOFF"));
+  CHECK_THAT(error_of(write("count.off", "OFF\n4 -1 0\n")), Catch::Contains("count -1 is out of range"));
+}
+
+TEST_CASE("mesh reader: a file beyond the 2 GiB limit is refused before it is read", "[mesh][bad-numbers]") {
+  const auto path = write("huge.stl", "");
+  fs::resize_file(path, mtcs::mesh::kMaxMeshFileBytes + 1);  // sparse: no disk, no time
+  CHECK_THAT(error_of(path), Catch::Contains("more than the 2147483648 bytes a mesh file may have"));
+  fs::remove(path);
+}
+
+TEST_CASE("mesh reader: a plain tetrahedron still reads after the checks", "[mesh][fuzz-defect]") {
+  const auto m = read_mesh(write("tetra.off", "OFF\n# comment\n4 4 0\n" + kTetraVertices + "3 0 2 1\n3 0 1 3 # c\n3 0 3 2\n3 1 2 3\n"));
+  CHECK(m.vertices.size() == 4);
+  CHECK(m.triangles.size() == 4);
+  CHECK(m.triangles[1] == std::array<int, 3>{0, 1, 3});
+}
+
+// fuzz_mesh_off, crash-55f00afc: "OFF\nBINARY" followed by bytes: CGAL's header reader doubled
+// a garbage edge count in int (UBSan: signed integer overflow, 2 * 2117405237).
+TEST_CASE("mesh reader defect: BINARY glued to garbage after OFF is refused, no overflow", "[mesh][fuzz-defect]") {
+  CHECK_THAT(error_of(write("glued.off", "OFF\nBINARY\xb5~5\n52\n")), Catch::Contains(":2: binary OFF is not supported"));
+  CHECK_THAT(error_of(write("edges.off", "OFF\n4 4 2117405237\n")), Catch::Contains("count 2117405237 is out of range"));
+}
+
+// fuzz_mesh_ply, crash-48ea8ea7: "property uint16 y" of a vertex: CGAL's PLY reader reads
+// coordinates as float or double only and dereferenced a null pointer.
+TEST_CASE("mesh reader defect: an integer vertex coordinate in PLY is refused at its line", "[mesh][fuzz-defect]") {
+  const auto path = write("int.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty double x\nproperty uint16 y\n"
+                                     "property double z\nend_header\n0 0 0\n");
+  CHECK_THAT(error_of(path), Catch::StartsWith(path + ":5: vertex property y must be float or double, not uint16"));
+}
+
+// fuzz_mesh_ply, timeout-*: "element vertex -48": CGAL's PLY reader took the count as 2^64 - 48
+// and read on past the end of the file (a hang).
+TEST_CASE("mesh reader defect: a negative PLY element count is refused at its line, no hang", "[mesh][fuzz-defect]") {
+  const auto path = write("negative.ply", "ply\nformat binary_little_endian 1.0\nelement vertex -48\nproperty float x\nend_header\n");
+  CHECK_THAT(error_of(path), Catch::StartsWith(path + ":3: element vertex has the count '-48'"));
+  CHECK_THAT(error_of(write("huge.ply", "ply\nformat ascii 1.0\nelement face 99999999999\nend_header\n")), Catch::Contains("'99999999999'"));
+}
+
+// fuzz_mesh_off, crash-(round 3): "OFF 0\n4 5-1(3": counts glued to the first face; CGAL reads
+// 0 4 5 as numbers, then the face "-1(3" casts -1 to size_t.
+TEST_CASE("mesh reader defect: a negative corner count after glued counts is refused", "[mesh][fuzz-defect]") {
+  CHECK_THAT(error_of(write("glued_counts.off", "OFF 0\n4 5-1(3 2.5\n")), Catch::Contains("face 0 has a corner count"));
+}
+
+// fuzz_mesh_off, crash-4734c32a: "OFF]" then "BINARY": CGAL took the keyword and converted a
+// garbage count of 4.6e9 to int (UBSan). And slow-unit-092f223d: "OFF\n35 17046664" in a
+// 100-byte file kept CGAL reading 17 million faces past the end for 10 s.
+TEST_CASE("mesh reader defect: an OFF keyword with garbage and counts beyond the file are refused", "[mesh][fuzz-defect]") {
+  const auto path = write("bracket.off", "OFF]\nBINARY\n");
+  CHECK_THAT(error_of(path), Catch::StartsWith(path + ":1: not an OFF file: it starts with 'OFF]'"));
+  CHECK_THAT(error_of(write("promise.off", "OFF\n35 17046664 0\n0 0 0\n")),
+             Catch::Contains("promises 35 vertices and 17046664 faces, more than a file of"));
+  CHECK_THAT(error_of(write("promise.ply", "ply\nformat ascii 1.0\nelement vertex 1000\nend_header\n")),
+             Catch::Contains("element vertex has the count '1000'"));
+}
+
+// fuzz_mesh_off, crash-99b86e8e: a COFF vertex line too short for its colour: CGAL's
+// File_scanner_OFF::scan_color read past its entries (ASan: heap-buffer-overflow).
+TEST_CASE("mesh reader defect: the OFF variants with colours or normals are refused", "[mesh][fuzz-defect]") {
+  const auto path = write("coff.off", "COFF\n2 6\n3 1 6\n50 52.5 3\n");
+  CHECK_THAT(error_of(path), Catch::StartsWith(path + ":1: the OFF variant COFF is not supported: plain OFF only"));
+  for (const std::string variant : {"NOFF", "STOFF", "4OFF", "CNOFF"})
+    CHECK_THAT(error_of(write("variant.off", variant + "\n4 4 0\n")), Catch::Contains("variant " + variant));
+}
+
+// fuzz_mesh_ply, oom (round 5): "property list int32 int vertex_indices": CGAL allocated a list
+// as long as a 32-bit count said (malloc of 4.7 GB from a 1 kB file).
+TEST_CASE("mesh reader defect: a PLY list counted in 32 bits is refused at its line", "[mesh][fuzz-defect]") {
+  const auto path = write("list32.ply", "ply\nformat ascii 1.0\nelement face 1\nproperty list int32 int vertex_indices\nend_header\n3 0 1 2\n");
+  CHECK_THAT(error_of(path), Catch::StartsWith(path + ":4: a list counted in int32"));
+}
+
+// fuzz_mesh_ply, crash-48a04839 (smoke run): "property fproperty double x": the property's name
+// is its last word (x) and its type the garbage "fproperty": the null dereference of crash-48ea8ea7.
+TEST_CASE("mesh reader defect: a vertex coordinate of an unknown type is refused", "[mesh][fuzz-defect]") {
+  const auto path = write("garbage_type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty fproperty double x\n"
+                                              "property double y\nproperty double z\nend_header\n0 0 0\n");
+  CHECK_THAT(error_of(path), Catch::StartsWith(path + ":4: vertex property x must be float or double, not fproperty"));
+}
