@@ -180,7 +180,7 @@ TEST_CASE("penalty variants order layouts as documented", "[eval]") {
   eval::Evaluation feasible, infeasible;
   feasible.objectives = {10, 10, 10};
   infeasible.objectives = {1, 1, 1};
-  infeasible.violations.push_back({"bore_bore", {"a", "b"}, 2, 4, 0.5, {}});
+  infeasible.violations.push_back({"bore_bore", {"a", "b"}, 2, 4, 0.5, {}, {}});
   infeasible.violation = 0.25;
   using mold::PenaltyVariant;
   spec.penalty.variant = PenaltyVariant::ConstrainedDomination;
