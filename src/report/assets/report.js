@@ -137,17 +137,24 @@ function label(text, at, height, color = '#1d2330') {
   ctx.fillText(text, px * 0.3, c.height / 2);
   const texture = new THREE.CanvasTexture(c);
   texture.colorSpace = THREE.SRGBColorSpace;
-  const s = new THREE.Sprite(new THREE.SpriteMaterial({ map: texture, depthTest: false }));
+  const sm = new THREE.SpriteMaterial({ map: texture, depthTest: false });
+  clipped.push(sm);
+  const s = new THREE.Sprite(sm);
   s.scale.set(height * c.width / c.height, height, 1);
   s.position.copy(v3(at));
   s.renderOrder = 10;
   return s;
 }
+// Frees a layout's layer (its materials leave the section plane's list too).
 function dispose(group) {
-  group.traverse((o) => {
-    if (o.geometry) o.geometry.dispose();
-    if (o.material && !clipped.includes(o.material)) { if (o.material.map) o.material.map.dispose(); o.material.dispose(); }
-  });
+  const materials = new Set();
+  group.traverse((o) => { if (o.geometry) o.geometry.dispose(); if (o.material) materials.add(o.material); });
+  for (const m of materials) {
+    const i = clipped.indexOf(m);
+    if (i >= 0) clipped.splice(i, 1);
+    if (m.map) m.map.dispose();
+    m.dispose();
+  }
   group.clear();
 }
 
@@ -263,22 +270,24 @@ function showLayout(member) {
     portLayer.add(label(`c${p.circuit} in`, v3(p.inlet).add(v3(lift)).toArray(), markSize * 1.1, '#1565c0'));
     portLayer.add(label(`c${p.circuit} out`, v3(p.outlet).add(v3(lift).multiplyScalar(2.2)).toArray(), markSize * 1.1, '#c62828'));
   }
-  for (const v of member.violations) {
-    if (!v.closest) continue;
+  // Each shortfall: a rod between the closest points and a ball at each, drawn over the solids
+  // (a crossing has both points inside the solids), labelled with the shortfall when few.
+  const drawn = member.violations.filter((v) => v.closest);
+  for (const v of drawn) {
     const color = shortfallColor(v.amount);
     const [a, b] = v.closest;
-    const lm = lineMaterial({ color, depthTest: false });
-    const seg = new THREE.Line(new THREE.BufferGeometry().setFromPoints([v3(a), v3(b)]), lm);
-    seg.renderOrder = 20;
-    clashLayer.add(seg);
-    const dm = material({ color, emissive: color, emissiveIntensity: 0.5, depthTest: false });
-    for (const p of [a, b]) { const s = sphere(p, markSize * 0.25, dm); s.renderOrder = 20; clashLayer.add(s); }
+    const dm = material({ color, emissive: color, emissiveIntensity: 0.6, depthTest: false, transparent: true, opacity: 0.95 });
+    const parts = [sphere(a, markSize * 0.4, dm), sphere(b, markSize * 0.4, dm)];
+    if (v3(a).distanceTo(v3(b)) > 1e-6) parts.push(cylinder(a, b, markSize * 0.12, dm, 10));
+    if (drawn.length <= 24)
+      parts.push(label(`${v.elements.join('\u2013')} ${fmt(v.distance)} < ${fmt(v.margin)} mm`, v3(a).add(v3(b)).multiplyScalar(0.5).add(new THREE.Vector3(0, 0, -markSize * 1.2)).toArray(), markSize * 0.9, '#b71c1c'));
+    for (const p of parts) { p.renderOrder = 20; clashLayer.add(p); }
   }
   const temperatureHere = data.temperature && data.temperature.member === member.rank;
   setLayerAvailable('temperature', !!temperatureHere,
     data.temperature ? `the temperature is of member ${data.temperature.member} only` : 'no temperature in this report');
   drawLegend(member);
-  render();
+  updateSection();  // the new materials get the plane too; renders
 }
 
 function drawLegend(member) {
@@ -303,7 +312,7 @@ layers.temperature.box.addEventListener('change', () => drawLegend(data.members[
 // Camera, render on demand, resize.
 function resetView() {
   const d = Math.max(blockSize.x, blockSize.y, blockSize.z);
-  camera.position.copy(blockCenter).add(new THREE.Vector3(0.9 * d, -1.5 * d, 1.1 * d));
+  camera.position.copy(blockCenter).add(new THREE.Vector3(0.7 * d, -1.3 * d, 0.9 * d));
   camera.near = d / 100; camera.far = d * 50;
   camera.updateProjectionMatrix();
   if (controls) { controls.target.copy(blockCenter); controls.update(); }
@@ -430,30 +439,35 @@ function niceTicks(lo, hi, count = 5) {
   return { lo: Math.min(lo, ticks[0]), hi: Math.max(hi, ticks[ticks.length - 1]), ticks, format };
 }
 // An empty chart with axes; returns the scales and the plot group.
-function chart(container, { title, xLabel, yLabel, xs, ys, width = 360, height = 250, log = false }) {
+function logTicks(values) {
+  const lo = Math.floor(Math.log10(Math.min(...values))), hi = Math.max(Math.ceil(Math.log10(Math.max(...values))), lo + 1);
+  const ticks = [];
+  for (let k = lo; k <= hi; ++k) ticks.push(k);
+  return { lo, hi, ticks, format: (t) => fmt(10 ** t) };
+}
+function chart(container, { title, xLabel, yLabel, xs, ys, width = 360, height = 250, log = false, logX = false }) {
   const wrap = el('div', { class: 'plot' });
   container.append(wrap);
   const m = { l: 58, r: 12, t: 22, b: 40 };
   const root = svg('svg', { viewBox: `0 0 ${width} ${height}`, role: 'img', 'aria-label': title });
   wrap.append(root);
   svg('text', { x: m.l, y: 14, 'font-weight': 600 }, root).textContent = title;
-  const finite = (a) => a.filter((v) => v !== null && Number.isFinite(v) && (!log || v > 0));
-  const fx = finite(xs), fy = finite(ys);
-  const tx = niceTicks(Math.min(...fx), Math.max(...fx));
-  const yl = log ? fy.map(Math.log10) : fy;
-  const ty = log ? (() => { const lo = Math.floor(Math.min(...yl)), hi = Math.ceil(Math.max(...yl)); const t = []; for (let k = lo; k <= Math.max(hi, lo + 1); ++k) t.push(k); return { lo, hi: Math.max(hi, lo + 1), ticks: t }; })()
-    : niceTicks(Math.min(...yl), Math.max(...yl));
-  const X = (v) => m.l + (v - tx.lo) / (tx.hi - tx.lo) * (width - m.l - m.r);
+  const finite = (a, positive) => a.filter((v) => v !== null && Number.isFinite(v) && (!positive || v > 0));
+  const fx = finite(xs, logX), fy = finite(ys, log);
+  const tx = logX ? logTicks(fx) : niceTicks(Math.min(...fx), Math.max(...fx));
+  const ty = log ? logTicks(fy) : niceTicks(Math.min(...fy), Math.max(...fy));
+  const X = (v) => m.l + ((logX ? Math.log10(v) : v) - tx.lo) / (tx.hi - tx.lo) * (width - m.l - m.r);
   const Y = (v) => { const u = log ? Math.log10(v) : v; return height - m.b - (u - ty.lo) / (ty.hi - ty.lo) * (height - m.t - m.b); };
   const grid = svg('g', { class: 'grid' }, root), axis = svg('g', { class: 'axis' }, root);
   for (const t of tx.ticks) {
-    svg('line', { x1: X(t), x2: X(t), y1: m.t, y2: height - m.b }, grid);
-    svg('text', { x: X(t), y: height - m.b + 14, 'text-anchor': 'middle' }, axis).textContent = tx.format(t);
+    const x = logX ? X(10 ** t) : X(t);
+    svg('line', { x1: x, x2: x, y1: m.t, y2: height - m.b }, grid);
+    svg('text', { x, y: height - m.b + 14, 'text-anchor': 'middle' }, axis).textContent = tx.format(t);
   }
   for (const t of ty.ticks) {
     const y = log ? Y(10 ** t) : Y(t);
     svg('line', { x1: m.l, x2: width - m.r, y1: y, y2: y }, grid);
-    svg('text', { x: m.l - 5, y: y + 4, 'text-anchor': 'end' }, axis).textContent = log ? fmt(10 ** t) : ty.format(t);
+    svg('text', { x: m.l - 5, y: y + 4, 'text-anchor': 'end' }, axis).textContent = ty.format(t);
   }
   svg('path', { d: `M${m.l},${m.t}V${height - m.b}H${width - m.r}`, fill: 'none' }, axis);
   svg('text', { class: 'label', x: (m.l + width - m.r) / 2, y: height - 6, 'text-anchor': 'middle' }, root).textContent = xLabel;
@@ -523,15 +537,21 @@ function drawConvergence() {
   const values = [...cv.best, ...cv.median].filter((v) => v !== null && Number.isFinite(v));
   const positive = values.every((v) => v > 0);
   const log = positive && Math.max(...values) / Math.min(...values) > 50;
-  const c1 = chart(box, { title: 'scalarised value (lower is better)', xLabel: 'evaluations', yLabel: log ? 'value (log)' : 'value', xs, ys: [...cv.best, ...cv.median], log });
+  const logX = xs.length > 1 && xs[0] > 0 && xs[xs.length - 1] / xs[0] > 100;
+  const xLabel = logX ? 'evaluations (log)' : 'evaluations';
+  const c1 = chart(box, { title: 'scalarised value (lower is better)', xLabel, yLabel: log ? 'value (log)' : 'value', xs, ys: [...cv.best, ...cv.median], log, logX });
   line(c1, cv.best, '#1f6fd1'); line(c1, cv.median, '#ff7f0e', '5 3'); mark(c1);
-  svg('text', { x: c1.width - c1.m.r, y: 14, 'text-anchor': 'end', fill: '#1f6fd1' }, c1.root).textContent = 'best';
-  svg('text', { x: c1.width - c1.m.r - 34, y: 14, 'text-anchor': 'end', fill: '#ff7f0e' }, c1.root).textContent = 'median';
+  svg('text', { x: c1.width - c1.m.r - 4, y: c1.m.t + 14, 'text-anchor': 'end', fill: '#1f6fd1', 'font-weight': 600 }, c1.root).textContent = '\u2014 best';
+  svg('text', { x: c1.width - c1.m.r - 4, y: c1.m.t + 28, 'text-anchor': 'end', fill: '#ff7f0e', 'font-weight': 600 }, c1.root).textContent = '- - median';
   const share = cv.feasible_share.map((v) => 100 * v);
-  const c2 = chart(box, { title: 'feasible share of the population', xLabel: 'evaluations', yLabel: 'feasible (%)', xs, ys: [0, 100, ...share] });
+  const c2 = chart(box, { title: 'feasible share of the population', xLabel, yLabel: 'feasible (%)', xs, ys: [0, 100, ...share], logX });
   line(c2, share, '#2ca02c'); mark(c2);
-  const c3 = chart(box, { title: 'hypervolume of the feasible front', xLabel: 'evaluations', yLabel: 'hypervolume (scaled objectives)', xs, ys: [0, ...cv.hypervolume] });
+  const c3 = chart(box, { title: 'hypervolume of the feasible front', xLabel, yLabel: 'hypervolume (scaled)', xs, ys: [0, ...cv.hypervolume], logX });
   line(c3, cv.hypervolume, '#9467bd'); mark(c3);
+  if (data.run.algorithm === 'es')
+    box.append(el('p', { class: 'hint', text: 'The ES minimises one weighted sum: its population gathers at one point, so its front and hypervolume shrink as it converges. ' +
+      'SMS-EMOA (--algorithm sms-emoa) spreads a front. The dashed line marks the generation shown.' }));
+  else box.append(el('p', { class: 'hint', text: 'The dashed line marks the generation shown.' }));
   c3.root.append(Object.assign(svg('title'), { textContent: `reference point ${cv.hv_ref.map((v) => fmt(v)).join(', ')} (objective / its scale)` }));
 }
 
@@ -551,11 +571,27 @@ window.addEventListener('keydown', (e) => {
   }
 });
 
+// A link may name the state to open in: #member=K&section=AXIS:FRACTION (e.g. z:0.8)&flip=1&hide=block,part
+function applyHash() {
+  const params = new URLSearchParams(location.hash.slice(1));
+  const member = Number(params.get('member'));
+  if (params.has('member') && data.members.some((m) => m.rank === member)) shown = member;
+  const section = (params.get('section') || '').split(':');
+  if ('xyz'.includes(section[0]) && section[0]) {
+    $('section-axis').value = String('xyz'.indexOf(section[0]));
+    $('section-pos').value = String(Math.round(1000 * Math.max(0, Math.min(1, Number(section[1] ?? 0.5)))));
+    $('section-flip').checked = params.get('flip') === '1';
+  }
+  for (const key of (params.get('hide') || '').split(',')) if (layers[key]) { layers[key].box.checked = false; layers[key].group.visible = false; }
+}
+
+applyHash();
 drawFront();
 drawConvergence();
 resize();
 resetView();
 select(shown);
+updateSection();
 // For tests and scripts: the page is drawn.
 window.mtcsReport = { select, frames: () => frames, data };
 document.body.dataset.ready = '1';
