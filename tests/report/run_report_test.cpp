@@ -5,11 +5,13 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "cli/run_mtcs.h"
 #include "mtcs/io/input_error.h"
+#include "mtcs/report/layout_export.h"
 #include "mtcs/report/run_report.h"
 
 namespace {
@@ -139,4 +141,65 @@ TEST_CASE("report: a missing run, generation or member is an input error naming 
   const auto err = mtcs_test::scratch("report", "err.txt");
   CHECK(mtcs_test::run_mtcs("report " + plate_run().string() + " --generation 99999", err) == 2);
   CHECK(mtcs_test::read_text(err).find("run.sqlite") != std::string::npos);
+}
+
+TEST_CASE("export: every bore of the run's best layout as a closed tube of the right volume and axis", "[report][export]") {
+  const auto obj = plate_run().parent_path() / "bores.obj";
+  const auto vtp = plate_run().parent_path() / "bores.vtp";
+  REQUIRE(mtcs_test::run_mtcs("export " + plate_run().string() + " --format obj --out " + obj.string()) == 0);
+  REQUIRE(mtcs_test::run_mtcs("export " + plate_run().string() + " --format vtp --out " + vtp.string()) == 0);
+  const auto rows = read_csv(plate_run() / "bores.csv");  // optimize's table of the same layout
+  // The OBJ, object by object: vertices (2 rings of n, then the two cap centres) and triangles.
+  struct Object {
+    std::string name;
+    std::vector<std::array<double, 3>> v;
+    std::vector<std::array<std::size_t, 3>> f;
+  };
+  std::vector<Object> objects;
+  std::size_t base = 1;
+  std::istringstream in(mtcs_test::read_text(obj));
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream s(line);
+    std::string tag;
+    s >> tag;
+    if (tag == "o") {
+      if (!objects.empty()) base += objects.back().v.size();
+      objects.push_back({});
+      s >> objects.back().name;
+    } else if (tag == "v") {
+      auto& p = objects.back().v.emplace_back();
+      s >> p[0] >> p[1] >> p[2];
+    } else if (tag == "f") {
+      auto& t = objects.back().f.emplace_back();
+      s >> t[0] >> t[1] >> t[2];
+      for (auto& i : t) i -= base;
+    }
+  }
+  REQUIRE(objects.size() == rows.size() - 1);
+  const int n = mtcs::report::kTubeSides;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const auto& o = objects[i];
+    const auto& row = rows[i + 1];
+    CHECK(o.name == row[0]);
+    REQUIRE(o.v.size() == std::size_t(2 * n + 2));
+    double p0[3], p1[3], length2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      p0[k] = std::stod(row[3 + std::size_t(k)]), p1[k] = std::stod(row[6 + std::size_t(k)]);
+      length2 += (p1[k] - p0[k]) * (p1[k] - p0[k]);
+      CHECK(o.v[std::size_t(2 * n)][std::size_t(k)] == Approx(p0[k]).margin(1e-9));
+      CHECK(o.v[std::size_t(2 * n + 1)][std::size_t(k)] == Approx(p1[k]).margin(1e-9));
+    }
+    // Signed volume by the divergence theorem against the n-gon prism's closed form.
+    double volume = 0;
+    for (const auto& t : o.f) {
+      const auto &a = o.v[t[0]], &b = o.v[t[1]], &c = o.v[t[2]];
+      volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+    }
+    const double r = std::stod(row[9]) / 2;
+    CHECK(volume == Approx(n / 2.0 * r * r * std::sin(2 * M_PI / n) * std::sqrt(length2)).epsilon(1e-9));
+  }
+  const std::string v = mtcs_test::read_text(vtp);
+  CHECK(v.find("NumberOfPolys=\"" + std::to_string(objects.size() * 4 * std::size_t(n)) + "\"") != std::string::npos);
+  CHECK(v.find("Name=\"circuit\"") != std::string::npos);
+  CHECK(mtcs_test::run_mtcs("export " + plate_run().string() + " --format step") == 2);
 }
