@@ -114,7 +114,7 @@ TEST_CASE("report: each violated clearance is drawn between points as far apart 
   CHECK(drawn > 0);
 }
 
-TEST_CASE("report: the cavity temperature is the one mtcs thermal finds for the layout", "[report]") {
+TEST_CASE("report: the cavity temperature equals the thermal command's for the best", "[report]") {
   const auto r = mtcs::report::run_report(plate_run().string());
   REQUIRE(r.temperature);
   const json t = page_data(r.html)["temperature"];
