@@ -82,9 +82,13 @@ try {
   check(external.length === 0, `no network requests${external.length ? ': ' + external.join(' ') : ''}`);
 
   // The canvas as a screenshot, decoded by the browser itself (no PNG library needed here).
+  // The overlays on the view (title, legend, help) are hidden for it: only what WebGL drew counts
+  // (a canvas that drew nothing shows the viewer's background, the scene's colour).
   const pixels = async () => {
     const canvas = await page.$('#view3d');
+    await page.evaluate(() => { for (const id of ['view-title', 'legend', 'help']) document.getElementById(id).style.visibility = 'hidden'; });
     const png = await canvas.screenshot({ encoding: 'base64' });
+    await page.evaluate(() => { for (const id of ['view-title', 'legend', 'help']) document.getElementById(id).style.visibility = ''; });
     return page.evaluate(async (b64) => {
       const img = new Image();
       img.src = `data:image/png;base64,${b64}`;
