@@ -9,12 +9,12 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "mtcs/cli/commands.h"
 #include "mtcs/io/atomic_file.h"
 #include "mtcs/voxel/access_case.h"
 #include "mtcs/voxel/part_map.h"
+#include "number_checks.h"
 #include "python_plot.h"
 
 namespace mtcs::cli {
@@ -26,42 +26,24 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// `n` finite numbers separated by commas, e.g. "1,2.5,-3".
-std::vector<double> numbers(const std::string& text, std::size_t n, const std::string& option, const std::string& form) {
-  std::vector<double> v;
-  std::stringstream ss(text);
-  for (std::string item; std::getline(ss, item, ',');) {
-    std::size_t used = 0;
-    double x = NAN;
-    try {
-      x = std::stod(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != item.size() || !std::isfinite(x)) throw UsageError(option + ": '" + item + "' is not a finite number (expected " + form + ")");
-    v.push_back(x);
-  }
-  if (v.size() != n || (!text.empty() && text.back() == ','))
-    throw UsageError(option + ": expected " + form + ", got '" + text + "'");
-  return v;
-}
-
 struct PartOptions {
-  std::string mesh, pivot, bore, tool, am = "64,64", out, method = "aica";
+  std::string mesh, tool, out, method = "aica";
+  std::vector<double> pivot, bore, am{64, 64};
   int grid = 128, threads = 0;
 };
 
 // The user form: mesh, pivot, tool -> share of free directions, and the map as CSV or PNG.
 int run_part_map(const PartOptions& o) {
-  const std::vector<double> p = numbers(o.pivot, 3, "--pivot", "x,y,z");
-  const std::vector<double> am = numbers(o.am, 2, "--am", "rows,cols");
+  const std::vector<double>& p = o.pivot;
+  const std::vector<double>& am = o.am;
+  if (p.size() != 3) throw UsageError("--pivot: expected x,y,z");
   if (am[0] != std::floor(am[0]) || am[1] != std::floor(am[1]) || am[0] < 1 || am[1] < 1 || am[0] > 4096 || am[1] > 4096)
-    throw UsageError("--am: rows and cols must be whole numbers from 1 to 4096, got '" + o.am + "'");
+    throw UsageError("--am: rows and cols must be whole numbers from 1 to 4096, got '" + join_numbers(am) + "'");
   if (o.bore.empty() == o.tool.empty()) throw UsageError("give exactly one of --bore radius,length and --tool TOOL.yaml");
   voxel::Tool tool;
   if (!o.bore.empty()) {
-    const std::vector<double> b = numbers(o.bore, 2, "--bore", "radius,length");
-    if (b[0] < 0 || b[1] < 0) throw UsageError("--bore: radius and length must be >= 0, got '" + o.bore + "'");
+    const std::vector<double>& b = o.bore;
+    if (b[0] < 0 || b[1] < 0) throw UsageError("--bore: radius and length must be >= 0, got '" + join_numbers(b) + "'");
     tool = voxel::bore_tool(b[0], b[1]);
   } else {
     tool = voxel::read_tool_file(o.tool);
@@ -78,7 +60,7 @@ int run_part_map(const PartOptions& o) {
   const voxel::SphereGrid sphere{int(am[0]), int(am[1])};
   const voxel::Vec3 pivot(p[0], p[1], p[2]);
   const voxel::PartMap r = voxel::part_access_map(part, o.grid, pivot, tool, sphere, options);
-  if (r.pivot_inside) throw UsageError("--pivot " + o.pivot + " lies inside the part (give a point outside it)");
+  if (r.pivot_inside) throw UsageError("--pivot " + join_numbers(p) + " lies inside the part (give a point outside it)");
 
   const long free = long(r.map.cells.size()) - r.map.collisions();
   std::cout << "free directions: " << free << " of " << r.map.cells.size() << " (" << std::fixed << std::setprecision(2)
@@ -92,7 +74,7 @@ int run_part_map(const PartOptions& o) {
   voxel::write_map_csv(file.stream(), r.map, sphere);
   file.commit();
   if (png) {
-    const std::string title = std::filesystem::path(o.mesh).filename().string() + ", pivot " + o.pivot;
+    const std::string title = std::filesystem::path(o.mesh).filename().string() + ", pivot " + join_numbers(p);
     if (render_plot("plot_access_map.py", {csv_path, o.out, title}, std::cerr)) std::filesystem::remove(csv_path);
   }
   return 0;
@@ -134,11 +116,11 @@ Command add_access_map_command(CLI::App& app) {
   sub->add_option("--case", opt->case_file, "case file")->check(CLI::ExistingFile);
   sub->add_option("--mesh", opt->mesh, "mesh to use instead of the case's `mesh` line");
   sub->add_option("--out", opt->out, "--case: output case file; MESH: am.csv or am.png (written whole or not at all)");
-  sub->add_option("--pivot", part->pivot, "x,y,z: the point the tool pivots about (MESH form)");
-  sub->add_option("--bore", part->bore, "radius,length: a straight bore from the pivot (MESH form)");
+  add_numbers(sub, "--pivot", part->pivot, 3, "x,y,z", "the point the tool pivots about (MESH form)");
+  add_numbers(sub, "--bore", part->bore, 2, "radius,length", "a straight bore from the pivot (MESH form)");
   sub->add_option("--tool", part->tool, "YAML list of cylinders {a, b, r} (MESH form)")->check(CLI::ExistingFile);
   sub->add_option("--grid", part->grid, "voxels per side of the cubic grid (MESH form)")->capture_default_str()->check(CLI::Range(3, 1024));
-  sub->add_option("--am", part->am, "rows,cols of the sphere grid (MESH form)")->capture_default_str();
+  add_numbers(sub, "--am", part->am, 2, "rows,cols", "the sphere grid (MESH form)")->default_str("64,64");
   sub->add_option("--method", opt->method, "aica (default), ica or checkbox")->check(CLI::IsMember({"aica", "ica", "checkbox"}));
   sub->add_option("--threads", opt->threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
   return {sub, [opt, part] {

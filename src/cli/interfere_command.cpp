@@ -4,15 +4,14 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
-#include <iomanip>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 
 #include "mtcs/cli/commands.h"
 #include "mtcs/io/atomic_file.h"
 #include "mtcs/io/input_error.h"
 #include "mtcs/mesh/interference.h"
+#include "mtcs/mesh/interference_report.h"
 #include "mtcs/mesh/interference_view.h"
 #include "mtcs/mesh/mesh_check.h"
 #include "mtcs/mesh/mesh_io.h"
@@ -42,41 +41,8 @@ int print_layout_interference(const std::string& mold_path, const std::string& l
   const run::Session session(mold_path);
   const run::LayoutInterference r =
       run::layout_interference(session.pipeline(), mold::load_layout(layout_path, session.spec()));
-  if (json) {
-    nlohmann::ordered_json out;
-    out["mold"] = mold_path;
-    out["layout"] = layout_path;
-    out["bores"] = r.bores;
-    out["against"] = r.against;
-    out["pairs"] = r.crossing;  // bore pairs that touch, cross or lie inside each other
-    out["distance"] = r.found.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.nearest);
-    auto& list = out["violations"] = nlohmann::ordered_json::array();
-    for (const auto& v : r.found)
-      list.push_back({{"kind", v.kind},
-                      {"bore", v.elements.at(0)},
-                      {"against", v.elements.size() > 1 ? v.elements[1] : ""},
-                      {"interferes", v.distance <= 0},
-                      {"distance", v.distance},
-                      {"clearance", v.margin},
-                      {"where", {v.where.x(), v.where.y(), v.where.z()}}});
-    std::cout << out.dump(2) << "\n";
-    return 0;
-  }
-  std::cout << r.bores << " bores against ";
-  for (std::size_t i = 0; i < r.against.size(); ++i) std::cout << (i ? ", " : "") << r.against[i];
-  std::cout << (r.against.empty() ? "each other" : " and each other") << ": " << r.crossing << " interfering, "
-            << r.found.size() - std::size_t(r.crossing) << " closer than their clearance\n";
-  if (r.found.empty()) return 0;
-  std::cout << "\n" << std::left << std::setw(13) << "kind" << std::setw(10) << "bore" << std::setw(18) << "against"
-            << std::right << std::setw(12) << "distance" << std::setw(11) << "clearance" << "  where\n";
-  for (const auto& v : r.found) {
-    std::cout << std::left << std::setw(13) << v.kind << std::setw(10) << v.elements.at(0) << std::setw(18)
-              << (v.elements.size() > 1 ? v.elements[1] : "") << std::right << std::fixed << std::setprecision(4)
-              << std::setw(12) << v.distance << std::setw(11) << v.margin << "  (" << std::setprecision(3)
-              << v.where.x() << ", " << v.where.y() << ", " << v.where.z() << ")"
-              << (v.distance <= 0 ? "  INTERFERES" : "") << "\n";
-    std::cout.unsetf(std::ios::fixed);
-  }
+  if (json) run::write_layout_interference_json(std::cout, r, mold_path, layout_path);
+  else run::write_layout_interference_text(std::cout, r);
   return 0;
 }
 
@@ -140,46 +106,11 @@ Command add_interfere_command(CLI::App& app) {
               file.commit();
             }
             const auto groups = mesh::group_by_face(report, pa, pb);
-            auto point = [](const geometry::Vec3& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); };
             if (o->json) {
-              nlohmann::json j;
-              j["a"] = o->a, j["b"] = o->b, j["translate"] = o->translate;
-              j["touch_tolerance"] = tolerance;
-              j["interferes"] = report.interferes;
-              j["distance"] = report.distance;
-              j["pair_count"] = report.pairs.size();
-              j["penetrating_pairs"] = report.penetrating;
-              j["solids_of_a_inside_b"] = report.solids_of_a_inside_b;
-              j["solids_of_b_inside_a"] = report.solids_of_b_inside_a;
-              j["pairs"] = nlohmann::json::array();
-              for (const auto& p : report.pairs)
-                j["pairs"].push_back({{"a", p.a}, {"b", p.b}, {"solid_a", pa.solid_of[std::size_t(p.a)]},
-                                      {"face_a", pa.face_of[std::size_t(p.a)]}, {"solid_b", pb.solid_of[std::size_t(p.b)]},
-                                      {"face_b", pb.face_of[std::size_t(p.b)]}, {"penetrating", p.penetrating},
-                                      {"coplanar", p.x.coplanar}, {"segment", {point(p.x.p), point(p.x.q)}}});
-              j["groups"] = nlohmann::json::array();
-              for (const auto& g : groups)
-                j["groups"].push_back({{"solid_a", g.solid_a}, {"face_a", g.face_a}, {"solid_b", g.solid_b},
-                                       {"face_b", g.face_b}, {"pairs", g.pairs}, {"penetrating", g.penetrating}});
-              std::cout << j.dump(1) << '\n';
+              mesh::write_interference_json(std::cout, {o->a, o->b, o->translate, tolerance}, report, pa, pb, groups);
               return 0;
             }
-            std::printf("A: %s (%zu triangles, %d solid(s), %d faces)\nB: %s (%zu triangles, %d solid(s), %d faces)\n",
-                        o->a.c_str(), a.triangles.size(), pa.solids, pa.faces(), o->b.c_str(), b.triangles.size(),
-                        pb.solids, pb.faces());
-            std::printf("verdict: %s\n", report.interferes ? "INTERFERENCE" : report.pairs.empty() ? "apart" : "contact only");
-            std::printf("intersecting triangle pairs: %zu (beyond the touch tolerance %.3g: %zu)\n", report.pairs.size(),
-                        tolerance, report.penetrating);
-            for (int s : report.solids_of_a_inside_b) std::printf("solid %d of A lies inside B\n", s);
-            for (int s : report.solids_of_b_inside_a) std::printf("solid %d of B lies inside A\n", s);
-            if (report.pairs.empty() && !report.interferes) std::printf("distance: %.17g\n", report.distance);
-            if (!groups.empty()) std::printf("pairs per face (solid.face of A x solid.face of B: pairs, interfering):\n");
-            for (const auto& g : groups)
-              std::printf("  A %d.%d x B %d.%d: %d, %d\n", g.solid_a, g.face_a, g.solid_b, g.face_b, g.pairs, g.penetrating);
-            if (!report.pairs.empty()) std::printf("pairs (triangle of A, triangle of B, interfering, segment):\n");
-            for (const auto& p : report.pairs)
-              std::printf("  %d %d %d  %.9g %.9g %.9g  %.9g %.9g %.9g\n", p.a, p.b, int(p.penetrating), p.x.p.x(), p.x.p.y(),
-                          p.x.p.z(), p.x.q.x(), p.x.q.y(), p.x.q.z());
+            mesh::write_interference_text(std::cout, {o->a, o->b, o->translate, tolerance}, a, b, report, pa, pb, groups);
             if (!o->out.empty()) std::printf("wrote %s\n", o->out.c_str());
             return 0;
           }};

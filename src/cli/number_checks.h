@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace mtcs::cli {
 
@@ -37,6 +38,33 @@ inline CLI::Validator positive_number() {
         return {};
       },
       "> 0");
+}
+
+// `n` finite numbers separated by commas ("x,y,z"), in `into`; each that is not a number is
+// refused as "OPTION: 'x' is not a finite number (expected x,y,z)".
+inline CLI::Option* add_numbers(CLI::App* app, const std::string& name, std::vector<double>& into, int n,
+                                const std::string& form, const std::string& help) {
+  const CLI::Validator finite(
+      [form](std::string& text) -> std::string {
+        double v = 0;
+        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
+          return "'" + text + "' is not a finite number (expected " + form + ")";
+        return {};
+      },
+      form);
+  return app->add_option(name, into, help)->delimiter(',')->expected(n)->type_name(form)->check(finite);
+}
+
+// The numbers as the user would write them back: shortest exact form, comma-separated.
+inline std::string join_numbers(const std::vector<double>& v) {
+  std::string out;
+  for (const double x : v) {
+    char buf[32];
+    const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
+    out += (out.empty() ? "" : ",") + std::string(buf, end);
+  }
+  return out;
 }
 
 }  // namespace mtcs::cli

@@ -25,13 +25,13 @@
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/opt/benchmark_problems.h"
-#include "mtcs/opt/sms_emoa.h"
 #include "mtcs/store/run_store.h"
 #include "mtcs/run/polish.h"
 #include "mtcs/run/run_outputs.h"
 #include "mtcs/run/run_record.h"
 #include "mtcs/run/session.h"
 #include "mtcs/run/stored_run.h"
+#include "mtcs/run/test_problem_run.h"
 #include "option_error.h"
 #include "output_folder.h"
 #include "number_checks.h"
@@ -63,37 +63,17 @@ int run_test_problem(const Options& o) {
   } catch (const std::invalid_argument& e) {
     throw option_error("--problem", e.what());
   }
-  opt::SmsConfig c;
-  c.seed = o.seed.value_or(1);
-  c.evaluations = o.evaluations.value_or(20000);
-  c.ref = o.ref.empty() ? std::vector<double>(std::size_t(opt::objective_count(o.problem)), 1.1) : o.ref;
-  if (int(c.ref.size()) != opt::objective_count(o.problem))
+  const std::vector<double> ref = o.ref.empty() ? run::default_test_reference(o.problem) : o.ref;
+  if (ref.size() != run::default_test_reference(o.problem).size())
     throw option_error("--ref", "needs " + std::to_string(opt::objective_count(o.problem)) + " values");
-  std::optional<store::RunStore> db;
-  if (!o.out.empty() && o.out != "mtcs-run") {
-    make_output_folder(o.out);
-    db = store::RunStore::create((fs::path(o.out) / "run.sqlite").string(),
-                                 {{"problem", o.problem}, {"algorithm", "sms-emoa"}, {"seed", std::to_string(c.seed)},
-                                  {"program", "mtcs 0.1.0"}});
-  }
-  const opt::SmsEmoa sms(*problem, c);
-  const auto t0 = std::chrono::steady_clock::now();
-  const opt::Generation last = opt::run(sms, nullptr, [&](const opt::Generation& g) {
-    if (db && g.index % c.mu == 0) db->save(g, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  });
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const auto front = opt::SmsEmoa::front(last);
-  nlohmann::ordered_json j;
-  j["problem"] = o.problem;
-  j["algorithm"] = "sms-emoa";
-  j["seed"] = c.seed;
-  j["evaluations"] = last.evaluations;
-  j["hypervolume"] = opt::hypervolume(front, c.ref);
-  j["reference_point"] = c.ref;
-  j["front_size"] = front.size();
-  j["seconds"] = seconds;
-  if (o.json) std::cout << j.dump() << "\n";
-  else std::cout << j.dump(2) << "\n";
+  std::string store;
+  if (!o.out.empty() && o.out != "mtcs-run") make_output_folder(o.out), store = (fs::path(o.out) / "run.sqlite").string();
+  const run::TestProblemRun r =
+      run::run_test_problem(*problem, o.problem, o.seed.value_or(1), o.evaluations.value_or(20000), ref, store);
+  const nlohmann::ordered_json j{{"problem", r.problem},         {"algorithm", "sms-emoa"},  {"seed", r.seed},
+                                 {"evaluations", r.evaluations}, {"hypervolume", r.hypervolume},
+                                 {"reference_point", r.ref},     {"front_size", r.front_size}, {"seconds", r.seconds}};
+  std::cout << (o.json ? j.dump() : j.dump(2)) << "\n";
   return 0;
 }
 

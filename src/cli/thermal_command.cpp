@@ -3,13 +3,12 @@
 
 #include <CLI/CLI.hpp>
 #include <filesystem>
-#include <iomanip>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 
 #include "mtcs/cli/commands.h"
 #include "mtcs/eval/cavity_temperature.h"
+#include "mtcs/eval/cavity_temperature_report.h"
 #include "mtcs/io/atomic_file.h"
 #include "mtcs/io/points_csv.h"
 #include "mtcs/mold/decoder.h"
@@ -28,18 +27,6 @@ struct Options {
 };
 
 std::string extension(const std::string& path) { return std::filesystem::path(path).extension().string(); }
-
-void print_text(const eval::CavityTemperature& r, std::size_t samples) {
-  const auto& s = r.summary;
-  std::cout << std::fixed << std::setprecision(3) << "cavity temperature (tier " << r.tier << ", " << samples
-            << " samples, area-weighted)\n"
-            << "  mean " << s.mean << " degC, std " << s.std << " K, max " << s.max << " degC at (" << std::setprecision(1)
-            << r.hottest.x() << ", " << r.hottest.y() << ", " << r.hottest.z() << ") mm\n"
-            << std::setprecision(3) << "heat balance\n  in " << r.balance.in << " W = bores " << r.balance.to_channels
-            << " W + outer faces " << r.balance.to_faces << " W (residual " << std::scientific << std::setprecision(1)
-            << r.balance.residual() << " W)\n"
-            << std::fixed << std::setprecision(3) << "seconds " << r.seconds << "\n";
-}
 
 }  // namespace
 
@@ -87,9 +74,7 @@ Command add_thermal_command(CLI::App& app) {
 
             if (!opt->samples.empty()) {
               io::AtomicFile file(opt->out);
-              file.stream() << "x,y,z,T\n" << std::setprecision(17);
-              for (std::size_t i = 0; i < points.size(); ++i)
-                file.stream() << points[i].x() << ',' << points[i].y() << ',' << points[i].z() << ',' << r.at_points[i] << '\n';
+              eval::write_point_temperatures_csv(file.stream(), points, r.at_points);
               file.commit();
             } else if (!opt->out.empty()) {
               const bool png = ext == ".png";
@@ -103,21 +88,8 @@ Command add_thermal_command(CLI::App& app) {
                 if (render_plot("plot_surface_field.py", {field_path, opt->out, title}, std::cerr)) std::filesystem::remove(field_path);
               }
             }
-            if (opt->json) {
-              nlohmann::ordered_json j{{"tier", r.tier},
-                                       {"mean", r.summary.mean},
-                                       {"std", r.summary.std},
-                                       {"max", r.summary.max},
-                                       {"hottest", {r.hottest.x(), r.hottest.y(), r.hottest.z()}},
-                                       {"samples", r.at_samples.size()},
-                                       {"heat_in", r.balance.in},
-                                       {"heat_to_bores", r.balance.to_channels},
-                                       {"heat_to_faces", r.balance.to_faces},
-                                       {"seconds", r.seconds}};
-              std::cout << j.dump(2) << "\n";
-            } else {
-              print_text(r, r.at_samples.size());
-            }
+            if (opt->json) eval::write_cavity_temperature_json(std::cout, r);
+            else eval::write_cavity_temperature_text(std::cout, r);
             return 0;
           }};
 }

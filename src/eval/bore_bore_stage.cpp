@@ -42,7 +42,7 @@ class BoreBoreStage final : public Stage {
         const auto d = geometry::distance(a.hole, b.hole, request);
         if (d.bounded || d.distance >= margin_) continue;
         const bool ordered = items[i].index < items[j].index;
-        add_clearance(out, "bore_bore", ordered ? std::vector{a.name(), b.name()} : std::vector{b.name(), a.name()},
+        add_clearance(out, ViolationKind::BoreBore, ordered ? std::vector{a.name(), b.name()} : std::vector{b.name(), a.name()},
                       d.distance, margin_, ordered ? d.witness_a : d.witness_b, ordered ? d.witness_b : d.witness_a);
       }
     }
@@ -56,11 +56,11 @@ class BoreBoreStage final : public Stage {
 
 std::unique_ptr<Stage> make_bore_bore_stage(const mold::Scene& scene) { return std::make_unique<BoreBoreStage>(scene); }
 
-void add_clearance(Evaluation& out, std::string kind, std::vector<std::string> elements, double distance,
+void add_clearance(Evaluation& out, ViolationKind kind, std::vector<std::string> elements, double distance,
                    double margin, const geometry::Vec3& where) {
   if (!(distance < margin) || margin <= 0) return;
   Violation v;
-  v.kind = std::move(kind);
+  v.kind = kind;
   v.elements = std::move(elements);
   v.distance = distance;
   v.margin = margin;
@@ -69,10 +69,10 @@ void add_clearance(Evaluation& out, std::string kind, std::vector<std::string> e
   out.violations.push_back(std::move(v));
 }
 
-void add_clearance(Evaluation& out, std::string kind, std::vector<std::string> elements, double distance,
+void add_clearance(Evaluation& out, ViolationKind kind, std::vector<std::string> elements, double distance,
                    double margin, const geometry::Vec3& on_first, const geometry::Vec3& on_second) {
   const std::size_t before = out.violations.size();
-  add_clearance(out, std::move(kind), std::move(elements), distance, margin, (on_first + on_second) / 2);
+  add_clearance(out, kind, std::move(elements), distance, margin, (on_first + on_second) / 2);
   if (out.violations.size() > before) out.violations.back().closest = std::pair{on_first, on_second};
 }
 

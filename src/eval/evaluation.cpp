@@ -4,13 +4,28 @@
 
 namespace mtcs::eval {
 
-Fitness fitness(const Evaluation& e, const mold::MoldSpec& spec, const std::vector<double>& weights) {
+const char* to_string(ViolationKind kind) {
+  switch (kind) {
+    case ViolationKind::BoreBore: return "bore_bore";
+    case ViolationKind::BoreKeepout: return "bore_keepout";
+    case ViolationKind::BoreCavity: return "bore_cavity";
+    case ViolationKind::BoreSurface: return "bore_surface";
+    case ViolationKind::DepthRatio: return "depth_ratio";
+    case ViolationKind::EntryFace: return "entry_face";
+    case ViolationKind::EntryAngle: return "entry_angle";
+    case ViolationKind::InletFace: return "inlet_face";
+    case ViolationKind::OutletFace: return "outlet_face";
+  }
+  return "unknown";
+}
+
+double scalar_fitness(const Evaluation& e, const mold::MoldSpec& spec, const std::vector<double>& weights) {
   const auto& o = spec.objectives;
   double value = 0;
   for (std::size_t k = 0; k < e.objectives.size(); ++k) {
     value += (k < weights.size() ? weights[k] : 1.0) * e.objectives[k] / o.scale(o.use[k]);
   }
-  return {e.feasible(), e.violation, value + penalty_term(e.feasible(), e.violation, spec.penalty)};
+  return value + penalty_term(e.feasible(), e.violation, spec.penalty);
 }
 
 double penalty_term(bool feasible, double violation, const mold::Penalty& penalty) {
@@ -21,14 +36,6 @@ double penalty_term(bool feasible, double violation, const mold::Penalty& penalt
     case mold::PenaltyVariant::ConstrainedDomination: return 0;
   }
   return 0;
-}
-
-bool better(const Fitness& a, const Fitness& b, mold::PenaltyVariant variant) {
-  if (variant == mold::PenaltyVariant::ConstrainedDomination) {
-    if (a.feasible != b.feasible) return a.feasible;
-    if (!a.feasible && a.violation != b.violation) return a.violation < b.violation;
-  }
-  return a.value < b.value;
 }
 
 }  // namespace mtcs::eval

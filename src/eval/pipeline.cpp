@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "mtcs/eval/thermal_model.h"
-#include "mtcs/eval/thermal_tiers.h"
+#include "thermal_tiers.h"
 #include "mtcs/mold/decoder.h"
 #include "stages.h"
 

@@ -21,10 +21,10 @@ std::unique_ptr<Stage> make_surface_stage(const mold::Scene& scene);
 std::unique_ptr<Stage> make_drilling_stage(const mold::Scene& scene);
 
 // A clearance shortfall as a violation; nothing when the distance meets the margin.
-void add_clearance(Evaluation& out, std::string kind, std::vector<std::string> elements, double distance,
+void add_clearance(Evaluation& out, ViolationKind kind, std::vector<std::string> elements, double distance,
                    double margin, const geometry::Vec3& where);
 // The same with the closest points of the two elements (`where` is their midpoint).
-void add_clearance(Evaluation& out, std::string kind, std::vector<std::string> elements, double distance,
+void add_clearance(Evaluation& out, ViolationKind kind, std::vector<std::string> elements, double distance,
                    double margin, const geometry::Vec3& on_first, const geometry::Vec3& on_second);
 
 }  // namespace mtcs::eval

@@ -22,7 +22,7 @@ class SurfaceStage final : public Stage {
       const double cosine = std::max(0.1, std::cos(b.entry_angle_deg * 3.14159265358979323846 / 180));
       const double skip = (margin_ + b.hole.radius) / cosine;
       const double d = scene_.surface_clearance(b.hole, skip, margin_, b.through ? skip : 0.0);
-      add_clearance(out, "bore_surface", {b.name(), "block"}, d, margin_, b.hole.p1);
+      add_clearance(out, ViolationKind::BoreSurface, {b.name(), "block"}, d, margin_, b.hole.p1);
     }
   }
 
@@ -40,17 +40,17 @@ class DrillingStage final : public Stage {
     for (const mold::Bore& b : layout.bores) {
       const double ratio = b.drilled_length / b.diameter;
       if (ratio > drill_.max_depth_ratio)
-        out.violations.push_back({"depth_ratio", {b.name()}, ratio, drill_.max_depth_ratio,
+        out.violations.push_back({ViolationKind::DepthRatio, {b.name()}, ratio, drill_.max_depth_ratio,
                                   (ratio - drill_.max_depth_ratio) / drill_.max_depth_ratio, b.hole.p1, {}});
       if (!b.entry_allowed)
-        out.violations.push_back({"entry_face", {b.name(), mold::to_string(b.entry_face)}, 0, 0, 1, b.hole.p0, {}});
+        out.violations.push_back({ViolationKind::EntryFace, {b.name(), mold::to_string(b.entry_face)}, 0, 0, 1, b.hole.p0, {}});
       if (b.entry_angle_deg > drill_.max_angle_deg + 1e-9)
-        out.violations.push_back({"entry_angle", {b.name()}, b.entry_angle_deg, drill_.max_angle_deg,
+        out.violations.push_back({ViolationKind::EntryAngle, {b.name()}, b.entry_angle_deg, drill_.max_angle_deg,
                                   (b.entry_angle_deg - drill_.max_angle_deg) / std::max(1.0, drill_.max_angle_deg), b.hole.p0, {}});
     }
     for (const mold::PortProblem& p : layout.ports) {
       const std::string c = "c" + std::to_string(p.circuit);
-      out.violations.push_back({p.inlet ? "inlet_face" : "outlet_face", {c}, p.off_face, 0, p.off_face, {}, {}});
+      out.violations.push_back({p.inlet ? ViolationKind::InletFace : ViolationKind::OutletFace, {c}, p.off_face, 0, p.off_face, geometry::Vec3::Zero(), {}});
     }
   }
 

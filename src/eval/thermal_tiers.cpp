@@ -1,4 +1,4 @@
-#include "mtcs/eval/thermal_tiers.h"
+#include "thermal_tiers.h"
 
 #include <memory>
 

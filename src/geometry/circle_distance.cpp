@@ -1,7 +1,7 @@
 // Circle-line, circle-circle and circle-disk distances by minimisation over the circle's angle
-// (method in include/mtcs/geometry/circle_distance.h).
+// (method in circle_distance.h).
 
-#include "mtcs/geometry/circle_distance.h"
+#include "circle_distance.h"
 
 #include "detail/circle_minimize.h"
 #include "detail/cylinder_frame.h"

@@ -1,6 +1,6 @@
 #include "mtcs/opt/evolution_strategy.h"
 
-#include "mtcs/opt/run.h"
+#include "run_to_budget.h"
 
 #include <tbb/parallel_for.h>
 

@@ -1,6 +1,6 @@
 #include "mtcs/opt/sms_emoa.h"
 
-#include "mtcs/opt/run.h"
+#include "run_to_budget.h"
 
 #include <algorithm>
 #include <numeric>

@@ -1,4 +1,4 @@
-#include "mtcs/opt/test_functions.h"
+#include "test_functions.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -36,7 +36,7 @@ Json layout_json(const mold::Layout& layout) {
 Json violations_json(const std::vector<eval::Violation>& violations) {
   Json out = Json::array();
   for (const auto& v : violations) {
-    Json j{{"kind", v.kind}, {"elements", v.elements}, {"distance", v.distance}, {"margin", v.margin},
+    Json j{{"kind", eval::to_string(v.kind)}, {"elements", v.elements}, {"distance", v.distance}, {"margin", v.margin},
            {"amount", v.amount}, {"where", vec_json(v.where)}};
     if (v.closest) j["closest"] = {vec_json(v.closest->first), vec_json(v.closest->second)};
     out.push_back(std::move(j));

@@ -181,12 +181,11 @@ opt::Genotype MoldProblem::recombine(const opt::Genotype& a, const opt::Genotype
 
 opt::Score MoldProblem::evaluate(const opt::Genotype& g) const {
   const eval::Evaluation e = pipeline_.evaluate(genome(g));
-  const eval::Fitness f = eval::fitness(e, ranking_, weights_);
   // "kind element element distance/margin; ..." for the run store.
   std::string detail;
   for (const auto& v : e.violations) {
     if (!detail.empty()) detail += "; ";
-    detail += v.kind;
+    detail += eval::to_string(v.kind);
     for (const auto& el : v.elements) detail += ' ' + el;
     char num[64];
     std::snprintf(num, sizeof num, " %.6g/%.6g", v.distance, v.margin);
@@ -194,7 +193,7 @@ opt::Score MoldProblem::evaluate(const opt::Genotype& g) const {
   }
   ++evaluated_;
   if (e.feasible()) ++feasible_;
-  return {e.objectives, e.violation, e.feasible(), f.value, std::move(detail)};
+  return {e.objectives, e.violation, e.feasible(), eval::scalar_fitness(e, ranking_, weights_), std::move(detail)};
 }
 
 opt::Score MoldProblem::ranking(const opt::Score& s) const {
@@ -209,7 +208,8 @@ opt::Score MoldProblem::ranking(const opt::Score& s) const {
 }
 
 bool MoldProblem::better(const opt::Score& a, const opt::Score& b) const {
-  return eval::better({a.feasible, a.violation, a.value}, {b.feasible, b.violation, b.value}, ranking_.penalty.variant);
+  if (ranking_.penalty.variant == mold::PenaltyVariant::ConstrainedDomination) return opt::feasible_first(a, b);
+  return a.value < b.value;
 }
 
 }  // namespace mtcs::run

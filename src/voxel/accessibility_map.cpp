@@ -13,7 +13,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "mtcs/voxel/check_box.h"
+#include "check_box.h"
 #include "ica.h"
 
 namespace mtcs::voxel {

@@ -1,7 +1,7 @@
 // CheckBox in double with a running error bound, rerun in binary128 near ties
-// (include/mtcs/voxel/check_box.h states the method and the margin).
+// (check_box.h states the method and the margin).
 
-#include "mtcs/voxel/check_box.h"
+#include "check_box.h"
 
 #include <quadmath.h>
 

@@ -10,6 +10,7 @@
 #include <random>
 
 #include "mtcs/eval/pipeline.h"
+#include "mtcs/opt/problem.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/mesh/bvh.h"
@@ -40,7 +41,7 @@ std::string plate_spec(const std::string& extra = "") {
 // One straight through-bore along y at (x, z).
 mold::Circuit straight(double x, double z, double diameter = 8) { return {{{x, 0, z}, {x, 200, z}}, diameter}; }
 
-const eval::Violation* find(const eval::Evaluation& e, const std::string& kind) {
+const eval::Violation* find(const eval::Evaluation& e, eval::ViolationKind kind) {
   for (const auto& v : e.violations)
     if (v.kind == kind) return &v;
   return nullptr;
@@ -53,7 +54,7 @@ TEST_CASE("pipeline: two parallel bores at a known gap violate the margin by the
   const eval::Pipeline pipeline(scene);
   for (const double gap : {0.5, 2.0, 3.75}) {
     const auto e = pipeline.evaluate(mold::Genome{{straight(100, 80), straight(108 + gap, 80)}});
-    const auto* v = find(e, "bore_bore");
+    const auto* v = find(e, eval::ViolationKind::BoreBore);
     REQUIRE(v);
     CHECK(v->distance == Approx(gap).margin(1e-12));
     CHECK(v->margin == 4);
@@ -61,7 +62,7 @@ TEST_CASE("pipeline: two parallel bores at a known gap violate the margin by the
     CHECK(v->elements == std::vector<std::string>{"c0.b0", "c1.b0"});
   }
   // At the margin or beyond: no violation.
-  CHECK_FALSE(find(pipeline.evaluate(mold::Genome{{straight(100, 80), straight(112, 80)}}), "bore_bore"));
+  CHECK_FALSE(find(pipeline.evaluate(mold::Genome{{straight(100, 80), straight(112, 80)}}), eval::ViolationKind::BoreBore));
 }
 
 TEST_CASE("pipeline: a bore at a known depth under the plate has a known wall distance", "[eval]") {
@@ -70,7 +71,7 @@ TEST_CASE("pipeline: a bore at a known depth under the plate has a known wall di
   const eval::Pipeline pipeline(scene);
   // Axis 17 mm under the underside, radius 4: 13 mm of steel.
   const auto e = pipeline.evaluate(mold::Genome{{straight(150, 88)}});
-  const auto* v = find(e, "bore_cavity");
+  const auto* v = find(e, eval::ViolationKind::BoreCavity);
   REQUIRE(v);
   CHECK(v->distance == Approx(13).margin(1e-12));
   CHECK(v->margin == 20);
@@ -89,7 +90,7 @@ TEST_CASE("pipeline: designed junctions are not collisions, other crossings are"
   const auto e = pipeline.evaluate(crossing);
   int with_new = 0;
   for (const auto& v : e.violations)
-    if (v.kind == "bore_bore" && (v.elements[0].rfind("c3.", 0) == 0 || v.elements[1].rfind("c3.", 0) == 0)) ++with_new;
+    if (v.kind == eval::ViolationKind::BoreBore && (v.elements[0].rfind("c3.", 0) == 0 || v.elements[1].rfind("c3.", 0) == 0)) ++with_new;
   CHECK(with_new >= 2);
 }
 
@@ -180,19 +181,23 @@ TEST_CASE("penalty variants order layouts as documented", "[eval]") {
   eval::Evaluation feasible, infeasible;
   feasible.objectives = {10, 10, 10};
   infeasible.objectives = {1, 1, 1};
-  infeasible.violations.push_back({"bore_bore", {"a", "b"}, 2, 4, 0.5, {}, {}});
+  infeasible.violations.push_back({eval::ViolationKind::BoreBore, {"a", "b"}, 2, 4, 0.5, geometry::Vec3::Zero(), {}});
   infeasible.violation = 0.25;
   using mold::PenaltyVariant;
+  // The order an optimiser ranks by: opt::Score with eval's scalar fitness as its value.
+  auto score = [&](const eval::Evaluation& e) {
+    return opt::Score{e.objectives, e.violation, e.feasible(), eval::scalar_fitness(e, spec, {}), {}};
+  };
   spec.penalty.variant = PenaltyVariant::ConstrainedDomination;
-  CHECK(eval::better(eval::fitness(feasible, spec, {}), eval::fitness(infeasible, spec, {}), spec.penalty.variant));
+  CHECK(score(feasible).value > score(infeasible).value);
+  CHECK(opt::feasible_first(score(feasible), score(infeasible)));
   spec.penalty.variant = PenaltyVariant::StaticLinear;
   spec.penalty.weight = 1;
-  const auto lin = eval::fitness(infeasible, spec, {});
-  CHECK(lin.value == Approx(1.0 / 5 + 1.0 / 20 + 1.0 / 1000 + 0.25));
+  CHECK(eval::scalar_fitness(infeasible, spec, {}) == Approx(1.0 / 5 + 1.0 / 20 + 1.0 / 1000 + 0.25));
   spec.penalty.variant = PenaltyVariant::StaticQuadratic;
-  CHECK(eval::fitness(infeasible, spec, {}).value == Approx(1.0 / 5 + 1.0 / 20 + 1.0 / 1000 + 0.0625));
+  CHECK(eval::scalar_fitness(infeasible, spec, {}) == Approx(1.0 / 5 + 1.0 / 20 + 1.0 / 1000 + 0.0625));
   spec.penalty.variant = PenaltyVariant::Death;
-  CHECK(std::isinf(eval::fitness(infeasible, spec, {}).value));
+  CHECK(std::isinf(eval::scalar_fitness(infeasible, spec, {})));
 }
 
 TEST_CASE("pipeline: a mesh cavity gives the exact solid-cylinder clearance and its place", "[eval]") {
@@ -210,7 +215,7 @@ TEST_CASE("pipeline: a mesh cavity gives the exact solid-cylinder clearance and 
   REQUIRE(std::find(names.begin(), names.end(), "bore_cavity_mesh") != names.end());
   // Under the plate: 17 - 4 = 13 of steel, the place between the bore's top and the underside.
   auto e = pipeline.evaluate(mold::Genome{{straight(150, 88)}});
-  auto* v = find(e, "bore_cavity");
+  auto* v = find(e, eval::ViolationKind::BoreCavity);
   REQUIRE(v);
   CHECK(v->distance == Approx(13).epsilon(1e-14));
   CHECK(v->where.x() == Approx(150).margin(1e-9));
@@ -219,13 +224,13 @@ TEST_CASE("pipeline: a mesh cavity gives the exact solid-cylinder clearance and 
   CHECK(v->where.z() == Approx(92 + 6.5).margin(1e-9));
   // Beside the plate's long edge x = 250, z = 105: axis 12 out and 12 down, 12 sqrt 2 - 4.
   e = pipeline.evaluate(mold::Genome{{straight(262, 93)}});
-  v = find(e, "bore_cavity");
+  v = find(e, eval::ViolationKind::BoreCavity);
   REQUIRE(v);
   CHECK(v->distance == Approx(12 * std::sqrt(2.0) - 4).epsilon(1e-14));
   // Through the plate: 0; far below it: no violation (the clearance bound ends the search).
   e = pipeline.evaluate(mold::Genome{{straight(150, 106.5)}});
-  v = find(e, "bore_cavity");
+  v = find(e, eval::ViolationKind::BoreCavity);
   REQUIRE(v);
   CHECK(v->distance == 0);
-  CHECK_FALSE(find(pipeline.evaluate(mold::Genome{{straight(150, 40)}}), "bore_cavity"));
+  CHECK_FALSE(find(pipeline.evaluate(mold::Genome{{straight(150, 40)}}), eval::ViolationKind::BoreCavity));
 }

@@ -203,7 +203,7 @@ TEST_CASE("through-bores: the reference layout is feasible", "[eval][thermal]") 
   const mold::Scene scene(mold::load_mold_spec(kBlockSpec));
   const eval::Pipeline pipeline(scene);
   const auto e = pipeline.evaluate(mold::load_layout(kBlockLayout, scene.spec()));
-  for (const auto& v : e.violations) FAIL_CHECK(v.kind << " " << v.elements[0] << " " << v.distance);
+  for (const auto& v : e.violations) FAIL_CHECK(eval::to_string(v.kind) << " " << v.elements[0] << " " << v.distance);
   CHECK(e.feasible());
 }
 
@@ -219,7 +219,7 @@ TEST_CASE("through-bores: a bore ending just under a face elsewhere is still fla
   const eval::Pipeline pipeline(scene);
   auto surface = [&](const mold::Genome& g) {
     int n = 0;
-    for (const auto& v : pipeline.evaluate(g).violations) n += v.kind == "bore_surface";
+    for (const auto& v : pipeline.evaluate(g).violations) n += v.kind == eval::ViolationKind::BoreSurface;
     return n;
   };
   // Open at both ports: legal.
@@ -299,7 +299,7 @@ TEST_CASE("patch cavity: bore_cavity is the clearance to the rectangle, not to i
   const eval::Pipeline pipeline(scene);
   auto cavity = [&](double y, double z) -> std::optional<eval::Violation> {
     for (const auto& v : pipeline.evaluate(mold::Genome{{{{{0, y, z}, {120, y, z}}, 6}}}).violations)
-      if (v.kind == "bore_cavity") return v;
+      if (v.kind == eval::ViolationKind::BoreCavity) return v;
     return std::nullopt;
   };
   // Under the patch, 2 mm of steel: violated by the exact shortfall.

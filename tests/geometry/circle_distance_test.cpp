@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "mtcs/geometry/circle_distance.h"
+#include "geometry/circle_distance.h"
 
 using namespace mtcs::geometry;
 

@@ -5,7 +5,7 @@
 #include <tbb/global_control.h>
 
 #include "mtcs/opt/evolution_strategy.h"
-#include "mtcs/opt/test_functions.h"
+#include "opt/test_functions.h"
 
 using namespace mtcs::opt;
 

@@ -6,7 +6,7 @@
 #include <random>
 
 #include "mtcs/voxel/accessibility_map.h"
-#include "mtcs/voxel/check_box.h"
+#include "voxel/check_box.h"
 #include "voxel/case_files.h"
 
 using namespace mtcs;

@@ -6,7 +6,7 @@
 #include <random>
 
 #include "mtcs/geometry/cylinder_box_distance.h"
-#include "mtcs/voxel/check_box.h"
+#include "voxel/check_box.h"
 
 using namespace mtcs;
 using namespace mtcs::voxel;

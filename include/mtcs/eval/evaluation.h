@@ -11,8 +11,25 @@
 
 namespace mtcs::eval {
 
+// What a violation is about. The printed names (to_string) are the CLI's and the run store's words.
+enum class ViolationKind {
+  BoreBore,     // two bores closer than clearances.bore_bore
+  BoreKeepout,  // a bore too close to a keep-out
+  BoreCavity,   // a bore too close to the cavity
+  BoreSurface,  // a bore too close to the block's outer surface
+  DepthRatio,   // a hole deeper than drilling.max_depth_ratio diameters
+  EntryFace,    // drilled from a face not in drilling.allowed_faces
+  EntryAngle,   // drill axis too steep against its entry face
+  InletFace,    // an inlet away from its allowed faces
+  OutletFace,   // an outlet away from its allowed faces
+};
+
+// bore_bore, bore_keepout, bore_cavity, bore_surface, depth_ratio, entry_face, entry_angle,
+// inlet_face, outlet_face.
+const char* to_string(ViolationKind kind);
+
 struct Violation {
-  std::string kind;                   // bore_bore, bore_keepout, bore_cavity, bore_surface, depth_ratio, ...
+  ViolationKind kind = ViolationKind::BoreBore;
   std::vector<std::string> elements;  // bore names (c0.b3), keep-out names, "cavity", "block"
   double distance = 0;                // what was found (mm, or the ratio/angle for drilling limits)
   double margin = 0;                  // what is required
@@ -38,20 +55,12 @@ struct Evaluation {
 };
 
 // One number per layout for single-objective search: the scaled, weighted objectives plus the
-// penalty variant's term; under constrained domination, feasible layouts come first (compare
-// with `better`).
-struct Fitness {
-  bool feasible = true;
-  double violation = 0;
-  double value = 0;
-};
-
-Fitness fitness(const Evaluation& e, const mold::MoldSpec& spec, const std::vector<double>& weights);
+// penalty variant's term. The score the optimisers rank (feasibility, violation, this value) is
+// opt::Score, built by run::MoldProblem; under constrained domination feasible layouts come
+// first (opt::feasible_first).
+double scalar_fitness(const Evaluation& e, const mold::MoldSpec& spec, const std::vector<double>& weights);
 // The penalty variant's term, in scaled-objective units: weight x CV (static linear), weight x
 // CV^2 (static quadratic), infinity for an infeasible layout (death), 0 (constrained domination).
 double penalty_term(bool feasible, double violation, const mold::Penalty& penalty);
-// Strict weak ordering: constrained domination (feasible first, then less violation, then
-// value) for that variant; otherwise by value alone.
-bool better(const Fitness& a, const Fitness& b, mold::PenaltyVariant variant);
 
 }  // namespace mtcs::eval

@@ -20,6 +20,13 @@ struct Score {
   std::string detail;    // the problem's words for what is violated (stored, not compared)
 };
 
+// Constrained order of scalar scores: feasible first, then less violation, then smaller value.
+inline bool feasible_first(const Score& a, const Score& b) {
+  if (a.feasible != b.feasible) return a.feasible;
+  if (!a.feasible && a.violation != b.violation) return a.violation < b.violation;
+  return a.value < b.value;
+}
+
 class Problem {
  public:
   virtual ~Problem() = default;

@@ -2,6 +2,7 @@
 // `mtcs interfere MOLD.yaml --layout LAYOUT.yaml`: the bores of a layout against the part, every
 // keep-out and each other, through the evaluation pipeline's exact kernels.
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -22,5 +23,11 @@ struct LayoutInterference {
 // Every bore that crosses or comes closer than its clearance to the cavity, a keep-out or
 // another bore, with the distance and the place.
 LayoutInterference layout_interference(const eval::Pipeline& pipeline, const mold::Genome& genome);
+
+// As `mtcs interfere MOLD --layout` prints it: one JSON object {mold, layout, bores, against, pairs,
+// distance, violations[{kind, bore, against, interferes, distance, clearance, where}]}, or a table.
+void write_layout_interference_json(std::ostream& os, const LayoutInterference& r, const std::string& mold_path,
+                                    const std::string& layout_path);
+void write_layout_interference_text(std::ostream& os, const LayoutInterference& r);
 
 }  // namespace mtcs::run

@@ -4,6 +4,10 @@
 // (shared/notes/mtcs_literature.md 7.3), the score comes from the evaluation pipeline.
 //
 // Genotype layout: [K, then per circuit: diameter index, n, x0, y0, z0, ..., x(n-1), y, z].
+// Two forms of one layout, on purpose (docs/architecture.md, "One layout"): opt and the run store
+// carry the flat opt::Genotype; the operators, the decoder and layout files work on mold::Genome.
+// genome() and encode() are the one codec between them, called once on the way into and once
+// on the way out of each Problem method; nothing else converts.
 
 #include <atomic>
 #include <optional>

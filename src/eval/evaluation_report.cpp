@@ -1,0 +1,85 @@
+#include "mtcs/eval/evaluation_report.h"
+
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace mtcs::eval {
+namespace {
+
+// What a violation found against what its rule needs, with units: clearances and port offsets
+// in mm, the depth limit as a depth/diameter ratio, the entry angle in degrees.
+std::string found_and_needed(const Violation& v) {
+  std::ostringstream s;
+  s << std::setprecision(10);
+  using K = ViolationKind;
+  switch (v.kind) {
+    case K::DepthRatio:
+      s << "depth/diameter " << v.distance << ", at most " << v.margin;
+      break;
+    case K::EntryAngle:
+      s << "entry angle " << v.distance << " deg, at most " << v.margin << " deg";
+      break;
+    case K::EntryFace:
+      s << "drilled from a face that is not allowed";
+      break;
+    case K::InletFace:
+    case K::OutletFace:
+      s << v.distance << " mm from the nearest allowed face";
+      break;
+    case K::BoreBore:
+    case K::BoreKeepout:
+    case K::BoreCavity:
+    case K::BoreSurface:
+      s << "found " << v.distance << " mm, needs " << v.margin << " mm";
+      break;
+  }
+  return s.str();
+}
+
+}  // namespace
+
+void write_evaluation_json(std::ostream& out, const Evaluation& e, const Pipeline& pipeline) {
+  nlohmann::ordered_json j;
+  j["feasible"] = e.feasible();
+  j["objectives"] = nlohmann::ordered_json::object();
+  const auto names = pipeline.objective_names();
+  for (std::size_t k = 0; k < names.size(); ++k) j["objectives"][names[k]] = e.objectives[k];
+  j["violation"] = e.violation;
+  j["violations"] = nlohmann::ordered_json::array();
+  for (const auto& v : e.violations) {
+    j["violations"].push_back({{"kind", to_string(v.kind)},
+                               {"elements", v.elements},
+                               {"distance", v.distance},
+                               {"margin", v.margin},
+                               {"where", {v.where.x(), v.where.y(), v.where.z()}}});
+  }
+  j["stages"] = nlohmann::ordered_json::array();
+  for (const auto& s : e.stages) j["stages"].push_back({{"name", s.name}, {"seconds", s.seconds}});
+  out << j.dump(2) << "\n";
+}
+
+void write_evaluation_text(std::ostream& out, const Evaluation& e, const Pipeline& pipeline,
+                           const mold::Layout& layout) {
+  double dead = 0;
+  for (const auto& b : layout.bores) dead += b.dead_end;
+  out << "bores " << layout.bores.size() << ", plugs " << layout.plugs << " (dead ends " << dead
+      << " mm), designed junctions " << layout.junctions.size() << ", surface samples "
+      << pipeline.surface_samples() << "\n\nobjectives\n";
+  const auto names = pipeline.objective_names();
+  for (std::size_t k = 0; k < names.size(); ++k)
+    out << "  " << std::left << std::setw(16) << names[k] << std::setprecision(10) << e.objectives[k] << "\n";
+  out << "\n"
+      << (e.feasible() ? "feasible" : "infeasible") << ": " << e.violations.size()
+      << " violated constraint(s), total violation " << e.violation << "\n";
+  for (const auto& v : e.violations) {
+    out << "  " << std::setw(14) << to_string(v.kind) << " ";
+    for (const auto& el : v.elements) out << el << " ";
+    out << found_and_needed(v) << " at (" << v.where.x() << ", " << v.where.y() << ", " << v.where.z()
+        << ") mm\n";
+  }
+  out << "\nstages (microseconds)\n";
+  for (const auto& s : e.stages) out << "  " << std::setw(24) << s.name << s.seconds * 1e6 << "\n";
+}
+
+}  // namespace mtcs::eval
