@@ -20,3 +20,7 @@ echo
 echo "Results in $out/: best.layout.yaml (edit it and re-score with mtcs evaluate), bores.csv and"
 echo "bores.stl (open in a CAD viewer, e.g. with the part), summary.json, run.sqlite (every generation)."
 echo "Compare with the hand-made reference: ./build/mtcs evaluate molds/plate.yaml --layout molds/plate.layout.yaml"
+echo
+echo "== mtcs report: the run as one HTML page (3-D view, Pareto front, convergence) =="
+./build/mtcs report "$out" --out "$out/report.html"
+echo "Open $(pwd)/$out/report.html in a browser (it needs no network): drag to orbit, click a front point to load its layout."

@@ -10,7 +10,22 @@ PACKAGES=(
   libsqlite3-dev libtbb-dev libfcl-dev libccd-dev libbenchmark-dev libpagmo-dev
   python3 python3-matplotlib
   clang-14 libfuzzer-14-dev
+  nodejs npm chromium
 )
+
+# The report page's browser test: puppeteer-core (and three.js, which src/report/assets vendors),
+# pinned in web/package-lock.json, into web/node_modules; again only when the lock file changed.
+web_packages() {
+  local web
+  web="$(dirname "$0")/../web"
+  if cmp -s "$web/package-lock.json" "$web/node_modules/.mtcs-lock" 2>/dev/null; then return 0; fi
+  if ! command -v npm >/dev/null 2>&1; then
+    echo "setup: npm not found; installing Debian's npm"
+    ${SUDO:-} apt-get install -y -qq --no-install-recommends npm
+  fi
+  npm ci --prefix "$web" --no-audit --no-fund
+  cp "$web/package-lock.json" "$web/node_modules/.mtcs-lock"
+}
 
 missing=()
 for p in "${PACKAGES[@]}"; do
@@ -18,6 +33,7 @@ for p in "${PACKAGES[@]}"; do
 done
 if [ ${#missing[@]} -eq 0 ]; then
   echo "setup: all ${#PACKAGES[@]} packages present"
+  web_packages
   exit 0
 fi
 
@@ -36,4 +52,5 @@ fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+web_packages
 echo "setup: done"

@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
       mtcs::cli::add_evaluate_command(app),
       mtcs::cli::add_thermal_command(app),
       mtcs::cli::add_replay_command(app),
+      mtcs::cli::add_report_command(app),
+      mtcs::cli::add_export_command(app),
       mtcs::cli::add_compare_penalties_command(app),
       mtcs::cli::add_distance_command(app),
       mtcs::cli::add_clearance_command(app),

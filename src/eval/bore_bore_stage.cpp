@@ -43,7 +43,7 @@ class BoreBoreStage final : public Stage {
         if (d.bounded || d.distance >= margin_) continue;
         const bool ordered = items[i].index < items[j].index;
         add_clearance(out, ViolationKind::BoreBore, ordered ? std::vector{a.name(), b.name()} : std::vector{b.name(), a.name()},
-                      d.distance, margin_, (d.witness_a + d.witness_b) / 2);
+                      d.distance, margin_, ordered ? d.witness_a : d.witness_b, ordered ? d.witness_b : d.witness_a);
       }
     }
   }
@@ -67,6 +67,13 @@ void add_clearance(Evaluation& out, ViolationKind kind, std::vector<std::string>
   v.amount = (margin - distance) / margin;
   v.where = where;
   out.violations.push_back(std::move(v));
+}
+
+void add_clearance(Evaluation& out, ViolationKind kind, std::vector<std::string> elements, double distance,
+                   double margin, const geometry::Vec3& on_first, const geometry::Vec3& on_second) {
+  const std::size_t before = out.violations.size();
+  add_clearance(out, kind, std::move(elements), distance, margin, (on_first + on_second) / 2);
+  if (out.violations.size() > before) out.violations.back().closest = std::pair{on_first, on_second};
 }
 
 }  // namespace mtcs::eval

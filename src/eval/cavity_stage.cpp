@@ -43,15 +43,15 @@ class CavityStage final : public Stage {
           if (!d.bounded && (best.bounded || d.distance < best.distance)) best = d;
         }
         if (!best.bounded)
-          add_clearance(out, ViolationKind::BoreCavity, {b.name(), "cavity"}, best.distance, margin,
-                        (best.on_cylinder + best.on_triangle) / 2);
+          add_clearance(out, ViolationKind::BoreCavity, {b.name(), "cavity"}, best.distance, margin, best.on_cylinder,
+                        best.on_triangle);
       } else if (box_) {
         const auto d = geometry::distance(b.hole, *box_, {.upper_bound = margin});
         if (!d.bounded)
-          add_clearance(out, ViolationKind::BoreCavity, {b.name(), "cavity"}, d.distance, margin, (d.on_cylinder + d.on_triangle) / 2);
+          add_clearance(out, ViolationKind::BoreCavity, {b.name(), "cavity"}, d.distance, margin, d.on_cylinder, d.on_triangle);
       } else {
         const auto c = mesh::cylinder_clearance(*bvh_, b.hole, margin);
-        if (!c.bounded) add_clearance(out, ViolationKind::BoreCavity, {b.name(), "cavity"}, c.distance, margin, c.where());
+        if (!c.bounded) add_clearance(out, ViolationKind::BoreCavity, {b.name(), "cavity"}, c.distance, margin, c.on_cylinder, c.on_surface);
       }
     }
   }

@@ -29,7 +29,7 @@ class KeepOutCylinderStage final : public Stage {
         const auto& k = keep_outs_[i];
         const auto d = geometry::distance(b.hole, *k.cylinder, {.upper_bound = k.clearance});
         if (d.bounded) continue;
-        add_clearance(out, ViolationKind::BoreKeepout, {b.name(), k.name}, d.distance, k.clearance, (d.witness_a + d.witness_b) / 2);
+        add_clearance(out, ViolationKind::BoreKeepout, {b.name(), k.name}, d.distance, k.clearance, d.witness_a, d.witness_b);
       }
     }
   }
@@ -51,7 +51,7 @@ class KeepOutMeshStage final : public Stage {
       for (const std::size_t k : indices_) {
         const auto& spec = scene_.spec().keep_outs[k];
         const auto c = mesh::cylinder_clearance(*scene_.keep_out_bvh(k), b.hole, spec.clearance);
-        if (!c.bounded) add_clearance(out, ViolationKind::BoreKeepout, {b.name(), spec.name}, c.distance, spec.clearance, c.where());
+        if (!c.bounded) add_clearance(out, ViolationKind::BoreKeepout, {b.name(), spec.name}, c.distance, spec.clearance, c.on_cylinder, c.on_surface);
       }
     }
   }

@@ -25,5 +25,8 @@ std::unique_ptr<Stage> make_drillable_stage(const DrillAccess& access);
 // A clearance shortfall as a violation; nothing when the distance meets the margin.
 void add_clearance(Evaluation& out, ViolationKind kind, std::vector<std::string> elements, double distance,
                    double margin, const geometry::Vec3& where);
+// The same with the closest points of the two elements (`where` is their midpoint).
+void add_clearance(Evaluation& out, ViolationKind kind, std::vector<std::string> elements, double distance,
+                   double margin, const geometry::Vec3& on_first, const geometry::Vec3& on_second);
 
 }  // namespace mtcs::eval

@@ -56,16 +56,16 @@ class DrillingStage final : public Stage {
       const double ratio = b.drilled_length / b.diameter;
       if (ratio > drill_.max_depth_ratio)
         out.violations.push_back({ViolationKind::DepthRatio, {b.name()}, ratio, drill_.max_depth_ratio,
-                                  (ratio - drill_.max_depth_ratio) / drill_.max_depth_ratio, b.hole.p1});
+                                  (ratio - drill_.max_depth_ratio) / drill_.max_depth_ratio, b.hole.p1, {}});
       if (!b.entry_allowed)
-        out.violations.push_back({ViolationKind::EntryFace, {b.name(), mold::to_string(b.entry_face)}, 0, 0, 1, b.hole.p0});
+        out.violations.push_back({ViolationKind::EntryFace, {b.name(), mold::to_string(b.entry_face)}, 0, 0, 1, b.hole.p0, {}});
       if (b.entry_angle_deg > drill_.max_angle_deg + 1e-9)
         out.violations.push_back({ViolationKind::EntryAngle, {b.name()}, b.entry_angle_deg, drill_.max_angle_deg,
-                                  (b.entry_angle_deg - drill_.max_angle_deg) / std::max(1.0, drill_.max_angle_deg), b.hole.p0});
+                                  (b.entry_angle_deg - drill_.max_angle_deg) / std::max(1.0, drill_.max_angle_deg), b.hole.p0, {}});
     }
     for (const mold::PortProblem& p : layout.ports) {
       const std::string c = "c" + std::to_string(p.circuit);
-      out.violations.push_back({p.inlet ? ViolationKind::InletFace : ViolationKind::OutletFace, {c}, p.off_face, 0, p.off_face, port_place(layout, p)});
+      out.violations.push_back({p.inlet ? ViolationKind::InletFace : ViolationKind::OutletFace, {c}, p.off_face, 0, p.off_face, port_place(layout, p), {}});
     }
   }
 

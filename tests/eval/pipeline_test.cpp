@@ -181,7 +181,7 @@ TEST_CASE("penalty variants order layouts as documented", "[eval]") {
   eval::Evaluation feasible, infeasible;
   feasible.objectives = {10, 10, 10};
   infeasible.objectives = {1, 1, 1};
-  infeasible.violations.push_back({eval::ViolationKind::BoreBore, {"a", "b"}, 2, 4, 0.5, geometry::Vec3::Zero()});
+  infeasible.violations.push_back({eval::ViolationKind::BoreBore, {"a", "b"}, 2, 4, 0.5, geometry::Vec3::Zero(), {}});
   infeasible.violation = 0.25;
   using mold::PenaltyVariant;
   // The order an optimiser ranks by: opt::Score with eval's scalar fitness as its value.

@@ -27,6 +27,8 @@ Command add_clearance_command(CLI::App& app);
 Command add_interfere_command(CLI::App& app);
 Command add_thermal_command(CLI::App& app);
 Command add_access_map_command(CLI::App& app);
+Command add_report_command(CLI::App& app);
+Command add_export_command(CLI::App& app);
 
 // `mtcs bench ARGS`: runs the mtcs-bench found beside this binary with ARGS (argv without the
 // program and "bench"); returns only when it cannot (127: not found).

@@ -2,7 +2,9 @@
 // The score of one layout: objectives, violated constraints with the elements involved, and the
 // penalty (shared/notes/mtcs_literature.md 7.4, 7.5).
 
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mtcs/mold/mold_spec.h"
@@ -34,6 +36,9 @@ struct Violation {
   double margin = 0;                  // what is required
   double amount = 0;                  // normalised shortfall, > 0: |distance - margin| / margin
   geometry::Vec3 where = geometry::Vec3::Zero();  // a point near the violation
+  // The closest points of the two elements (elements[0]'s first), when a clearance kernel
+  // measured them: the report draws the shortfall as the segment between them.
+  std::optional<std::pair<geometry::Vec3, geometry::Vec3>> closest;
 };
 
 struct StageTime {

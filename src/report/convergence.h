@@ -1,0 +1,16 @@
+#pragma once
+// The run's progress per stored generation, for the convergence charts: evaluations, the best
+// and median scalarised value, the feasible share and the hypervolume of the feasible front.
+
+#include "mtcs/mold/mold_spec.h"
+#include "mtcs/store/run_store.h"
+#include "scene_json.h"
+
+namespace mtcs::report {
+
+// The hypervolume is taken in scaled objectives (objective / its scale in the spec) against one
+// reference point for the whole run: 1.1 x the largest scaled value any stored feasible front
+// reaches (plus 1e-9), so that the curve is comparable across generations; `hv_ref` gives it.
+Json convergence_json(const store::RunStore& db, const mold::MoldSpec& spec, const std::vector<std::string>& objectives);
+
+}  // namespace mtcs::report

@@ -1,0 +1,144 @@
+// The page's data (what report.js reads), from the run store through the run's own session:
+//   title, run {dir, mold, algorithm, seed, evaluations, seconds, program}
+//   objectives [{name, unit, scale}]
+//   scene (scene_json.h), generation, shown (the member loaded first)
+//   members [{rank, objectives, value, feasible, violation, front, layout (layout_json.h),
+//             violations}]
+//   convergence (convergence.h)
+//   temperature {member, tier, unit, mesh, values (base64 float32 per vertex), min, max, mean,
+//                std, hottest} or null
+//   drilling_maps: null (slot for the accessibility issue)
+
+#include "mtcs/report/run_report.h"
+
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include "convergence.h"
+#include "layout_json.h"
+#include "base64.h"
+#include "mtcs/eval/cavity_temperature.h"
+#include "mtcs/io/input_error.h"
+#include "mtcs/mold/decoder.h"
+#include "mtcs/opt/sms_emoa.h"
+#include "mtcs/report/html_page.h"
+#include "mtcs/run/run_record.h"
+#include "mtcs/run/session.h"
+#include "mtcs/store/run_store.h"
+#include "scene_json.h"
+
+namespace mtcs::report {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string objective_unit(const std::string& name) {
+  if (name == "uniformity" || name == "worst_covered") return "mm";
+  if (name == "temperature_mean" || name == "temperature_max") return "\u00b0C";
+  if (name == "temperature_std") return "K";
+  if (name == "cycle_time") return "s";
+  return "";  // cost: the spec's cost units
+}
+
+// The field on the cavity surface refined to about 30 edges across the part: enough to show
+// the hot spots, ~5 000 vertices (a few seconds of line sinks, ~150 kB in the page). A vertex
+// where the model is singular (the corners of a heat-flux patch give +-inf) is sent as NaN and
+// counted in `singular`; the page greys it.
+Json temperature_json(const mold::Scene& scene, const mold::Layout& layout, int member) {
+  const mold::Cavity& cavity = *scene.spec().cavity;
+  const geometry::Box b = cavity.bounds();
+  const double edge = std::max(cavity.sample_spacing / 2, (b.max - b.min).norm() / 30);
+  const eval::CavityTemperature t = eval::cavity_temperature(scene, layout, eval::thermal_query(scene.spec()), {}, edge);
+  std::vector<float> values;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  int singular = 0;
+  for (const double v : t.field.values) {
+    const bool finite = std::isfinite(v);
+    values.push_back(finite ? float(v) : std::numeric_limits<float>::quiet_NaN());
+    singular += !finite;
+    if (finite) lo = std::min(lo, v), hi = std::max(hi, v);
+  }
+  return {{"member", member},        {"tier", t.tier},          {"unit", "\u00b0C"},
+          {"mesh", mesh_json(t.field.surface)}, {"values", base64_floats(values)}, {"singular", singular}, {"min", lo},
+          {"max", hi},               {"mean", t.summary.mean},  {"std", t.summary.std},
+          {"hottest", vec_json(t.hottest)}, {"seconds", t.seconds}};
+}
+
+}  // namespace
+
+RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
+  const std::string db_path = (fs::path(run_dir) / "run.sqlite").string();
+  if (!fs::exists(db_path)) throw io::InputError(db_path, 0, 0, "", "no stored run here");
+  const store::RunStore db = store::RunStore::open(db_path);
+  const auto meta = db.meta();
+  if (!meta.count("mold")) throw io::InputError(db_path, 0, 0, "", "a test-problem run: no mold to report on");
+  RunReport report;
+  const run::Session session(run::stored_mold_spec(meta, options.mold, &report.note), meta.at("config"), db_path + ":config");
+  const mold::Scene& scene = session.scene();
+  const auto& names = session.objective_names();
+
+  const auto summaries = db.summaries();
+  if (summaries.empty()) throw io::InputError(db_path, 0, 0, "generation", "the run stored no generation yet");
+  report.generation = options.generation.value_or(summaries.back().index);
+  const auto generation = db.generation(report.generation);
+  if (!generation) throw io::InputError(db_path, 0, 0, "--generation", "no stored generation " + std::to_string(report.generation));
+  const auto& population = generation->population;
+  report.member = options.member.value_or(0);
+  if (report.member < 0 || std::size_t(report.member) >= population.size())
+    throw io::InputError(db_path, 0, 0, "--member",
+                         "generation " + std::to_string(report.generation) + " has members 0.." + std::to_string(population.size() - 1));
+
+  Json data;
+  const std::string mold_name = fs::path(meta.at("mold")).filename().string();
+  data["title"] = "mtcs report: " + mold_name;
+  data["run"] = {{"dir", fs::absolute(run_dir).lexically_normal().string()}, {"mold", meta.at("mold")},
+                 {"algorithm", session.config().algorithm}, {"seed", meta.count("seed") ? meta.at("seed") : ""},
+                 {"evaluations", summaries.back().evaluations}, {"seconds", summaries.back().seconds},
+                 {"program", meta.count("program") ? meta.at("program") : ""}, {"note", report.note}};
+  data["objectives"] = Json::array();
+  for (const auto& name : names) {
+    const auto o = mold::objective_named(name);
+    data["objectives"].push_back({{"name", name}, {"unit", objective_unit(name)}, {"scale", o ? session.spec().objectives.scale(*o) : 1.0}});
+  }
+  data["units"] = session.spec().units;
+  data["scene"] = scene_json(session.spec());
+  data["generation"] = report.generation;
+  data["evaluations"] = generation->evaluations;
+  data["shown"] = report.member;
+
+  const auto front = opt::SmsEmoa::front(*generation);
+  data["members"] = Json::array();
+  mold::Layout shown;
+  for (std::size_t r = 0; r < population.size(); ++r) {
+    const auto& ind = population[r];
+    const mold::Layout layout = mold::decode(scene, session.problem().genome(ind.x));
+    const eval::Evaluation e = session.pipeline().evaluate(layout);
+    const bool on_front = ind.score.feasible && std::find(front.begin(), front.end(), ind.score.objectives) != front.end();
+    report.front += on_front;
+    data["members"].push_back({{"rank", r},
+                               {"objectives", ind.score.objectives},
+                               {"value", ind.score.value},
+                               {"feasible", ind.score.feasible},
+                               {"violation", ind.score.violation},
+                               {"front", on_front},
+                               {"layout", layout_json(layout)},
+                               {"violations", violations_json(e.violations)}});
+    if (int(r) == report.member) shown = layout;
+  }
+  report.members = population.size();
+  report.bores = shown.bores.size();
+  data["convergence"] = convergence_json(db, session.spec(), names);
+  report.generations = summaries.size();
+  data["temperature"] = nullptr;
+  if (options.temperature && session.spec().cavity) {
+    data["temperature"] = temperature_json(scene, shown, report.member);
+    report.temperature = true;
+  }
+  data["drilling_maps"] = nullptr;
+  report.html = html_page(data["title"].get<std::string>() + " (" + run_dir + ")", data.dump());
+  return report;
+}
+
+}  // namespace mtcs::report

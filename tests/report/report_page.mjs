@@ -1,0 +1,153 @@
+// The report page in a real browser (Debian's chromium, headless, software WebGL), driven by
+// puppeteer-core from web/node_modules (scripts/setup.sh installs both):
+//   - the page loads without console errors or uncaught exceptions;
+//   - the 3-D canvas is not blank: a screenshot of it, decoded again by the browser, has most
+//     pixels off the background and the colour of circuit 0's bores among them;
+//   - clicking another point of the Pareto front loads that layout: the label and the bore
+//     count in the DOM change to the clicked member's.
+// Usage: node report_page.mjs REPORT.html [--screenshot PAGE.png] [--width W --height H]
+// Exit 0: passed; 1: failed; 77: skipped (no chromium on this machine).
+import fs from 'node:fs';
+import path from 'node:path';
+import { createRequire } from 'node:module';
+import { execFileSync } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
+
+const args = process.argv.slice(2);
+const option = (name, fallback) => { const i = args.indexOf(name); return i >= 0 ? args[i + 1] : fallback; };
+const reportPath = path.resolve(args[0] ?? '');
+const screenshot = option('--screenshot', null);
+const width = Number(option('--width', 1366)), height = Number(option('--height', 768));
+
+function findChromium() {
+  for (const candidate of [process.env.MTCS_CHROMIUM, 'chromium', 'chromium-browser', 'google-chrome']) {
+    if (!candidate) continue;
+    try {
+      return execFileSync('sh', ['-c', `command -v "${candidate}"`], { encoding: 'utf8' }).trim();
+    } catch { /* next */ }
+  }
+  return null;
+}
+const chromium = findChromium();
+if (!chromium) {
+  console.log('SKIPPED: no chromium on this machine (scripts/setup.sh installs Debian\'s chromium); the report page was not tested in a browser');
+  process.exit(77);
+}
+const here = path.dirname(fileURLToPath(import.meta.url));
+const require = createRequire(path.join(here, '../../web/package.json'));
+let puppeteer;
+try {
+  puppeteer = require('puppeteer-core');
+} catch {
+  console.error('FAILED: puppeteer-core is not installed in web/node_modules: run scripts/setup.sh (npm ci --prefix web)');
+  process.exit(1);
+}
+if (!fs.existsSync(reportPath)) {
+  console.error(`FAILED: no report at ${reportPath}`);
+  process.exit(1);
+}
+
+const failures = [];
+const check = (ok, what) => { console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`); if (!ok) failures.push(what); };
+
+const browser = await puppeteer.launch({
+  executablePath: chromium,
+  headless: true,
+  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--hide-scrollbars', '--disable-dev-shm-usage'],
+});
+try {
+  const page = await browser.newPage();
+  await page.setViewport({ width, height });
+  const errors = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  page.on('requestfailed', (r) => errors.push(`request failed: ${r.url().slice(0, 80)}`));
+  const external = [];
+  page.on('request', (r) => { if (!/^(file|data|blob):/.test(r.url())) external.push(r.url()); });
+
+  const started = Date.now();
+  await page.goto(`file://${reportPath}`, { waitUntil: 'load' });
+  await page.waitForFunction(() => document.body.dataset.ready === '1', { timeout: 30000 });
+  const seconds = (Date.now() - started) / 1000;
+  const timing = await page.evaluate(() => ({
+    ready: performance.getEntriesByName('mtcs-drawn')[0].startTime,
+    start: performance.getEntriesByName('mtcs-start')[0].startTime,
+    built: performance.getEntriesByName('mtcs-built')[0].startTime,
+    frames: window.mtcsReport.frames(),
+  }));
+  console.log(`loaded and drawn in ${seconds.toFixed(2)} s (page clock ${(timing.ready / 1000).toFixed(2)} s: ` +
+    `scripts parsed at ${(timing.start / 1000).toFixed(2)} s, page built at ${(timing.built / 1000).toFixed(2)} s, ` +
+    `first frame ${((timing.ready - timing.built) / 1000).toFixed(2)} s; ${timing.frames} frames)`);
+  check(errors.length === 0, `no console errors${errors.length ? ': ' + errors.join(' | ') : ''}`);
+  check(external.length === 0, `no network requests${external.length ? ': ' + external.join(' ') : ''}`);
+
+  // The canvas as a screenshot, decoded by the browser itself (no PNG library needed here).
+  // The overlays on the view (title, legend, help) are hidden for it: only what WebGL drew counts
+  // (a canvas that drew nothing shows the viewer's background, the scene's colour).
+  const pixels = async () => {
+    const canvas = await page.$('#view3d');
+    await page.evaluate(() => { for (const id of ['view-title', 'legend', 'help']) document.getElementById(id).style.visibility = 'hidden'; });
+    const png = await canvas.screenshot({ encoding: 'base64' });
+    await page.evaluate(() => { for (const id of ['view-title', 'legend', 'help']) document.getElementById(id).style.visibility = ''; });
+    return page.evaluate(async (b64) => {
+      const img = new Image();
+      img.src = `data:image/png;base64,${b64}`;
+      await img.decode();
+      const c = document.createElement('canvas');
+      c.width = img.width; c.height = img.height;
+      const ctx = c.getContext('2d');
+      ctx.drawImage(img, 0, 0);
+      const d = ctx.getImageData(0, 0, c.width, c.height).data;
+      const bg = [0xee, 0xf1, 0xf6];  // the scene's background (report.js)
+      let off = 0, circuit0 = 0;
+      const colours = new Set();
+      for (let i = 0; i < d.length; i += 4) {
+        const dist = Math.abs(d[i] - bg[0]) + Math.abs(d[i + 1] - bg[1]) + Math.abs(d[i + 2] - bg[2]);
+        if (dist > 24) off += 1;
+        // Circuit 0's bores are #1f77b4, shaded: blue well above red and green.
+        if (d[i + 2] > d[i] + 60 && d[i + 2] > d[i + 1] + 20) circuit0 += 1;
+        colours.add((d[i] >> 3) << 10 | (d[i + 1] >> 3) << 5 | (d[i + 2] >> 3));
+      }
+      const n = d.length / 4;
+      return { n, off: off / n, circuit0, colours: colours.size, hash: Array.from(d.filter((_, i) => i % 97 === 0)).join(',') };
+    }, png);
+  };
+  const before = await pixels();
+  console.log(`canvas: ${before.n} pixels, ${(100 * before.off).toFixed(1)} % off the background, ${before.colours} colours, ${before.circuit0} circuit-0 pixels`);
+  check(before.off > 0.05 && before.colours > 50, 'the 3-D canvas is not blank');
+  check(before.circuit0 > 50, 'the bores of circuit 0 are drawn in its colour');
+
+  // Click another front point: prefer one whose layout has another number of bores.
+  const state = () => page.evaluate(() => ({
+    label: document.getElementById('layout-label').textContent,
+    bores: Number(document.getElementById('bore-count').textContent),
+    shown: Number(document.body.dataset.shown),
+  }));
+  const first = await state();
+  const target = await page.evaluate((shown) => {
+    const members = window.mtcsReport.data.members;
+    const bores = (m) => m.layout.bores.length;
+    const now = members.find((m) => m.rank === shown);
+    const other = members.find((m) => m.rank !== shown && bores(m) !== bores(now)) ?? members.find((m) => m.rank !== shown);
+    return other ? { rank: other.rank, bores: bores(other) } : null;
+  }, first.shown);
+  check(target !== null, 'the front has a second layout to click');
+  if (target) {
+    await page.click(`#front-plots .point[data-rank="${target.rank}"]`);
+    const after = await state();
+    console.log(`clicked member ${target.rank}: "${first.label}" (${first.bores} bores) -> "${after.label}" (${after.bores} bores)`);
+    check(after.label !== first.label && after.label.includes(`member ${target.rank}`), 'clicking a front point changes the layout label');
+    check(after.bores === target.bores, 'the bore count in the DOM is the clicked layout\'s');
+    if (target.bores !== first.bores) check((await pixels()).hash !== before.hash, 'the 3-D view changes with the layout');
+    await page.click(`#front-plots .point[data-rank="${first.shown}"]`);
+  }
+  check(errors.length === 0, `still no console errors after the clicks${errors.length ? ': ' + errors.join(' | ') : ''}`);
+  if (screenshot) {
+    await page.screenshot({ path: screenshot, fullPage: false });
+    console.log(`screenshot: ${screenshot}`);
+  }
+} finally {
+  await browser.close();
+}
+console.log(failures.length ? `${failures.length} check(s) failed` : 'all checks passed');
+process.exit(failures.length ? 1 : 0);

@@ -1,0 +1,205 @@
+// The report page's data against what the run wrote by other paths: the best layout's bores
+// (optimize's bores.csv), the objectives of summary.json, the violations' closest points (as
+// far apart as the reported distance), the temperature of `mtcs thermal`; the page needs no
+// network and stays under 5 MB; bad options are input errors.
+
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "cli/run_mtcs.h"
+#include "mtcs/io/input_error.h"
+#include "mtcs/report/layout_export.h"
+#include "mtcs/report/run_report.h"
+
+namespace {
+
+using mtcs_test::fs::path;
+using nlohmann::json;
+
+// One small plate run per test process: 400 evaluations, generation 0 has infeasible layouts.
+const path& plate_run() {
+  static const path dir = [] {
+    const path d = mtcs_test::scratch("report", "run");
+    mtcs_test::fs::remove_all(d);
+    const std::string mold = std::string(MTCS_SOURCE_DIR) + "/molds/plate.yaml";
+    REQUIRE(mtcs_test::run_mtcs("optimize " + mold + " --evaluations 400 --seed 3 --quiet --out " + d.string()) == 0);
+    return d;
+  }();
+  return dir;
+}
+
+json page_data(const std::string& html) {
+  const std::string open = "<script type=\"application/json\" id=\"report-data\">";
+  const std::size_t from = html.find(open) + open.size();
+  return json::parse(html.substr(from, html.find("</script>", from) - from));
+}
+
+std::vector<std::vector<std::string>> read_csv(const path& p) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(mtcs_test::read_text(p));
+  for (std::string line; std::getline(in, line);) {
+    rows.emplace_back();
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) rows.back().push_back(cell);
+  }
+  return rows;
+}
+
+}  // namespace
+
+TEST_CASE("report: the page needs no network, stays small and shows the run's best layout", "[report]") {
+  mtcs::report::ReportOptions options;
+  options.temperature = false;
+  const auto r = mtcs::report::run_report(plate_run().string(), options);
+  const std::string& html = r.html;
+  CHECK(html.size() < 5'000'000);
+  for (const char* outside : {"src=\"http", "href=\"http", "url(http", "import(\"http", "from\"http", "from 'http"})
+    CHECK(html.find(outside) == std::string::npos);
+  CHECK(html.find("<script type=\"importmap\">") != std::string::npos);
+  CHECK(html.find("three.js authors") != std::string::npos);  // the vendored licence
+
+  const json data = page_data(html);
+  const json summary = json::parse(mtcs_test::read_text(plate_run() / "summary.json"));
+  REQUIRE(data["members"].size() == r.members);
+  CHECK(data["generation"] == r.generation);
+  CHECK(r.generation == summary["generations"].get<int>());  // the last stored (0: the initial population)
+  const json& best = data["members"][0];
+  CHECK(best["feasible"] == true);
+  for (std::size_t k = 0; k < data["objectives"].size(); ++k)
+    CHECK(best["objectives"][k].get<double>() == summary["objectives"][data["objectives"][k]["name"].get<std::string>()].get<double>());
+  // optimize's bores.csv: name, circuit, segment, p0, p1, diameter, entry face.
+  const auto rows = read_csv(plate_run() / "bores.csv");
+  REQUIRE(rows.size() == best["layout"]["bores"].size() + 1);
+  CHECK(r.bores == rows.size() - 1);
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const json& b = best["layout"]["bores"][i - 1];
+    CHECK(b["name"] == rows[i][0]);
+    for (int k = 0; k < 3; ++k) {
+      CHECK(b["p0"][k].get<double>() == Approx(std::stod(rows[i][3 + std::size_t(k)])).margin(1e-9));
+      CHECK(b["p1"][k].get<double>() == Approx(std::stod(rows[i][6 + std::size_t(k)])).margin(1e-9));
+    }
+    CHECK(b["diameter"].get<double>() == std::stod(rows[i][9]));
+    CHECK(b["entry_face"] == rows[i][10]);
+  }
+  CHECK(data["convergence"]["generation"].size() == r.generations);
+  CHECK(data["temperature"].is_null());
+}
+
+TEST_CASE("report: each violated clearance is drawn between points as far apart as its distance", "[report]") {
+  mtcs::report::ReportOptions options;
+  options.generation = 0;
+  options.member = 3;
+  options.temperature = false;
+  const auto r = mtcs::report::run_report(plate_run().string(), options);
+  const json data = page_data(r.html);
+  CHECK(data["shown"] == 3);
+  std::size_t drawn = 0, infeasible = 0;
+  for (const json& m : data["members"]) {
+    infeasible += !m["feasible"].get<bool>();
+    CHECK(m["feasible"].get<bool>() == m["violations"].empty());
+    for (const json& v : m["violations"]) {
+      if (!v.contains("closest")) continue;
+      ++drawn;
+      double d2 = 0;
+      for (int k = 0; k < 3; ++k) d2 += std::pow(v["closest"][0][k].get<double>() - v["closest"][1][k].get<double>(), 2);
+      const double distance = v["distance"];
+      if (distance > 0) CHECK(std::sqrt(d2) == Approx(distance).margin(1e-9));
+      CHECK(distance < v["margin"].get<double>());
+    }
+  }
+  CHECK(infeasible > 0);
+  CHECK(drawn > 0);
+}
+
+TEST_CASE("report: the cavity temperature equals the thermal command's for the best", "[report]") {
+  const auto r = mtcs::report::run_report(plate_run().string());
+  REQUIRE(r.temperature);
+  const json t = page_data(r.html)["temperature"];
+  const path out = plate_run().parent_path() / "thermal.json";
+  REQUIRE(mtcs_test::run_mtcs("thermal " + std::string(MTCS_SOURCE_DIR) + "/molds/plate.yaml --layout " +
+                              (plate_run() / "best.layout.yaml").string() + " --json > " + out.string()) == 0);
+  const json expected = json::parse(mtcs_test::read_text(out));
+  CHECK(t["mean"].get<double>() == Approx(expected["mean"].get<double>()).epsilon(1e-12));
+  CHECK(t["std"].get<double>() == Approx(expected["std"].get<double>()).epsilon(1e-12));
+  CHECK(t["min"].get<double>() <= t["mean"].get<double>());
+  CHECK(t["mean"].get<double>() <= t["max"].get<double>());
+}
+
+TEST_CASE("report: a missing run, generation or member is an input error naming the option", "[report]") {
+  CHECK_THROWS_AS(mtcs::report::run_report((plate_run() / "nothing").string()), mtcs::io::InputError);
+  mtcs::report::ReportOptions options;
+  options.temperature = false;
+  options.generation = 99999;
+  CHECK_THROWS_WITH(mtcs::report::run_report(plate_run().string(), options), Catch::Contains("--generation"));
+  options.generation.reset();
+  options.member = 1000;
+  CHECK_THROWS_WITH(mtcs::report::run_report(plate_run().string(), options), Catch::Contains("--member"));
+  // Through the command: exit 2 and the file named.
+  const auto err = mtcs_test::scratch("report", "err.txt");
+  CHECK(mtcs_test::run_mtcs("report " + plate_run().string() + " --generation 99999", err) == 2);
+  CHECK(mtcs_test::read_text(err).find("run.sqlite") != std::string::npos);
+}
+
+TEST_CASE("export: every bore of the run's best layout as a closed tube of the right volume and axis", "[report][export]") {
+  const auto obj = plate_run().parent_path() / "bores.obj";
+  const auto vtp = plate_run().parent_path() / "bores.vtp";
+  REQUIRE(mtcs_test::run_mtcs("export " + plate_run().string() + " --format obj --out " + obj.string()) == 0);
+  REQUIRE(mtcs_test::run_mtcs("export " + plate_run().string() + " --format vtp --out " + vtp.string()) == 0);
+  const auto rows = read_csv(plate_run() / "bores.csv");  // optimize's table of the same layout
+  // The OBJ, object by object: vertices (2 rings of n, then the two cap centres) and triangles.
+  struct Object {
+    std::string name;
+    std::vector<std::array<double, 3>> v;
+    std::vector<std::array<std::size_t, 3>> f;
+  };
+  std::vector<Object> objects;
+  std::size_t base = 1;
+  std::istringstream in(mtcs_test::read_text(obj));
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream s(line);
+    std::string tag;
+    s >> tag;
+    if (tag == "o") {
+      if (!objects.empty()) base += objects.back().v.size();
+      objects.push_back({});
+      s >> objects.back().name;
+    } else if (tag == "v") {
+      auto& p = objects.back().v.emplace_back();
+      s >> p[0] >> p[1] >> p[2];
+    } else if (tag == "f") {
+      auto& t = objects.back().f.emplace_back();
+      s >> t[0] >> t[1] >> t[2];
+      for (auto& i : t) i -= base;
+    }
+  }
+  REQUIRE(objects.size() == rows.size() - 1);
+  const int n = mtcs::report::kTubeSides;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const auto& o = objects[i];
+    const auto& row = rows[i + 1];
+    CHECK(o.name == row[0]);
+    REQUIRE(o.v.size() == std::size_t(2 * n + 2));
+    double p0[3], p1[3], length2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      p0[k] = std::stod(row[3 + std::size_t(k)]), p1[k] = std::stod(row[6 + std::size_t(k)]);
+      length2 += (p1[k] - p0[k]) * (p1[k] - p0[k]);
+      CHECK(o.v[std::size_t(2 * n)][std::size_t(k)] == Approx(p0[k]).margin(1e-9));
+      CHECK(o.v[std::size_t(2 * n + 1)][std::size_t(k)] == Approx(p1[k]).margin(1e-9));
+    }
+    // Signed volume by the divergence theorem against the n-gon prism's closed form.
+    double volume = 0;
+    for (const auto& t : o.f) {
+      const auto &a = o.v[t[0]], &b = o.v[t[1]], &c = o.v[t[2]];
+      volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+    }
+    const double r = std::stod(row[9]) / 2;
+    CHECK(volume == Approx(n / 2.0 * r * r * std::sin(2 * M_PI / n) * std::sqrt(length2)).epsilon(1e-9));
+  }
+  const std::string v = mtcs_test::read_text(vtp);
+  CHECK(v.find("NumberOfPolys=\"" + std::to_string(objects.size() * 4 * std::size_t(n)) + "\"") != std::string::npos);
+  CHECK(v.find("Name=\"circuit\"") != std::string::npos);
+  CHECK(mtcs_test::run_mtcs("export " + plate_run().string() + " --format step") == 2);
+}
