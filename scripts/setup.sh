@@ -10,7 +10,7 @@ PACKAGES=(
   libsqlite3-dev libtbb-dev libfcl-dev libccd-dev libbenchmark-dev libpagmo-dev
   python3 python3-matplotlib
   clang-14 libfuzzer-14-dev
-  nodejs npm chromium
+  nodejs chromium
 )
 
 # The report page's browser test: puppeteer-core (and three.js, which src/report/assets vendors),

@@ -11,6 +11,6 @@ if ! command -v node >/dev/null 2>&1; then
 fi
 rm -rf "$work"
 mkdir -p "$work"
-"$mtcs" optimize "$src/molds/plate.yaml" --evaluations 400 --seed 3 --out "$work/run" --quiet
+"$mtcs" optimize "$src/molds/plate_wall_distance.yaml" --evaluations 400 --seed 3 --out "$work/run" --quiet
 "$mtcs" report "$work/run" --generation 0 --no-temperature --out "$work/report.html" --quiet
 node "$src/tests/report/report_page.mjs" "$work/report.html"
