@@ -12,6 +12,7 @@
 #include <tbb/task_arena.h>
 #include <unistd.h>
 
+#include "../support/scratch_file.h"
 #include "mtcs/eval/drill_access.h"
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/io/input_error.h"
@@ -25,11 +26,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path write(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_drillable_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path p = dir / name;
-  std::ofstream(p) << text;
-  return p;
+  return mtcs_test::write_scratch("drillable_test", name, text);
 }
 
 // The gear of molds/gear.yaml (74 x 74 x 22 mm, centred at (80, 80, 55)), drilled at angles.

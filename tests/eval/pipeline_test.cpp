@@ -9,6 +9,7 @@
 #include <unistd.h>
 #include <random>
 
+#include "../support/scratch_file.h"
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/opt/problem.h"
 #include "mtcs/mold/decoder.h"
@@ -23,11 +24,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path write(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_pipeline_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path p = dir / name;
-  std::ofstream(p) << text;
-  return p;
+  return mtcs_test::write_scratch("pipeline_test", name, text);
 }
 
 // A 300 x 200 x 120 block with a plate cavity whose underside is at z = 105.

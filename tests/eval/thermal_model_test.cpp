@@ -10,6 +10,7 @@
 
 #include <unistd.h>
 
+#include "../support/scratch_file.h"
 #include "mtcs/eval/coolant.h"
 #include "mtcs/eval/cycle_time.h"
 #include "mtcs/eval/pipeline.h"
@@ -24,11 +25,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path write(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_thermal_model_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path p = dir / name;
-  std::ofstream(p) << text;
-  return p;
+  return mtcs_test::write_scratch("thermal_model_test", name, text);
 }
 
 const char* kBlockSpec = MTCS_SOURCE_DIR "/molds/thermal_block.yaml";

@@ -7,6 +7,7 @@
 
 #include <unistd.h>
 
+#include "../support/scratch_file.h"
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/mesh/mesh_io.h"
 
@@ -16,11 +17,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path write(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_violation_place_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path p = dir / name;
-  std::ofstream(p) << text;
-  return p;
+  return mtcs_test::write_scratch("violation_place_test", name, text);
 }
 
 const std::string kRules = "drilling: {diameters: [8], allowed_faces: [+y, -y]}\n"

@@ -12,6 +12,7 @@
 
 #include <unistd.h>
 
+#include "../support/scratch_file.h"
 #include "mtcs/io/input_error.h"
 #include "mtcs/mold/mold_spec.h"
 #include "mtcs/mold/scene.h"
@@ -22,11 +23,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path write(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_bad_numbers_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path p = dir / name;
-  std::ofstream(p) << text;
-  return p;
+  return mtcs_test::write_scratch("bad_numbers_test", name, text);
 }
 
 const std::string kBlock = "block: {box: {min: [0, 0, 0], max: [100, 100, 50]}}\n";

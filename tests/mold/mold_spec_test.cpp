@@ -7,6 +7,7 @@
 
 #include <unistd.h>
 
+#include "../support/scratch_file.h"
 #include "mtcs/io/input_error.h"
 #include "mtcs/mold/mold_spec.h"
 
@@ -16,11 +17,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path write(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_mold_spec_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path p = dir / name;
-  std::ofstream(p) << text;
-  return p;
+  return mtcs_test::write_scratch("mold_spec_test", name, text);
 }
 
 const std::string kBlock = "block: {box: {min: [0, 0, 0], max: [100, 100, 50]}}\n";
