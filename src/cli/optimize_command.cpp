@@ -7,33 +7,18 @@
 #include <tbb/global_control.h>
 #include <unistd.h>
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "log.h"
 #include "mtcs/cli/commands.h"
-#include "mtcs/eval/pipeline.h"
-#include "mtcs/io/atomic_file.h"
 #include "mtcs/io/input_error.h"
-#include "mtcs/mold/decoder.h"
-#include "mtcs/mold/layout_io.h"
 #include "mtcs/opt/benchmark_problems.h"
-#include "mtcs/store/run_store.h"
 #include "mtcs/run/interruption.h"
-#include "mtcs/run/polish.h"
+#include "mtcs/run/optimize_run.h"
 #include "mtcs/run/progress_line.h"
-#include "mtcs/run/run_outputs.h"
-#include "mtcs/run/run_record.h"
-#include "mtcs/run/shop_layout.h"
-#include "mtcs/run/session.h"
-#include "mtcs/run/stored_run.h"
 #include "mtcs/run/test_problem_run.h"
 #include "option_error.h"
 #include "output_folder.h"
@@ -73,113 +58,26 @@ int run_test_problem(const Options& o) {
   if (!o.out.empty() && o.out != "mtcs-run") make_output_folder(o.out), store = (fs::path(o.out) / "run.sqlite").string();
   const run::TestProblemRun r =
       run::run_test_problem(*problem, o.problem, o.seed.value_or(1), o.evaluations.value_or(20000), ref, store);
-  const nlohmann::ordered_json j{{"problem", r.problem},         {"algorithm", "sms-emoa"},  {"seed", r.seed},
-                                 {"evaluations", r.evaluations}, {"hypervolume", r.hypervolume},
-                                 {"reference_point", r.ref},     {"front_size", r.front_size}, {"seconds", r.seconds}};
-  std::cout << (o.json ? j.dump() : j.dump(2)) << "\n";
+  std::cout << run::to_json(r, o.json) << "\n";
   return 0;
 }
 
-// One status line on a terminal, a log line every few generations otherwise.
-class Progress {
- public:
-  Progress(const run::MoldOptimizer& optimizer, int log_every)
-      : optimizer_(optimizer), quiet_(!spdlog::should_log(spdlog::level::info)), tty_(::isatty(2)), log_every_(log_every) {}
-  void operator()(const opt::Generation& g, double seconds, long evals_this_session) {
-    // SMS-EMOA's generations are its stored steps, every mu.
-    const int generation = optimizer_.pareto() ? g.index / optimizer_.mu() : g.index;
-    if (quiet_ || (!tty_ && generation % log_every_ != 0)) return;
-    const std::string line = run::progress_line(optimizer_, g, seconds, evals_this_session);
-    if (tty_) std::fprintf(stderr, "\r%s\033[K", line.c_str());
-    else spdlog::info(line);
-  }
-  void done() const {
-    if (!quiet_ && tty_) std::fprintf(stderr, "\n");
-  }
-
- private:
-  const run::MoldOptimizer& optimizer_;
-  bool quiet_, tty_;
-  int log_every_;
-};
-
 int run_optimize(const Options& o) {
-  std::string out_dir = o.resume.empty() ? o.out : o.resume;
-  const std::string db_path = (fs::path(out_dir) / "run.sqlite").string();
-  std::optional<store::RunStore> db;
-  std::string mold_path = o.mold, config_text;
-  std::map<std::string, std::string> meta;
-  if (!o.resume.empty()) {
-    if (!fs::exists(db_path)) throw io::InputError(db_path, 0, 0, "", "no run to resume here");
-    db = store::RunStore::resume(db_path);
-    meta = db->meta();
-    for (const char* key : {"mold", "mold_hash", "config"})
-      if (!meta.count(key)) throw io::InputError(db_path, 0, 0, key, "missing from the store: not a mold run to resume");
-    mold_path = meta.at("mold");
-    config_text = meta.at("config");
-  }
-  if (!o.resume.empty() && run::content_hash(run::read_file_text(mold_path)) != meta.at("mold_hash"))
-    throw io::InputError(mold_path, 0, 0, "", "the mold spec changed since the run started; start a new run");
-  // A resumed run keeps its stored config; a new one resolves RUN.yaml and the command line.
-  const run::RunOverrides overrides{o.config, o.algorithm == "es" ? "" : o.algorithm, o.ref, o.seed, o.evaluations};
-  const run::Session session = o.resume.empty()
-                                   ? run::Session(mold::load_mold_spec(mold_path), overrides)
-                                   : run::Session(mold::load_mold_spec(mold_path), config_text, db_path + ":config");
-  const mold::Scene& scene = session.scene();
-  const std::vector<std::string>& names = session.objective_names();
-  const run::RunConfig& config = session.config();
-  if (o.resume.empty()) {
-    make_output_folder(out_dir);
-    if (store::RunStore::in_use(db_path))
-      throw io::InputError(db_path, 0, 0, "", "the run here is in use: another process writes it; choose --out");
-    if (fs::exists(db_path))
-      throw io::InputError(db_path, 0, 0, "", "a run exists here: resume it with --resume " + out_dir + " or choose --out");
-    meta = run::mold_run_meta(mold_path, session);
-    db = store::RunStore::create(db_path, meta);
-  }
-
   std::optional<tbb::global_control> limit;
   if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
-  const run::MoldProblem& problem = session.problem();
-  const run::MoldOptimizer optimizer(problem, scene, config);
-  spdlog::debug("mold {}: {} surface samples; run config:\n{}", mold_path, session.pipeline().surface_samples(),
-                config.to_yaml(names));
-  if (optimizer.pareto()) spdlog::info(run::hypervolume_basis(optimizer, names));
-  Progress progress(optimizer, config.log_every);
+  run::OptimizeRequest request{o.mold, o.resume, o.out,
+                               {o.config, o.algorithm == "es" ? "" : o.algorithm, o.ref, o.seed, o.evaluations}, o.polish,
+                               [](const std::string& dir) { make_output_folder(dir); }};
   const run::Interruption interruption;  // Ctrl-C: stop after this generation, write, say how to resume
-  const run::StoredRun stored = run::run_stored(optimizer, problem, *db, progress, [&] { return interruption.requested(); });
-  const opt::Generation& last = stored.last;
-  const double seconds = stored.seconds;
-  progress.done();
-
-  // The best layout, for CAD and for re-scoring with mtcs evaluate; optionally polished.
-  const opt::Individual& first = last.population.front();
-  run::RunOutcome outcome{last, first.score, problem.genome(first.x), seconds, mold_path, std::nullopt, first.score.value};
-  outcome.interrupted = stored.interrupted;
-  if (o.polish > 0 && !stored.interrupted) {
-    outcome.polished = run::polish(problem, scene, outcome.genome, o.polish);
-    if (outcome.polished->improved) outcome.genome = outcome.polished->genome, outcome.best = outcome.polished->score;
-    spdlog::info("polish (COBYLA, {} evaluations): objective {:.6g}{}", outcome.polished->evaluations, outcome.best.value,
-                 outcome.polished->improved ? "" : " (no improvement)");
-  }
-  // What is written is rounded to the tolerance and tidied, and scored as written.
-  outcome.genome = run::shop_layout(scene, outcome.genome);
-  outcome.best = problem.evaluate(problem.encode(outcome.genome));
-  const mold::Layout layout = run::write_run_outputs(out_dir, scene, optimizer, names, config.es.seed, outcome);
-  const opt::Score& best = outcome.best;
-  const mold::Genome& genome = outcome.genome;
-  spdlog::info("{} best layout: {} bores in {} circuits, objective {:.6g}, {} evaluations in {:.6g} s",
-               best.feasible ? "feasible" : "INFEASIBLE", layout.bores.size(), genome.circuits.size(),
-               best.value, last.evaluations, seconds);
-  spdlog::info("results in {}/: best.layout.yaml (mtcs evaluate {} --layout {}/best.layout.yaml), bores.csv, holes.csv, bores.stl, "
-               "summary.json, run.sqlite",
-               out_dir, mold_path, out_dir);
-  for (const std::string& w : run::front_warnings(optimizer, last)) spdlog::warn(w);
-  if (!stored.interrupted) return 0;
+  const run::OptimizeResult r = run::optimize_mold(
+      request, [](const run::MoldOptimizer& optimizer, int log_every) { return run::ProgressSink(run::ProgressPrinter(optimizer, log_every)); },
+      [&] { return interruption.requested(); });
+  if (spdlog::should_log(spdlog::level::info) && ::isatty(2)) std::fprintf(stderr, "\n");
+  if (!r.interrupted) return 0;
   // Said whatever the log level: the run is not finished.
   std::fprintf(stderr, "interrupted after generation %d (%ld of %ld evaluations): the best layout so far is in %s/\n"
                        "continue with: mtcs optimize --resume %s\n",
-               last.index, last.evaluations, optimizer.budget(), out_dir.c_str(), out_dir.c_str());
+               r.last_generation, r.evaluations, r.budget, r.out_dir.c_str(), r.out_dir.c_str());
   return interruption.exit_code();
 }
 
@@ -220,11 +118,10 @@ Command add_optimize_command(CLI::App& app) {
                   "(objective / scale), default twice the worst of the initial population")
       ->delimiter(',');
   sub->add_flag("--json", o->json, "test problems: the summary as one line of JSON");
-  return {sub, [o, sub] {
+  return {sub, [o] {
             if (!o->problem.empty()) return run_test_problem(*o);
             if (o->resume.empty() && o->mold.empty())
               throw option_error("MOLD", "give a mold spec, or --resume DIR");
-            (void)sub;
             return run_optimize(*o);
           }};
 }

@@ -1,5 +1,8 @@
 #include "mtcs/run/progress_line.h"
 
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
 #include <cstdio>
 #include <sstream>
 
@@ -36,6 +39,18 @@ std::string hypervolume_basis(const MoldOptimizer& optimizer, const std::vector<
   for (std::size_t k = 0; k < ref.size(); ++k) s << (k ? ", " : "") << ref[k];
   s << "]: " << optimizer.reference_origin();
   return s.str();
+}
+
+ProgressPrinter::ProgressPrinter(const MoldOptimizer& optimizer, int log_every)
+    : optimizer_(&optimizer), quiet_(!spdlog::should_log(spdlog::level::info)), tty_(::isatty(2)), log_every_(log_every) {}
+
+void ProgressPrinter::operator()(const opt::Generation& g, double seconds, long evaluations) const {
+  // SMS-EMOA's generations are its stored steps, every mu.
+  const int generation = optimizer_->pareto() ? g.index / optimizer_->mu() : g.index;
+  if (quiet_ || (!tty_ && generation % log_every_ != 0)) return;
+  const std::string line = progress_line(*optimizer_, g, seconds, evaluations);
+  if (tty_) std::fprintf(stderr, "\r%s\033[K", line.c_str());
+  else spdlog::info(line);
 }
 
 }  // namespace mtcs::run

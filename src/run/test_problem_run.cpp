@@ -1,6 +1,7 @@
 #include "mtcs/run/test_problem_run.h"
 
 #include <chrono>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "mtcs/opt/benchmark_problems.h"
@@ -38,6 +39,13 @@ TestProblemRun run_test_problem(const opt::Problem& problem, const std::string& 
   const double seconds = since_start();
   const auto front = opt::SmsEmoa::front(last);
   return {name, seed, last.evaluations, opt::hypervolume(front, c.ref), c.ref, front.size(), seconds};
+}
+
+std::string to_json(const TestProblemRun& r, bool one_line) {
+  const nlohmann::ordered_json j{{"problem", r.problem},         {"algorithm", "sms-emoa"},  {"seed", r.seed},
+                                 {"evaluations", r.evaluations}, {"hypervolume", r.hypervolume},
+                                 {"reference_point", r.ref},     {"front_size", r.front_size}, {"seconds", r.seconds}};
+  return one_line ? j.dump() : j.dump(2);
 }
 
 }  // namespace mtcs::run

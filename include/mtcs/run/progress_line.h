@@ -13,6 +13,19 @@ namespace mtcs::run {
 // `seconds` and `evaluations` are this session's (a resumed run counts from its start).
 std::string progress_line(const MoldOptimizer& optimizer, const opt::Generation& g, double seconds, long evaluations);
 
+// Prints the live line: rewritten in place on a terminal, a log line every `log_every`
+// generations otherwise, nothing below spdlog's info level.
+class ProgressPrinter {
+ public:
+  ProgressPrinter(const MoldOptimizer& optimizer, int log_every);
+  void operator()(const opt::Generation& g, double seconds, long evaluations) const;
+
+ private:
+  const MoldOptimizer* optimizer_;
+  bool quiet_, tty_;
+  int log_every_;
+};
+
 // Said once before the run: what the hypervolume on the live line is measured against.
 std::string hypervolume_basis(const MoldOptimizer& optimizer, const std::vector<std::string>& objective_names);
 

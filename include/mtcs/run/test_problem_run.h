@@ -28,4 +28,8 @@ std::vector<double> default_test_reference(const std::string& problem);
 TestProblemRun run_test_problem(const opt::Problem& problem, const std::string& name, std::uint64_t seed,
                                 long evaluations, const std::vector<double>& ref, const std::string& store_path);
 
+// The run as one JSON object (problem, algorithm, seed, evaluations, hypervolume,
+// reference_point, front_size, seconds): indented, or on one line when `one_line`.
+std::string to_json(const TestProblemRun& run, bool one_line);
+
 }  // namespace mtcs::run
