@@ -22,11 +22,16 @@ TEST_CASE("issue 16: SMS-EMOA's progress line gives the hypervolume in scaled ob
   const opt::Generation g = optimizer.run(nullptr, {});
   const auto front = opt::SmsEmoa::front(g);
   REQUIRE_FALSE(front.empty());
-  // The reference: raw hypervolume over the product of the scales (plate: 5, 20, 1000), against
-  // the given reference point of 40 per scaled objective.
-  const double scales = 5.0 * 20 * 1000;
+  // The reference: raw hypervolume over the product of the mold's scales, against the given
+  // reference point of 40 per scaled objective.
+  double scales = 1;
+  std::vector<double> raw_ref;
+  for (const auto obj : session.spec().objectives.use) {
+    scales *= session.spec().objectives.scale(obj);
+    raw_ref.push_back(40 * session.spec().objectives.scale(obj));
+  }
   CHECK(optimizer.scaled_reference() == std::vector<double>{40, 40, 40});
-  const double hv = opt::hypervolume(front, {40 * 5.0, 40 * 20.0, 40 * 1000.0}) / scales;
+  const double hv = opt::hypervolume(front, raw_ref) / scales;
   REQUIRE(hv > 0);
   CHECK(optimizer.scaled_hypervolume(front) == Approx(hv).epsilon(1e-12));
   char expected[80];
