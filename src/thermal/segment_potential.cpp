@@ -76,7 +76,10 @@ double triangle_potential(const Vec3& a, const Vec3& b, const Vec3& c, const Vec
     const double R0sq = P0 * P0 + d * d;
     const double R_minus = (s - p0).norm();
     const double R_plus = (s - p1).norm();
-    if (R0sq == 0) continue;  // s on this edge's line: P0 = 0 and d = 0, the term vanishes
+    // s on this edge's line (a corner of the triangle, or on an edge) to rounding: P0 and d
+    // vanish and so does the term (P0 log(1/P0) -> 0); left in, rounding turns a corner's
+    // log(x / 0) into inf, and two such edges into NaN.
+    if (R0sq <= 1e-24 * edge_length * edge_length) continue;
     const double R0 = std::sqrt(R0sq);
     if (P0 != 0) sum_log += P0 * edge_log(l_minus, l_plus, R_minus, R_plus, R0);
     if (ad != 0 && P0 != 0) {
