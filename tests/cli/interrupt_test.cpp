@@ -13,7 +13,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "mtcs/store/run_store.h"
+#include "stored_run.h"
 #include "run_mtcs.h"
 
 using mtcs::store::RunStore;
@@ -22,14 +22,6 @@ using namespace mtcs_test;
 namespace {
 
 const std::string kMold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";
-
-std::size_t stored_generations(const fs::path& dir) {
-  try {
-    return RunStore::open((dir / "run.sqlite").string()).summaries().size();
-  } catch (const std::exception&) {
-    return 0;
-  }
-}
 
 // Starts `mtcs optimize MOLD --out DIR ARGS...` with stderr into `err`, sends `signal` once
 // `stored` generations are in its store, and returns its exit code.
@@ -57,18 +49,7 @@ int interrupt_run(const fs::path& dir, const std::vector<std::string>& args, con
   return WEXITSTATUS(status);
 }
 
-std::vector<std::vector<double>> generations(const fs::path& dir) {
-  const RunStore db = RunStore::open((dir / "run.sqlite").string());
-  std::vector<std::vector<double>> out;
-  for (const auto& s : db.summaries()) {
-    const auto g = db.generation(s.index);
-    for (const auto& ind : g->population) {
-      out.push_back(ind.x);
-      out.push_back(ind.score.objectives);
-    }
-  }
-  return out;
-}
+std::vector<std::vector<double>> generations(const fs::path& dir) { return mtcs_test::stored_rows(dir); }
 
 void check_interrupted_then_resumed(const std::vector<std::string>& args, int signal, std::size_t stored) {
   const fs::path full = scratch("interrupt", "full"), cut = scratch("interrupt", "cut"),

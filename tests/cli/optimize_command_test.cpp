@@ -12,39 +12,18 @@
 
 #include <unistd.h>
 
-#include "mtcs/store/run_store.h"
 #include "run_mtcs.h"
+#include "stored_run.h"
 
 namespace fs = std::filesystem;
 using mtcs::store::RunStore;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_optimize_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
-}
+fs::path scratch(const std::string& name) { return mtcs_test::scratch("optimize_cli", name); }
+using mtcs_test::run_mtcs;
 
-int run_mtcs(const std::string& args) {
-  const int status = std::system((std::string(MTCS_BINARY) + " " + args + " 2>/dev/null").c_str());
-  return WEXITSTATUS(status);
-}
-
-// Every stored generation of a run, flattened.
-std::vector<std::vector<double>> generations(const fs::path& dir) {
-  const RunStore db = RunStore::open((dir / "run.sqlite").string());
-  std::vector<std::vector<double>> out;
-  for (const auto& s : db.summaries()) {
-    const auto g = db.generation(s.index);
-    for (const auto& ind : g->population) {
-      out.push_back(ind.x);
-      out.push_back(ind.steps);
-      out.push_back(ind.score.objectives);
-    }
-  }
-  return out;
-}
+std::vector<std::vector<double>> generations(const fs::path& dir) { return mtcs_test::stored_rows(dir); }
 
 // The plate scored by wall distances: these runs optimise, and the temperatures would make them ~50x slower.
 const std::string kMold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";
