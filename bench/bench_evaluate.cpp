@@ -83,45 +83,75 @@ std::vector<mold::Genome> random_genomes(const mold::Scene& scene, int count, in
   return out;
 }
 
-EvaluateBench bench_evaluate(const eval::Pipeline& pipeline, const std::vector<mold::Genome>& genomes, int threads) {
+std::vector<mold::Genome> mutated_children(const run::MoldProblem& problem, const std::vector<mold::Genome>& parents,
+                                           int count, std::uint64_t seed) {
+  opt::Rng rng(seed);
+  std::vector<mold::Genome> out(static_cast<std::size_t>(count));
+  for (auto& child : out) {
+    opt::Genotype x = problem.encode(parents[std::size_t(rng.below(int(parents.size())))]);
+    problem.mutate(x, problem.initial_steps(x), rng);
+    child = problem.genome(x);
+  }
+  return out;
+}
+
+EvaluateBench bench_evaluate(const eval::Pipeline& pipeline, const std::vector<mold::Genome>& warm,
+                             const std::vector<mold::Genome>& genomes, int threads) {
   const mold::Scene& scene = pipeline.scene();
   EvaluateBench r;
   r.samples = pipeline.surface_samples();
   r.bores = 0;
   for (const auto& c : genomes.front().circuits) r.bores += int(mold::routed_waypoints(scene, c).size()) - 1;
-  std::vector<double> sink(genomes.size());
+  std::vector<double> sink(std::max(genomes.size(), warm.size()));
   const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-  // Warm-up, then the timed pass.
-  tbb::parallel_for(std::size_t(0), std::min<std::size_t>(genomes.size(), 64),
-                    [&](std::size_t i) { sink[i] = pipeline.evaluate(genomes[i]).violation; });
+  tbb::parallel_for(std::size_t(0), warm.size(), [&](std::size_t i) { sink[i] = pipeline.evaluate(warm[i]).violation; });
   const auto t0 = std::chrono::steady_clock::now();
   tbb::parallel_for(std::size_t(0), genomes.size(),
                     [&](std::size_t i) { sink[i] = pipeline.evaluate(genomes[i]).violation; });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.evaluations_per_second = double(genomes.size()) / seconds;
-  // The split by stage, single-threaded over a few hundred layouts.
-  const std::size_t n = std::min<std::size_t>(genomes.size(), 500);
-  for (std::size_t i = 0; i < n; ++i)
-    for (const auto& s : pipeline.evaluate(genomes[i], true).stages) r.stage_seconds[s.name] += s.seconds / double(n);
   return r;
 }
 
+// The split by stage, on one thread, over `genomes` (after `warm`, as the timed row).
+std::map<std::string, double> stage_split(const eval::Pipeline& pipeline, const std::vector<mold::Genome>& warm,
+                                          const std::vector<mold::Genome>& genomes) {
+  std::map<std::string, double> split;
+  for (const auto& g : warm) pipeline.evaluate(g);
+  for (const auto& g : genomes)
+    for (const auto& s : pipeline.evaluate(g, true).stages) split[s.name] += s.seconds / double(genomes.size());
+  return split;
+}
+
 int bench_evaluate_rows(const std::string& mold_path, int threads, int evaluations, int circuits, int bores,
-                        std::uint64_t seed) {
-  const run::Session session(mold_path);
+                        std::uint64_t seed, bool mutations, const std::string& config) {
+  const run::Session session(mold_path, run::RunOverrides{.config = config});
   const mold::Scene& scene = session.scene();
-  const auto genomes = random_genomes(scene, evaluations, circuits, bores, seed);
-  std::cout << "mold,threads,bores,samples,evaluations_per_second\n";
-  std::vector<int> rows{1};
-  if (threads > 1) rows.push_back(threads);
-  for (const int t : rows) {
-    const auto r = bench_evaluate(session.pipeline(), genomes, t);
-    std::cout << mold_path << ',' << t << ',' << r.bores << ',' << r.samples << ',' << r.evaluations_per_second << '\n';
-    if (t == 1) {
-      std::cerr << "stage,microseconds_per_evaluation\n";
-      for (const auto& [name, sec] : r.stage_seconds) std::cerr << name << ',' << sec * 1e6 << '\n';
-    }
+  // Every pass gets layouts no earlier pass evaluated: the stages' caches start as cold for
+  // random layouts as in a run, and hold the parents for children.
+  const int rows = threads > 1 ? 2 : 1, split = std::min(evaluations, 500);
+  const int parents = 15;  // the default ES's mu
+  std::vector<mold::Genome> all = random_genomes(scene, mutations ? parents : 64 + rows * evaluations + split,
+                                                 circuits, bores, seed);
+  std::vector<mold::Genome> warm(all.begin(), all.begin() + (mutations ? parents : 64));
+  if (mutations) {
+    const auto children = mutated_children(session.problem(), warm, rows * evaluations + split, seed + 1);
+    all.insert(all.end(), children.begin(), children.end());
   }
+  auto slice = [&, next = warm.size()](int count) mutable {
+    std::vector<mold::Genome> out(all.begin() + long(next), all.begin() + long(next) + count);
+    next += std::size_t(count);
+    return out;
+  };
+  std::cout << "mold,threads,bores,samples,evaluations_per_second\n";
+  for (int row = 0; row < rows; ++row) {
+    const int t = row == 0 ? 1 : threads;
+    const auto r = bench_evaluate(session.pipeline(), warm, slice(evaluations), t);
+    std::cout << mold_path << ',' << t << ',' << r.bores << ',' << r.samples << ',' << r.evaluations_per_second << '\n';
+  }
+  std::cerr << "stage,microseconds_per_evaluation\n";
+  for (const auto& [name, sec] : stage_split(session.pipeline(), warm, slice(split)))
+    std::cerr << name << ',' << sec * 1e6 << '\n';
   return 0;
 }
 

@@ -55,12 +55,17 @@ int run(int argc, char** argv) {
       "Evaluations per second of random layouts (circuits x bores axis-parallel legs), on one\n"
       "thread and on --threads threads. CSV on stdout:\n"
       "  mold,threads,bores,samples,evaluations_per_second\n"
-      "and the mean time per evaluation of each stage on stderr.\n"
-      "Example: mtcs bench evaluate molds/plate.yaml --threads 2");
+      "and the mean time per evaluation of each stage on stderr. With --mutations the layouts are\n"
+      "children of real mutations (the mold problem's operators, the run config's rates) of a\n"
+      "population of random parents evaluated first, as in a run: the stages' caches see what\n"
+      "an ES run gives them.\n"
+      "Example: mtcs bench evaluate molds/plate.yaml --threads 2 --mutations");
   struct EvalOptions {
     std::string mold;
     int threads = 2, evaluations = 20000, circuits = 3, bores = 8;
     std::uint64_t seed = 1;
+    bool mutations = false;
+    std::string config;
   };
   auto eo = std::make_shared<EvalOptions>();
   evaluate->add_option("mold", eo->mold, "mold spec")->required();
@@ -69,6 +74,8 @@ int run(int argc, char** argv) {
   evaluate->add_option("--circuits", eo->circuits, "circuits per layout")->capture_default_str()->check(CLI::Range(1, 100));
   evaluate->add_option("--bores", eo->bores, "bores per circuit")->capture_default_str()->check(CLI::Range(3, 1000));
   evaluate->add_option("--seed", eo->seed, "seed of the random layouts")->capture_default_str();
+  evaluate->add_flag("--mutations", eo->mutations, "time children of mutations of random parents, not random layouts");
+  evaluate->add_option("--config", eo->config, "RUN.yaml whose mutation rates make the children (default: the defaults)");
 
   CLI::App* optimize = app.add_subcommand(
       "optimize",
@@ -226,7 +233,8 @@ int run(int argc, char** argv) {
   if (sms->parsed()) return bench_sms(so->problem, so->algorithms, so->seeds, so->evaluations);
   if (optimize->parsed()) return bench_optimize(*oo);
   if (evaluate->parsed())
-    return bench_evaluate_rows(eo->mold, eo->threads, eo->evaluations, eo->circuits, eo->bores, eo->seed);
+    return bench_evaluate_rows(eo->mold, eo->threads, eo->evaluations, eo->circuits, eo->bores, eo->seed,
+                               eo->mutations, eo->config);
   if (dist->parsed()) return bench_distance(opt->pairs, opt->variants, opt->repeat, opt->tolerance);
   if (sweep->parsed()) return bench_tolerance(opt->pairs, opt->sweep, opt->repeat);
   return bench_stiff(opt->pairs, opt->repeat, opt->tolerance);

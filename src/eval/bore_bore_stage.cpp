@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "mtcs/geometry/cylinder_distance.h"
+#include "exact_cache.h"
 #include "stages.h"
 
 namespace mtcs::eval {
@@ -39,17 +40,21 @@ class BoreBoreStage final : public Stage {
         const mold::Bore& a = layout.bores[std::size_t(items[i].index)];
         const mold::Bore& b = layout.bores[std::size_t(items[j].index)];
         if (a.circuit == b.circuit && std::abs(a.segment - b.segment) == 1) continue;  // junction
-        const auto d = geometry::distance(a.hole, b.hole, request);
-        if (d.bounded || d.distance >= margin_) continue;
+        const auto& d = cache_.get(pair_key(a.hole, b.hole), [&] {
+          const auto r = geometry::distance(a.hole, b.hole, request);
+          return CachedClearance{r.bounded, r.distance, r.witness_a, r.witness_b};
+        });
+        if (d.clear || d.distance >= margin_) continue;
         const bool ordered = items[i].index < items[j].index;
         add_clearance(out, ViolationKind::BoreBore, ordered ? std::vector{a.name(), b.name()} : std::vector{b.name(), a.name()},
-                      d.distance, margin_, ordered ? d.witness_a : d.witness_b, ordered ? d.witness_b : d.witness_a);
+                      d.distance, margin_, ordered ? d.on_bore : d.on_other, ordered ? d.on_other : d.on_bore);
       }
     }
   }
 
  private:
   double margin_;
+  ExactCache<PairKey, CachedClearance> cache_{1 << 16};
 };
 
 }  // namespace

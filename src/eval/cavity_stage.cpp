@@ -6,6 +6,7 @@
 #include "mtcs/geometry/cylinder_box_distance.h"
 #include "mtcs/geometry/cylinder_triangle_distance.h"
 #include "mtcs/mesh/bvh.h"
+#include "exact_cache.h"
 #include "stages.h"
 #include "surface_samples.h"
 
@@ -33,34 +34,39 @@ class CavityStage final : public Stage {
   }
   void run(const mold::Layout& layout, Evaluation& out) const override {
     for (const mold::Bore& b : layout.bores) {
-      const double margin = margin_.at(b.diameter);
-      if (!patch_.empty()) {
-        geometry::TriangleDistanceResult best;
-        best.bounded = true;
-        best.distance = margin;
-        for (const auto& t : patch_) {
-          const auto d = geometry::distance(b.hole, t, {.upper_bound = margin});
-          if (!d.bounded && (best.bounded || d.distance < best.distance)) best = d;
-        }
-        if (!best.bounded)
-          add_clearance(out, ViolationKind::BoreCavity, {b.name(), "cavity"}, best.distance, margin, best.on_cylinder,
-                        best.on_triangle);
-      } else if (box_) {
-        const auto d = geometry::distance(b.hole, *box_, {.upper_bound = margin});
-        if (!d.bounded)
-          add_clearance(out, ViolationKind::BoreCavity, {b.name(), "cavity"}, d.distance, margin, d.on_cylinder, d.on_triangle);
-      } else {
-        const auto c = mesh::cylinder_clearance(*bvh_, b.hole, margin);
-        if (!c.bounded) add_clearance(out, ViolationKind::BoreCavity, {b.name(), "cavity"}, c.distance, margin, c.on_cylinder, c.on_surface);
-      }
+      const CachedClearance& c = cache_.get(hole_key(b.hole, b.diameter), [&] { return clearance(b); });
+      if (!c.clear)
+        add_clearance(out, ViolationKind::BoreCavity, {b.name(), "cavity"}, c.distance, margin_.at(b.diameter),
+                      c.on_bore, c.on_other);
     }
   }
 
  private:
+  CachedClearance clearance(const mold::Bore& b) const {
+    const double margin = margin_.at(b.diameter);
+    if (!patch_.empty()) {
+      geometry::TriangleDistanceResult best;
+      best.bounded = true;
+      best.distance = margin;
+      for (const auto& t : patch_) {
+        const auto d = geometry::distance(b.hole, t, {.upper_bound = margin});
+        if (!d.bounded && (best.bounded || d.distance < best.distance)) best = d;
+      }
+      return {best.bounded, best.distance, best.on_cylinder, best.on_triangle};
+    }
+    if (box_) {
+      const auto d = geometry::distance(b.hole, *box_, {.upper_bound = margin});
+      return {d.bounded, d.distance, d.on_cylinder, d.on_triangle};
+    }
+    const auto c = mesh::cylinder_clearance(*bvh_, b.hole, margin);
+    return {c.bounded, c.distance, c.on_cylinder, c.on_surface};
+  }
+
   std::optional<geometry::Box> box_;
   std::vector<geometry::Triangle> patch_;  // a patch on a block face: its two triangles
   const mesh::TriangleBvh* bvh_;
   mold::Length margin_;
+  ExactCache<HoleKey, CachedClearance> cache_{1 << 14};
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include "mtcs/geometry/cylinder_distance.h"
 #include "mtcs/mesh/bvh.h"
+#include "exact_cache.h"
 #include "stages.h"
 
 namespace mtcs::eval {
@@ -21,22 +22,30 @@ class KeepOutCylinderStage final : public Stage {
   }
   std::string name() const override { return "bore_keepout_cylinders"; }
   void run(const mold::Layout& layout, Evaluation& out) const override {
-    for (const mold::Bore& b : layout.bores) {
-      const geometry::Vec3 r = geometry::Vec3::Constant(b.hole.radius);
-      const geometry::Vec3 lo = b.hole.p0.cwiseMin(b.hole.p1) - r, hi = b.hole.p0.cwiseMax(b.hole.p1) + r;
-      for (std::size_t i = 0; i < keep_outs_.size(); ++i) {
-        if ((lo.array() > boxes_[i].max.array()).any() || (boxes_[i].min.array() > hi.array()).any()) continue;
-        const auto& k = keep_outs_[i];
-        const auto d = geometry::distance(b.hole, *k.cylinder, {.upper_bound = k.clearance});
-        if (d.bounded) continue;
-        add_clearance(out, ViolationKind::BoreKeepout, {b.name(), k.name}, d.distance, k.clearance, d.witness_a, d.witness_b);
-      }
-    }
+    for (const mold::Bore& b : layout.bores)
+      for (const auto& [i, c] : cache_.get(hole_key(b.hole, b.diameter), [&] { return shortfalls(b); }))
+        add_clearance(out, ViolationKind::BoreKeepout, {b.name(), keep_outs_[i].name}, c.distance,
+                      keep_outs_[i].clearance, c.on_bore, c.on_other);
   }
 
  private:
+  // The keep-outs closer to the bore than their clearance, in keep-out order.
+  std::vector<std::pair<std::size_t, CachedClearance>> shortfalls(const mold::Bore& b) const {
+    std::vector<std::pair<std::size_t, CachedClearance>> out;
+    const geometry::Vec3 r = geometry::Vec3::Constant(b.hole.radius);
+    const geometry::Vec3 lo = b.hole.p0.cwiseMin(b.hole.p1) - r, hi = b.hole.p0.cwiseMax(b.hole.p1) + r;
+    for (std::size_t i = 0; i < keep_outs_.size(); ++i) {
+      if ((lo.array() > boxes_[i].max.array()).any() || (boxes_[i].min.array() > hi.array()).any()) continue;
+      const auto& k = keep_outs_[i];
+      const auto d = geometry::distance(b.hole, *k.cylinder, {.upper_bound = k.clearance});
+      if (!d.bounded) out.push_back({i, {false, d.distance, d.witness_a, d.witness_b}});
+    }
+    return out;
+  }
+
   std::vector<mold::KeepOut> keep_outs_;
   std::vector<geometry::Box> boxes_;
+  ExactCache<HoleKey, std::vector<std::pair<std::size_t, CachedClearance>>> cache_{1 << 14};
 };
 
 class KeepOutMeshStage final : public Stage {
@@ -47,18 +56,27 @@ class KeepOutMeshStage final : public Stage {
   }
   std::string name() const override { return "bore_keepout_meshes"; }
   void run(const mold::Layout& layout, Evaluation& out) const override {
-    for (const mold::Bore& b : layout.bores) {
-      for (const std::size_t k : indices_) {
+    for (const mold::Bore& b : layout.bores)
+      for (const auto& [k, c] : cache_.get(hole_key(b.hole, b.diameter), [&] { return shortfalls(b); })) {
         const auto& spec = scene_.spec().keep_outs[k];
-        const auto c = mesh::cylinder_clearance(*scene_.keep_out_bvh(k), b.hole, spec.clearance);
-        if (!c.bounded) add_clearance(out, ViolationKind::BoreKeepout, {b.name(), spec.name}, c.distance, spec.clearance, c.on_cylinder, c.on_surface);
+        add_clearance(out, ViolationKind::BoreKeepout, {b.name(), spec.name}, c.distance, spec.clearance, c.on_bore,
+                      c.on_other);
       }
-    }
   }
 
  private:
+  std::vector<std::pair<std::size_t, CachedClearance>> shortfalls(const mold::Bore& b) const {
+    std::vector<std::pair<std::size_t, CachedClearance>> out;
+    for (const std::size_t k : indices_) {
+      const auto c = mesh::cylinder_clearance(*scene_.keep_out_bvh(k), b.hole, scene_.spec().keep_outs[k].clearance);
+      if (!c.bounded) out.push_back({k, {false, c.distance, c.on_cylinder, c.on_surface}});
+    }
+    return out;
+  }
+
   const mold::Scene& scene_;
   std::vector<std::size_t> indices_;
+  ExactCache<HoleKey, std::vector<std::pair<std::size_t, CachedClearance>>> cache_{1 << 14};
 };
 
 }  // namespace

@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "mtcs/mold/decoder.h"
+#include "exact_cache.h"
 #include "stages.h"
 
 namespace mtcs::eval {
@@ -33,6 +35,29 @@ __attribute__((target_clones("avx2", "default"))) void nearer_squared(const floa
   }
 }
 
+// m[i] = min(m[i], c[i]): one more bore of a circuit.
+__attribute__((target_clones("avx2", "default"))) void min_into(float* __restrict m, const float* __restrict c,
+                                                                std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) m[i] = c[i] < m[i] ? c[i] : m[i];
+}
+
+// e[i] = sqrt(m[i]) - r: a circuit's squared distances to effective wall distances.
+__attribute__((target_clones("avx2", "default"))) void wall_distances(const float* __restrict m, double r,
+                                                                      double* __restrict e, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) e[i] = std::sqrt(double(m[i])) - r;
+}
+
+// Where circuit distances e are nearer than best: best = e, target = t.
+__attribute__((target_clones("avx2", "default"))) void take_nearer(const double* __restrict e, double t,
+                                                                   double* __restrict best,
+                                                                   double* __restrict target, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool nearer = e[i] < best[i];
+    best[i] = nearer ? e[i] : best[i];
+    target[i] = nearer ? t : target[i];
+  }
+}
+
 class ThermalStage final : public Stage {
  public:
   ThermalStage(const mold::Scene& scene, SurfaceSamples samples)
@@ -55,31 +80,21 @@ class ThermalStage final : public Stage {
 
   void run(const mold::Layout& layout, Evaluation& out) const override {
     const std::size_t n = samples_.size();
-    // Per sample: the nearest flow bore's effective distance and its diameter.
-    std::vector<double> best(n, no_bore_), diameter(n, 0);
-    std::vector<float> near2(n);
+    // Per sample: the nearest flow bore's effective distance and the target at its diameter
+    // (branch-free, so that the loop over the samples vectorises).
+    std::vector<double> best(n, no_bore_), target(n, target_.at(0));
     std::size_t b = 0;
     while (b < layout.bores.size()) {
-      // Bores of one circuit share a radius: minimise squared distances, one root per sample.
+      const std::size_t first = b;
       const int circuit = layout.bores[b].circuit;
-      const double r = layout.bores[b].diameter / 2;
-      std::fill(near2.begin(), near2.end(), std::numeric_limits<float>::infinity());
-      for (; b < layout.bores.size() && layout.bores[b].circuit == circuit; ++b) {
-        const Vec3 a = layout.bores[b].flow_start - origin_, d = layout.bores[b].flow_end - layout.bores[b].flow_start;
-        const float fa[3] = {float(a.x()), float(a.y()), float(a.z())};
-        const float fd[3] = {float(d.x()), float(d.y()), float(d.z())};
-        const float dd = fd[0] * fd[0] + fd[1] * fd[1] + fd[2] * fd[2];
-        nearer_squared(xs_.data(), ys_.data(), zs_.data(), n, fa, fd, dd > 0 ? 1 / dd : 0, near2.data());
-      }
-      for (std::size_t i = 0; i < n; ++i) {
-        const double e = std::sqrt(double(near2[i])) - r;
-        if (e < best[i]) best[i] = e, diameter[i] = 2 * r;
-      }
+      while (b < layout.bores.size() && layout.bores[b].circuit == circuit) ++b;
+      const double r = layout.bores[first].diameter / 2, t = target_.at(2 * r);
+      take_nearer(circuit_distances(layout, first, b, r).get(), t, best.data(), target.data(), n);
     }
     if (uniformity_slot_ >= 0) {
       double sum = 0;
       for (std::size_t i = 0; i < n; ++i) {
-        const double dev = best[i] - target_.at(diameter[i] > 0 ? diameter[i] : 0);
+        const double dev = best[i] - target[i];
         sum += samples_.weight[i] * dev * dev;
       }
       out.objectives[std::size_t(uniformity_slot_)] = std::sqrt(sum / total_);
@@ -88,6 +103,41 @@ class ThermalStage final : public Stage {
   }
 
  private:
+  // e_i to the nearest bore of one circuit (bores [first, last) of the layout, radius r). Bores
+  // of one circuit share a radius: squared distances are minimised, one root per sample.
+  const std::unique_ptr<double[]>& circuit_distances(const mold::Layout& layout, std::size_t first,
+                                                     std::size_t last, double r) const {
+    std::vector<double> key{r};
+    for (std::size_t b = first; b < last; ++b) {
+      const auto& bore = layout.bores[b];
+      key.insert(key.end(), {bore.flow_start.x(), bore.flow_start.y(), bore.flow_start.z(), bore.flow_end.x(),
+                             bore.flow_end.y(), bore.flow_end.z()});
+    }
+    return circuits_.get(key, [&] {
+      const std::size_t n = samples_.size();
+      std::vector<float> near2(n, std::numeric_limits<float>::infinity());
+      for (std::size_t b = first; b < last; ++b) min_into(near2.data(), bore_squared(layout.bores[b]).data(), n);
+      auto e = std::make_unique_for_overwrite<double[]>(n);
+      wall_distances(near2.data(), r, e.get(), n);
+      return e;
+    });
+  }
+
+  // Squared single-precision distance of every sample to one bore's flow segment.
+  const std::vector<float>& bore_squared(const mold::Bore& bore) const {
+    const std::array<double, 6> key{bore.flow_start.x(), bore.flow_start.y(), bore.flow_start.z(),
+                                    bore.flow_end.x(),   bore.flow_end.y(),   bore.flow_end.z()};
+    return bores_.get(key, [&] {
+      std::vector<float> m(samples_.size(), std::numeric_limits<float>::infinity());
+      const Vec3 a = bore.flow_start - origin_, d = bore.flow_end - bore.flow_start;
+      const float fa[3] = {float(a.x()), float(a.y()), float(a.z())};
+      const float fd[3] = {float(d.x()), float(d.y()), float(d.z())};
+      const float dd = fd[0] * fd[0] + fd[1] * fd[1] + fd[2] * fd[2];
+      nearer_squared(xs_.data(), ys_.data(), zs_.data(), m.size(), fa, fd, dd > 0 ? 1 / dd : 0, m.data());
+      return m;
+    });
+  }
+
   SurfaceSamples samples_;
   double total_;
   mold::Length target_;
@@ -95,6 +145,9 @@ class ThermalStage final : public Stage {
   Vec3 origin_;     // the block's corner: single-precision coordinates are relative to it
   std::vector<float> xs_, ys_, zs_;
   int uniformity_slot_ = -1, worst_slot_ = -1;
+  // Per thread, by exact geometry: a child's unchanged circuits and bores are not recomputed.
+  ExactCache<std::vector<double>, std::unique_ptr<double[]>> circuits_{512};
+  ExactCache<std::array<double, 6>, std::vector<float>> bores_{2048};
 };
 
 }  // namespace

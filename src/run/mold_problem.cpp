@@ -125,6 +125,12 @@ void MoldProblem::mutate(opt::Genotype& x, const std::vector<double>& steps, opt
   mold::Genome g = genome(x);
   const double sigma = steps.front();
   const auto& lim = spec_.circuits;
+  // With mutation.moves, each hole (a run of aligned waypoints) or waypoint moves with the
+  // probability that moves `moves` of them on average: a child keeps most of its parent's bores.
+  int parts = 0, moved = 0;
+  if (rates_.moves > 0)
+    for (const auto& c : g.circuits) parts += movable_parts(c);
+  const double move_probability = parts > 0 ? std::min(1.0, rates_.moves / parts) : 1.0;
   // Structural moves.
   if (rng.uniform() < rates_.circuit) {
     if (int(g.circuits.size()) < lim.max && (rng.uniform() < 0.5 || int(g.circuits.size()) <= lim.min))
@@ -152,7 +158,9 @@ void MoldProblem::mutate(opt::Genotype& x, const std::vector<double>& steps, opt
       idx = std::clamp(idx + (rng.uniform() < 0.5 ? -1 : 1), 0, int(d.size()) - 1);
       c.diameter = d[std::size_t(idx)];
     }
-    if (spec_.drilling.axis_parallel) {
+    if (rates_.moves > 0) {
+      moved += move_some(c, sigma, move_probability, rng);
+    } else if (spec_.drilling.axis_parallel) {
       // Move holes, not points: along each axis, consecutive waypoints that share the
       // coordinate (the ends of a hole across it) shift together, so aligned holes stay
       // aligned instead of breaking into zig-zags.
@@ -170,7 +178,45 @@ void MoldProblem::mutate(opt::Genotype& x, const std::vector<double>& steps, opt
       repair(c);
     }
   }
+  if (rates_.moves > 0 && moved == 0 && !g.circuits.empty()) {
+    // Every child moves something: one circuit, all of whose moves are then certain.
+    mold::Circuit& c = g.circuits[std::size_t(rng.below(int(g.circuits.size())))];
+    move_some(c, sigma, 1.0, rng);
+    repair(c);
+    if (access_) {
+      aim_bores(*access_, pipeline_.scene(), c, rng);
+      repair(c);
+    }
+  }
   x = encode(g);
+}
+
+int MoldProblem::movable_parts(const mold::Circuit& c) const {
+  if (!spec_.drilling.axis_parallel) return int(c.waypoints.size());
+  int n = 0;
+  for (int k = 0; k < 3; ++k) n += int(aligned_runs(c.waypoints, k).size());
+  return n;
+}
+
+int MoldProblem::move_some(mold::Circuit& c, double sigma, double probability, opt::Rng& rng) const {
+  auto& w = c.waypoints;
+  int moved = 0;
+  if (spec_.drilling.axis_parallel) {
+    for (int k = 0; k < 3; ++k)
+      for (const auto& [first, last] : aligned_runs(w, k)) {
+        if (rng.uniform() >= probability) continue;
+        const double shift = sigma * rng.normal();
+        for (std::size_t m = first; m < last; ++m) w[m][k] += shift;
+        ++moved;
+      }
+  } else {
+    for (Vec3& p : w) {
+      if (rng.uniform() >= probability) continue;
+      p += sigma * Vec3(rng.normal(), rng.normal(), rng.normal());
+      ++moved;
+    }
+  }
+  return moved;
 }
 
 opt::Genotype MoldProblem::recombine(const opt::Genotype& a, const opt::Genotype& b, opt::Rng& rng) const {

@@ -23,6 +23,9 @@ struct MutationRates {
   // With drilling.access_map and angled holes: new and mutated circuits have their blocked bores
   // turned to free directions of the accessibility map at their entry (src/run/aim_bores.h).
   bool access_guided = true;
+  // Holes (runs of aligned waypoints; waypoints for angled holes) moved per offspring on average,
+  // at least one; 0: all of them, every time.
+  double moves = 0;
 };
 
 class MoldProblem final : public opt::Problem {
@@ -63,6 +66,10 @@ class MoldProblem final : public opt::Problem {
   mold::Circuit random_circuit(opt::Rng& rng) const;
   // Puts a port back on its face (nearest allowed one) and interior points inside the block.
   void repair(mold::Circuit& c) const;
+  // The holes (or waypoints) of a circuit the geometric move acts on, and the move itself: each
+  // shifted by sigma N(0, 1) with `probability`; returns how many moved.
+  int movable_parts(const mold::Circuit& c) const;
+  int move_some(mold::Circuit& c, double sigma, double probability, opt::Rng& rng) const;
   opt::Score score(const eval::Pipeline& pipeline, const opt::Genotype& g) const;
 
   const eval::Pipeline& pipeline_;

@@ -1,0 +1,88 @@
+// The stages keep each bore's (and bore pair's, and circuit's) results by exact geometry
+// (src/eval/exact_cache.h): a child evaluated right after its parent reuses the parent's
+// unchanged bores. That must change nothing: for every mutation operator, the child's
+// evaluation through a pipeline that has just scored the parent equals, bit for bit, its
+// evaluation through a second pipeline that has never seen the parent.
+
+#include <catch2/catch.hpp>
+
+#include "mtcs/eval/pipeline.h"
+#include "mtcs/mold/decoder.h"
+#include "mtcs/opt/rng.h"
+#include "mtcs/run/session.h"
+
+using namespace mtcs;
+
+namespace {
+
+void require_identical(const eval::Evaluation& a, const eval::Evaluation& b) {
+  REQUIRE(a.objectives == b.objectives);
+  REQUIRE(a.violation == b.violation);
+  REQUIRE(a.violations.size() == b.violations.size());
+  for (std::size_t i = 0; i < a.violations.size(); ++i) {
+    const auto &x = a.violations[i], &y = b.violations[i];
+    CHECK(x.kind == y.kind);
+    CHECK(x.elements == y.elements);
+    CHECK(x.distance == y.distance);
+    CHECK(x.margin == y.margin);
+    CHECK(x.amount == y.amount);
+    CHECK(x.where == y.where);
+    CHECK(x.closest == y.closest);
+  }
+}
+
+// Bores of `child` whose hole is exactly one of `parent`'s.
+int shared_bores(const mold::Layout& parent, const mold::Layout& child) {
+  int n = 0;
+  for (const auto& c : child.bores)
+    for (const auto& p : parent.bores)
+      if (c.hole.p0 == p.hole.p0 && c.hole.p1 == p.hole.p1 && c.hole.radius == p.hole.radius) {
+        ++n;
+        break;
+      }
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("A child scored after its parent equals a cold score, for every mutation operator", "[run][incremental]") {
+  const std::string mold = GENERATE(std::string("plate_wall_distance"), std::string("gear"));
+  const run::Session session(MTCS_SOURCE_DIR "/molds/" + mold + ".yaml");
+  const mold::Scene& scene = session.scene();
+  const eval::Pipeline warm(scene), cold(scene);
+  struct Operator {
+    const char* name;
+    run::MutationRates rates;
+  };
+  // Each structural operator alone, with one hole moved (not all): what it changes is all that changes.
+  const run::MutationRates none{.insert = 0, .remove = 0, .snap = 0, .diameter = 0, .circuit = 0, .moves = 1};
+  auto with = [&](auto field, double rate) {
+    run::MutationRates r = none;
+    r.*field = rate;
+    return r;
+  };
+  const std::vector<Operator> operators{
+      {"insert", with(&run::MutationRates::insert, 1)},   {"remove", with(&run::MutationRates::remove, 1)},
+      {"snap", with(&run::MutationRates::snap, 1)},       {"diameter", with(&run::MutationRates::diameter, 1)},
+      {"circuit", with(&run::MutationRates::circuit, 1)}, {"every hole moves", with(&run::MutationRates::moves, 0)},
+      {"two holes move", with(&run::MutationRates::moves, 2)}, {"the run's rates", session.config().mutation}};
+  int shared = 0;
+  for (const auto& op : operators) {
+    SECTION(std::string(op.name)) {
+      const run::MoldProblem problem(session.pipeline(), {}, op.rates);
+      opt::Rng rng(7);
+      for (int i = 0; i < 12; ++i) {
+        const opt::Genotype parent = problem.sample(rng);
+        opt::Genotype child = parent;
+        problem.mutate(child, problem.initial_steps(child), rng);
+        const mold::Layout p = mold::decode(scene, problem.genome(parent)), c = mold::decode(scene, problem.genome(child));
+        warm.evaluate(p);
+        INFO(mold << ", " << op.name << ", child " << i);
+        require_identical(warm.evaluate(c), cold.evaluate(c));
+        shared += shared_bores(p, c);
+      }
+      // The operators that keep bores do exercise the cached path.
+      if (op.rates.moves > 0) CHECK(shared > 0);
+    }
+  }
+}
