@@ -1,0 +1,22 @@
+#pragma once
+// A stored member as the shop receives it: the genome rounded and tidied by run::shop_layout (as
+// optimize writes best.layout.yaml and replay the front layouts), re-scored as written, and its
+// hole table (run::shop_plan: what bores.csv, bores.stl and the exports give).
+
+#include "mtcs/mold/genome.h"
+#include "mtcs/mold/layout.h"
+#include "mtcs/opt/population.h"
+#include "mtcs/run/session.h"
+
+namespace mtcs::report {
+
+struct ShopMember {
+  mold::Genome genome;  // best.layout.yaml's layout
+  mold::Layout layout;  // decoded (what the pipeline and the thermal model score)
+  mold::Layout plan;    // hole ends rounded to the tolerance (bores.csv)
+  opt::Score score;     // as optimize re-scores the written layout
+};
+
+ShopMember shop_member(const run::Session& session, const opt::Genotype& x);
+
+}  // namespace mtcs::report
