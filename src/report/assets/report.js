@@ -18,12 +18,13 @@ function decode(base64, Type) {
   for (let i = 0; i < text.length; ++i) bytes[i] = text.charCodeAt(i);
   return new Type(bytes.buffer);
 }
+const numberFormat = new Intl.NumberFormat('en-US', { maximumFractionDigits: 4 });  // toLocaleString builds one per call
 function fmt(v, digits = 3) {
   if (v === null || v === undefined || Number.isNaN(v)) return '\u2013';
   if (!Number.isFinite(v)) return v > 0 ? '\u221e' : '\u2212\u221e';
   const a = Math.abs(v);
   if (a !== 0 && (a >= 1e6 || a < 1e-3)) return v.toExponential(2);
-  return Number(v.toPrecision(digits + (a >= 1000 ? 1 : 0))).toLocaleString('en-US', { maximumFractionDigits: 4 });
+  return numberFormat.format(Number(v.toPrecision(digits + (a >= 1000 ? 1 : 0))));
 }
 const withUnit = (v, unit) => (unit ? `${fmt(v)} ${unit}` : fmt(v));
 const objectiveLabel = (o) => (o.unit ? `${o.name.replace(/_/g, ' ')} (${o.unit})` : o.name.replace(/_/g, ' '));
@@ -88,7 +89,9 @@ scene3.add(sun);
 const sectionPlane = new THREE.Plane(new THREE.Vector3(0, 0, 1), 1e12);
 if (renderer) renderer.localClippingEnabled = true;
 function material(params) {
-  const m = new THREE.MeshStandardMaterial({ roughness: 0.55, metalness: 0.05, clippingPlanes: [sectionPlane], ...params });
+  // Lambert, not the physically based standard material: its shaders compile several times
+  // faster in software WebGL, the bulk of the first frame (experiments/report/README.md).
+  const m = new THREE.MeshLambertMaterial({ clippingPlanes: [sectionPlane], ...params });
   return m;
 }
 function lineMaterial(params) {
@@ -279,7 +282,7 @@ if (data.temperature) {
   const colors = new Float32Array(values.length * 3);
   values.forEach((v, i) => colors.set(Number.isFinite(v) ? rampColor((v - temperatureMin) / (temperatureMax - temperatureMin)) : [0.6, 0.6, 0.6], 3 * i));
   g.setAttribute('color', new THREE.BufferAttribute(colors, 3));
-  const m = new THREE.Mesh(g, material({ vertexColors: true, roughness: 0.9, polygonOffset: true, polygonOffsetFactor: -1, side: THREE.DoubleSide }));
+  const m = new THREE.Mesh(g, material({ vertexColors: true, polygonOffset: true, polygonOffsetFactor: -1, side: THREE.DoubleSide }));
   temperatureLayer.add(m);
 } else {
   setLayerAvailable('temperature', false, 'no temperature in this report');
@@ -291,7 +294,7 @@ function showLayout(member) {
   const layout = member.layout;
   const mats = new Map();
   const boreMaterial = (c) => {
-    if (!mats.has(c)) mats.set(c, material({ color: circuitColor(c), roughness: 0.35 }));
+    if (!mats.has(c)) mats.set(c, material({ color: circuitColor(c) }));
     return mats.get(c);
   };
   const plugMaterial = material({ color: 0x222222 });
