@@ -132,6 +132,8 @@ StoredLayout stored_layout(const std::string& run_dir, std::optional<int> genera
     throw io::InputError(db_path, 0, 0, "--member",
                          "generation " + std::to_string(s.generation) + " has members 0.." + std::to_string(g->population.size() - 1));
   s.layout = shop_member(*s.session, g->population[std::size_t(s.member)].x).plan;
+  if (s.member == 0 && s.generation == summaries.back().index)
+    if (const std::string polished = polish_note(run_dir); !polished.empty()) s.note += (s.note.empty() ? "" : "; ") + polished;
   return s;
 }
 

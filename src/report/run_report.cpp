@@ -76,6 +76,8 @@ RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
   if (!meta.count("mold")) throw io::InputError(db_path, 0, 0, "", "a test-problem run: no mold to report on");
   RunReport report;
   const run::Session session(run::stored_mold_spec(meta, options.mold, &report.note), meta.at("config"), db_path + ":config");
+  if (const std::string polished = polish_note(run_dir); !polished.empty())
+    report.note += (report.note.empty() ? "" : "; ") + polished;
   const mold::Scene& scene = session.scene();
   const auto& names = session.objective_names();
 

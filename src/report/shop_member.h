@@ -3,6 +3,8 @@
 // optimize writes best.layout.yaml and replay the front layouts), re-scored as written, and its
 // hole table (run::shop_plan: what bores.csv, bores.stl and the exports give).
 
+#include <string>
+
 #include "mtcs/mold/genome.h"
 #include "mtcs/mold/layout.h"
 #include "mtcs/opt/population.h"
@@ -18,5 +20,10 @@ struct ShopMember {
 };
 
 ShopMember shop_member(const run::Session& session, const opt::Genotype& x);
+
+// What the run store cannot show: `optimize --polish` refines the best after the last generation
+// and writes that to best.layout.yaml without storing it. A sentence saying so when RUN_DIR's
+// summary.json records a polish that improved the best; empty otherwise.
+std::string polish_note(const std::string& run_dir);
 
 }  // namespace mtcs::report

@@ -13,6 +13,7 @@
 #include "mtcs/io/input_error.h"
 #include "mtcs/report/layout_export.h"
 #include "mtcs/report/run_report.h"
+#include "report/shop_member.h"
 
 namespace {
 
@@ -210,4 +211,14 @@ TEST_CASE("export: every bore of the run's best layout as a closed tube of the r
     CHECK(step.code == 2);
     CHECK(step.err.find("libocct-data-exchange-dev") != std::string::npos);
   }
+}
+
+TEST_CASE("report: a run whose best was polished says that best.layout.yaml is not the stored best", "[report]") {
+  const path dir = mtcs_test::scratch("report", "polished");
+  mtcs_test::fs::create_directories(dir);
+  std::ofstream(dir / "summary.json") << R"({"polish": {"evaluations": 501, "improved": true, "before": 9.03, "after": 9.01}})";
+  CHECK(mtcs::report::polish_note(dir.string()).find("polish") != std::string::npos);
+  std::ofstream(dir / "summary.json") << R"({"polish": {"evaluations": 501, "improved": false, "before": 9.03, "after": 9.03}})";
+  CHECK(mtcs::report::polish_note(dir.string()).empty());
+  CHECK(mtcs::report::polish_note(plate_run().string()).empty());  // no polish: the stored best is optimize's
 }
