@@ -161,7 +161,10 @@ if (controls) {
 canvas.addEventListener('keydown', (e) => { if (e.key === 'r' || e.key === 'R') view(all); });
 $('reset-view').addEventListener('click', () => view(all));
 new ResizeObserver(resize).observe(canvas);
+// First view: the smaller component (a pin in a plate, a figure on a gear) and where they meet.
+const focus = [layers.a, layers.b].map((g) => new THREE.Box3().setFromObject(g))
+  .sort((p, q) => p.getSize(new THREE.Vector3()).length() - q.getSize(new THREE.Vector3()).length())[0];
 resize();
-view(all);
+view(focus.union(new THREE.Box3().setFromObject(layers.segments)));
 window.mtcsInterference = { data, frames: () => frames };
 document.body.dataset.ready = '1';
