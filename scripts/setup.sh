@@ -11,6 +11,8 @@ PACKAGES=(
   python3 python3-matplotlib
   clang-14 libfuzzer-14-dev
   nodejs chromium
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-ocaf-dev
+  libocct-data-exchange-dev libocct-visualization-dev
 )
 
 # The report page's browser test: puppeteer-core (and three.js, which src/report/assets vendors),

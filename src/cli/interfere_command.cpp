@@ -16,6 +16,7 @@
 #include "mtcs/mesh/mesh_check.h"
 #include "mtcs/mesh/mesh_io.h"
 #include "mtcs/mold/layout_io.h"
+#include "mtcs/report/interference_page.h"
 #include "mtcs/run/layout_interference.h"
 #include "mtcs/run/session.h"
 
@@ -50,7 +51,7 @@ int print_layout_interference(const std::string& mold_path, const std::string& l
 
 Command add_interfere_command(CLI::App& app) {
   struct Options {
-    std::string a, b, out, layout;
+    std::string a, b, out, layout, page;
     std::vector<double> translate{0, 0, 0};
     double touch_tolerance = -1;
     bool json = false;
@@ -72,6 +73,7 @@ Command add_interfere_command(CLI::App& app) {
       "  mtcs interfere slide.stl lock.stl\n"
       "  mtcs interfere core.off pin.off --translate 0,0,12.5 --out report.ply\n"
       "  mtcs interfere a.stl b.stl --touch-tolerance 0.01 --json > report.json\n"
+      "  mtcs interfere core.off pin.off --report interference.html\n"
       "  mtcs interfere molds/cup.yaml --layout molds/cup.layout.yaml\n"
       "Each mesh must bound a solid: closed, manifold, consistently oriented, no self-intersection.\n"
       "Exit codes: 0 done (whether or not they interfere), 2 bad input (file and reason printed).");
@@ -84,6 +86,7 @@ Command add_interfere_command(CLI::App& app) {
                   "(default: 1e-9 x the diagonal of both meshes' bounding box; 0: every contact counts)")
       ->check(CLI::NonNegativeNumber);
   sub->add_option("--out", o->out, "write both meshes as PLY: interfering triangles red, contacts yellow");
+  sub->add_option("--report", o->page, "write an HTML page: both components, the interfering triangles, the pairs by solid and face");
   sub->add_flag("--json", o->json, "print a JSON object (pairs, distance, groups, nesting) instead of text");
 
   return {sub, [o] {
@@ -106,12 +109,18 @@ Command add_interfere_command(CLI::App& app) {
               file.commit();
             }
             const auto groups = mesh::group_by_face(report, pa, pb);
+            if (!o->page.empty()) {
+              io::AtomicFile file(o->page);
+              file.stream() << mtcs::report::interference_page({o->a, o->b, o->translate, tolerance}, a, b, report, pa, pb, groups);
+              file.commit();
+            }
             if (o->json) {
               mesh::write_interference_json(std::cout, {o->a, o->b, o->translate, tolerance}, report, pa, pb, groups);
               return 0;
             }
             mesh::write_interference_text(std::cout, {o->a, o->b, o->translate, tolerance}, a, b, report, pa, pb, groups);
-            if (!o->out.empty()) std::printf("wrote %s\n", o->out.c_str());
+            for (const std::string& f : {o->out, o->page})
+              if (!f.empty()) std::printf("wrote %s\n", f.c_str());
             return 0;
           }};
 }

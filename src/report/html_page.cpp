@@ -58,15 +58,15 @@ std::string import_map() {
 
 }  // namespace
 
-std::string html_page(const std::string& title, const std::string& data_json) {
-  return fill(assets::text("report.html"),
+std::string html_page(const std::string& title, const std::string& data_json, const std::string& page) {
+  return fill(assets::text(page + ".html"),
               {{"TITLE", escape_html(title)},
                {"THREE_LICENSE", replace_all(assets::text("three/LICENSE"), "--", "- -")},  // inside an HTML comment
                {"STYLE", assets::text("report.css")},
                {"IMPORT_MAP", import_map()},
                // "</" inside the JSON would end its script element; "<\/" is the same string in JSON.
                {"DATA", replace_all(data_json, "</", "<\\/")},
-               {"SCRIPT", assets::text("report.js")}});
+               {"SCRIPT", assets::text(page + ".js")}});
 }
 
 }  // namespace mtcs::report

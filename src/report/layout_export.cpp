@@ -11,7 +11,10 @@
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/run/run_record.h"
+#include "mtcs/run/shop_layout.h"
 #include "mtcs/store/run_store.h"
+#include "shop_member.h"
+#include "step_writer.h"
 
 namespace mtcs::report {
 namespace {
@@ -94,6 +97,7 @@ void write_obj(std::ostream& out, const mold::Layout& layout) {
 }  // namespace
 
 std::optional<ExportFormat> export_format(const std::string& name) {
+  if (name == "step") return ExportFormat::Step;
   if (name == "vtp") return ExportFormat::Vtp;
   if (name == "obj") return ExportFormat::Obj;
   if (name == "csv") return ExportFormat::Csv;
@@ -102,6 +106,7 @@ std::optional<ExportFormat> export_format(const std::string& name) {
 
 void export_layout(const std::string& path, const mold::Layout& layout, ExportFormat format) {
   if (format == ExportFormat::Csv) return mold::save_bores_csv(path, layout);
+  if (format == ExportFormat::Step) return write_step(path, layout);
   io::AtomicFile file(path);
   if (format == ExportFormat::Vtp) write_vtp(file.stream(), layout);
   else write_obj(file.stream(), layout);
@@ -126,8 +131,31 @@ StoredLayout stored_layout(const std::string& run_dir, std::optional<int> genera
   if (s.member < 0 || std::size_t(s.member) >= g->population.size())
     throw io::InputError(db_path, 0, 0, "--member",
                          "generation " + std::to_string(s.generation) + " has members 0.." + std::to_string(g->population.size() - 1));
-  s.layout = mold::decode(s.session->scene(), s.session->problem().genome(g->population[std::size_t(s.member)].x));
+  s.layout = shop_member(*s.session, g->population[std::size_t(s.member)].x).plan;
+  if (s.member == 0 && s.generation == summaries.back().index)
+    if (const std::string polished = polish_note(run_dir); !polished.empty()) s.note += (s.note.empty() ? "" : "; ") + polished;
   return s;
+}
+
+StoredLayout layout_to_export(const std::string& source, const std::string& layout_file, std::optional<int> generation,
+                              std::optional<int> member) {
+  if (layout_file.empty()) return stored_layout(source, generation, member);
+  StoredLayout s;  // the scene alone: decoding needs no pipeline (a thermal model can take seconds)
+  const mold::Scene scene(mold::load_mold_spec(source));
+  s.layout = run::shop_plan(mold::decode(scene, mold::load_layout(layout_file, scene.spec())));
+  return s;
+}
+
+Exported export_bores(const ExportRequest& r) {
+  const auto format = export_format(r.format);
+  if (!format) throw io::InputError("", 0, 0, "--format", "'" + r.format + "': give step, vtp, obj or csv");
+  if (*format == ExportFormat::Step && !step_available()) throw io::InputError("", 0, 0, "--format", kStepMissing);
+  StoredLayout s = layout_to_export(r.source, r.layout_file, r.generation, r.member);
+  const std::filesystem::path source(r.source);
+  const std::filesystem::path folder = r.layout_file.empty() ? source : source.parent_path();
+  Exported e{r.out.empty() ? (folder / ("bores." + r.format)).string() : r.out, s.note, s.layout.bores.size()};
+  export_layout(e.path, s.layout, *format);
+  return e;
 }
 
 }  // namespace mtcs::report

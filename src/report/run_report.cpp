@@ -21,13 +21,13 @@
 #include "base64.h"
 #include "mtcs/eval/cavity_temperature.h"
 #include "mtcs/io/input_error.h"
-#include "mtcs/mold/decoder.h"
 #include "mtcs/opt/sms_emoa.h"
 #include "mtcs/report/html_page.h"
 #include "mtcs/run/run_record.h"
 #include "mtcs/run/session.h"
 #include "mtcs/store/run_store.h"
 #include "scene_json.h"
+#include "shop_member.h"
 
 namespace mtcs::report {
 namespace {
@@ -76,6 +76,8 @@ RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
   if (!meta.count("mold")) throw io::InputError(db_path, 0, 0, "", "a test-problem run: no mold to report on");
   RunReport report;
   const run::Session session(run::stored_mold_spec(meta, options.mold, &report.note), meta.at("config"), db_path + ":config");
+  if (const std::string polished = polish_note(run_dir); !polished.empty())
+    report.note += (report.note.empty() ? "" : "; ") + polished;
   const mold::Scene& scene = session.scene();
   const auto& names = session.objective_names();
 
@@ -108,24 +110,31 @@ RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
   data["evaluations"] = generation->evaluations;
   data["shown"] = report.member;
 
-  const auto front = opt::SmsEmoa::front(*generation);
+  // Every member as the shop receives it (rounded, tidied, re-scored): the best is optimize's
+  // best.layout.yaml and bores.csv, the front members replay's layouts; the front of those scores.
+  std::vector<ShopMember> shop;
+  opt::Generation rounded = *generation;
+  for (std::size_t r = 0; r < population.size(); ++r) {
+    shop.push_back(shop_member(session, population[r].x));
+    rounded.population[r].score = shop.back().score;
+  }
+  const auto front = opt::SmsEmoa::front(rounded);
   data["members"] = Json::array();
   mold::Layout shown;
   for (std::size_t r = 0; r < population.size(); ++r) {
-    const auto& ind = population[r];
-    const mold::Layout layout = mold::decode(scene, session.problem().genome(ind.x));
-    const eval::Evaluation e = session.pipeline().evaluate(layout);
-    const bool on_front = ind.score.feasible && std::find(front.begin(), front.end(), ind.score.objectives) != front.end();
+    const opt::Score& score = shop[r].score;
+    const eval::Evaluation e = session.pipeline().evaluate(shop[r].layout);
+    const bool on_front = score.feasible && std::find(front.begin(), front.end(), score.objectives) != front.end();
     report.front += on_front;
     data["members"].push_back({{"rank", r},
-                               {"objectives", ind.score.objectives},
-                               {"value", ind.score.value},
-                               {"feasible", ind.score.feasible},
-                               {"violation", ind.score.violation},
+                               {"objectives", score.objectives},
+                               {"value", score.value},
+                               {"feasible", score.feasible},
+                               {"violation", score.violation},
                                {"front", on_front},
-                               {"layout", layout_json(layout)},
+                               {"layout", layout_json(shop[r].plan)},
                                {"violations", violations_json(e.violations)}});
-    if (int(r) == report.member) shown = layout;
+    if (int(r) == report.member) shown = shop[r].layout;
   }
   report.members = population.size();
   report.bores = shown.bores.size();

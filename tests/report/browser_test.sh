@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# ctest: the report of a small plate run (generation 0: feasible and infeasible layouts, 3 to 12
-# bores, violated clearances) opened in headless chromium by report_page.mjs.
+# ctest: the report of a small run on the physics plate (generation 0: feasible and infeasible
+# layouts, violated clearances, points of the front that overlap) opened in headless chromium by
+# report_page.mjs; then the interference page of two meshes by interference_page.mjs.
 # Exit 77 (ctest: skipped, with the reason printed) only when chromium is absent.
 # Usage: browser_test.sh MTCS_BINARY SOURCE_DIR WORK_DIR
 set -euo pipefail
@@ -14,3 +15,10 @@ mkdir -p "$work"
 "$mtcs" optimize "$src/molds/plate_wall_distance.yaml" --evaluations 400 --seed 3 --out "$work/run" --quiet
 "$mtcs" report "$work/run" --generation 0 --no-temperature --out "$work/report.html" --quiet
 node "$src/tests/report/report_page.mjs" "$work/report.html"
+# The interference page: homer against the gear at the certified overlap placement; the pair
+# count it must list is the certified one (tests/data/mesh_interference.csv).
+row=$(grep '^homer,mcad_herringbone_gear,' "$src/tests/data/mesh_interference.csv" | awk -F, '$6 > 0' | head -1)
+IFS=, read -r _ _ tx ty tz pairs _ <<<"$row"
+"$mtcs" interfere "$src/tests/data/meshes/homer.off" "$src/tests/data/meshes/mcad_herringbone_gear.off" \
+  --translate "$tx,$ty,$tz" --report "$work/interference.html" >/dev/null
+node "$src/tests/report/interference_page.mjs" "$work/interference.html" "$pairs"

@@ -4,7 +4,8 @@
 //   - the 3-D canvas is not blank: a screenshot of it, decoded again by the browser, has most
 //     pixels off the background and the colour of circuit 0's bores among them;
 //   - clicking another point of the Pareto front loads that layout: the label and the bore
-//     count in the DOM change to the clicked member's.
+//     count in the DOM change to the clicked member's; on overlapping points, repeated clicks
+//     step through every member of the stack and a list names them.
 // Usage: node report_page.mjs REPORT.html [--screenshot PAGE.png] [--width W --height H]
 // Exit 0: passed; 1: failed; 77: skipped (no chromium on this machine).
 import fs from 'node:fs';
@@ -73,11 +74,16 @@ try {
     ready: performance.getEntriesByName('mtcs-drawn')[0].startTime,
     start: performance.getEntriesByName('mtcs-start')[0].startTime,
     built: performance.getEntriesByName('mtcs-built')[0].startTime,
+    parsed: performance.getEntriesByName('mtcs-data')[0]?.startTime,
+    scene: performance.getEntriesByName('mtcs-scene')[0]?.startTime,
     frames: window.mtcsReport.frames(),
   }));
   console.log(`loaded and drawn in ${seconds.toFixed(2)} s (page clock ${(timing.ready / 1000).toFixed(2)} s: ` +
     `scripts parsed at ${(timing.start / 1000).toFixed(2)} s, page built at ${(timing.built / 1000).toFixed(2)} s, ` +
     `first frame ${((timing.ready - timing.built) / 1000).toFixed(2)} s; ${timing.frames} frames)`);
+  if (timing.scene !== undefined)
+    console.log(`page clock parts: data parsed ${((timing.parsed - timing.start) / 1000).toFixed(3)} s, ` +
+      `static scene ${((timing.scene - timing.parsed) / 1000).toFixed(3)} s, layout, front and charts ${((timing.built - timing.scene) / 1000).toFixed(3)} s`);
   check(errors.length === 0, `no console errors${errors.length ? ': ' + errors.join(' | ') : ''}`);
   check(external.length === 0, `no network requests${external.length ? ': ' + external.join(' ') : ''}`);
 
@@ -132,14 +138,57 @@ try {
     return other ? { rank: other.rank, bores: bores(other) } : null;
   }, first.shown);
   check(target !== null, 'the front has a second layout to click');
+  // Click a member's point until it is shown: on a stack of overlapping points each click steps
+  // to the next member. The number of clicks it took, 0: never.
+  const clickMember = async (rank) => {
+    for (let k = 1; k <= 1 + (await page.evaluate(() => window.mtcsReport.data.members.length)); ++k) {
+      await page.click(`#front-plots .point[data-rank="${rank}"]`);
+      if ((await state()).shown === rank) return k;
+    }
+    return 0;
+  };
   if (target) {
-    await page.click(`#front-plots .point[data-rank="${target.rank}"]`);
+    check((await clickMember(target.rank)) > 0, `clicking member ${target.rank}'s point shows it`);
     const after = await state();
     console.log(`clicked member ${target.rank}: "${first.label}" (${first.bores} bores) -> "${after.label}" (${after.bores} bores)`);
     check(after.label !== first.label && after.label.includes(`member ${target.rank}`), 'clicking a front point changes the layout label');
     check(after.bores === target.bores, 'the bore count in the DOM is the clicked layout\'s');
     if (target.bores !== first.bores) check((await pixels()).hash !== before.hash, 'the 3-D view changes with the layout');
-    await page.click(`#front-plots .point[data-rank="${first.shown}"]`);
+    check((await clickMember(first.shown)) > 0, 'clicking the first member\'s point shows it again');
+  }
+  // The two closest points of any scatter (on the physics plate they overlap): a click on each
+  // one's centre shows that one, even where the other is drawn over it; within a few pixels they
+  // are one stack: clicking again steps to the other, and the list under the plots names both.
+  const closest = await page.evaluate(() => {
+    let best = null;
+    document.querySelectorAll('#front-plots .plot').forEach((plot, k) => {
+      const pts = [...plot.querySelectorAll('.point')].map((e) => ({ rank: Number(e.dataset.rank), c: e }));
+      for (let i = 0; i < pts.length; ++i)
+        for (let j = i + 1; j < pts.length; ++j) {
+          const d = Math.hypot(pts[i].c.cx.baseVal.value - pts[j].c.cx.baseVal.value, pts[i].c.cy.baseVal.value - pts[j].c.cy.baseVal.value);
+          if (!best || d < best.d) best = { plot: k, a: pts[i].rank, b: pts[j].rank, d };
+        }
+    });
+    if (!best) return null;
+    const plot = document.querySelectorAll('#front-plots .plot')[best.plot];
+    plot.scrollIntoView({ block: 'center' });
+    const centre = (rank) => { const r = plot.querySelector(`.point[data-rank="${rank}"]`).getBoundingClientRect(); return [r.x + r.width / 2, r.y + r.height / 2]; };
+    const scale = plot.querySelector('svg').getScreenCTM().a;
+    return { ...best, px: best.d * scale, ca: centre(best.a), cb: centre(best.b) };
+  });
+  check(closest !== null, 'a scatter has two points');
+  if (closest) {
+    console.log(`closest points: members ${closest.a} and ${closest.b}, ${closest.px.toFixed(1)} px apart (scatter ${closest.plot})`);
+    await page.mouse.click(...closest.cb);
+    check((await state()).shown === closest.b, `a click on member ${closest.b}'s centre shows it`);
+    await page.mouse.click(...closest.ca);
+    check((await state()).shown === closest.a, `a click on member ${closest.a}'s centre shows it`);
+    if (closest.px <= 7) {
+      await page.mouse.click(...closest.ca);
+      check((await state()).shown === closest.b, 'clicking the stack again steps to the other member');
+      const listed = await page.evaluate(() => [...document.querySelectorAll('#front-pick button')].map((b) => Number(b.dataset.rank)));
+      check(listed.includes(closest.a) && listed.includes(closest.b), `the list under the plots names both (${listed.join(', ')})`);
+    }
   }
   check(errors.length === 0, `still no console errors after the clicks${errors.length ? ': ' + errors.join(' | ') : ''}`);
   if (screenshot) {

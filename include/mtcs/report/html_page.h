@@ -7,7 +7,8 @@
 
 namespace mtcs::report {
 
-// `data_json`: the page's data (run_report.cpp documents the fields report.js reads).
-std::string html_page(const std::string& title, const std::string& data_json);
+// `data_json`: the page's data (run_report.cpp documents the fields report.js reads). `page`: the
+// template and script pair, report.html/.js (a run) or interference.html/.js (two components).
+std::string html_page(const std::string& title, const std::string& data_json, const std::string& page = "report");
 
 }  // namespace mtcs::report

@@ -6,21 +6,25 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 
 performance.mark('mtcs-start');  // three.js is loaded and parsed
 const data = JSON.parse(document.getElementById('report-data').textContent);
+performance.mark('mtcs-data');  // the data parsed
 const $ = (id) => document.getElementById(id);
 const CIRCUIT_COLORS = ['#1f77b4', '#2ca02c', '#9467bd', '#ff7f0e', '#17becf', '#8c564b', '#e377c2', '#7f7f7f'];
 const circuitColor = (c) => CIRCUIT_COLORS[c % CIRCUIT_COLORS.length];
 
 // ---------------------------------------------------------------- numbers and formats
 function decode(base64, Type) {
-  const bytes = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
+  const text = atob(base64);
+  const bytes = new Uint8Array(text.length);  // a plain loop: Uint8Array.from(text, fn) is ~5x slower
+  for (let i = 0; i < text.length; ++i) bytes[i] = text.charCodeAt(i);
   return new Type(bytes.buffer);
 }
+const numberFormat = new Intl.NumberFormat('en-US', { maximumFractionDigits: 4 });  // toLocaleString builds one per call
 function fmt(v, digits = 3) {
   if (v === null || v === undefined || Number.isNaN(v)) return '\u2013';
   if (!Number.isFinite(v)) return v > 0 ? '\u221e' : '\u2212\u221e';
   const a = Math.abs(v);
   if (a !== 0 && (a >= 1e6 || a < 1e-3)) return v.toExponential(2);
-  return Number(v.toPrecision(digits + (a >= 1000 ? 1 : 0))).toLocaleString('en-US', { maximumFractionDigits: 4 });
+  return numberFormat.format(Number(v.toPrecision(digits + (a >= 1000 ? 1 : 0))));
 }
 const withUnit = (v, unit) => (unit ? `${fmt(v)} ${unit}` : fmt(v));
 const objectiveLabel = (o) => (o.unit ? `${o.name.replace(/_/g, ' ')} (${o.unit})` : o.name.replace(/_/g, ' '));
@@ -85,7 +89,9 @@ scene3.add(sun);
 const sectionPlane = new THREE.Plane(new THREE.Vector3(0, 0, 1), 1e12);
 if (renderer) renderer.localClippingEnabled = true;
 function material(params) {
-  const m = new THREE.MeshStandardMaterial({ roughness: 0.55, metalness: 0.05, clippingPlanes: [sectionPlane], ...params });
+  // Lambert, not the physically based standard material: its shaders compile several times
+  // faster in software WebGL, the bulk of the first frame (experiments/report/README.md).
+  const m = new THREE.MeshLambertMaterial({ clippingPlanes: [sectionPlane], ...params });
   return m;
 }
 function lineMaterial(params) {
@@ -107,6 +113,42 @@ function meshGeometry(m) {
   g.computeVertexNormals();
   return g;
 }
+// The feature edges of an indexed mesh (dihedral angle above `degrees`, or open), as
+// THREE.EdgesGeometry draws them but keyed by vertex index instead of by a string of every
+// corner's coordinates: ~0.1 s instead of ~1 s on a 100k-triangle part (mesh_json's meshes share
+// their vertices).
+function featureEdges(g, degrees = 30) {
+  const pos = g.getAttribute('position').array, idx = g.getIndex().array;
+  const nv = pos.length / 3, nt = idx.length / 3, cos = Math.cos(degrees * Math.PI / 180);
+  const normals = new Float32Array(3 * nt);
+  for (let t = 0; t < nt; ++t) {
+    const a = 3 * idx[3 * t], b = 3 * idx[3 * t + 1], c = 3 * idx[3 * t + 2];
+    const ux = pos[b] - pos[a], uy = pos[b + 1] - pos[a + 1], uz = pos[b + 2] - pos[a + 2];
+    const vx = pos[c] - pos[a], vy = pos[c + 1] - pos[a + 1], vz = pos[c + 2] - pos[a + 2];
+    const nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx, len = Math.hypot(nx, ny, nz) || 1;
+    normals[3 * t] = nx / len; normals[3 * t + 1] = ny / len; normals[3 * t + 2] = nz / len;
+  }
+  const open = new Map();  // edge (lo * nv + hi) -> the first triangle seen on it
+  const lines = [];
+  const push = (i, j) => lines.push(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], pos[3 * j], pos[3 * j + 1], pos[3 * j + 2]);
+  for (let t = 0; t < nt; ++t) {
+    for (let e = 0; e < 3; ++e) {
+      const i = idx[3 * t + e], j = idx[3 * t + (e + 1) % 3];
+      const key = Math.min(i, j) * nv + Math.max(i, j);
+      const other = open.get(key);
+      if (other === undefined) { open.set(key, t); continue; }
+      open.delete(key);
+      const dot = normals[3 * t] * normals[3 * other] + normals[3 * t + 1] * normals[3 * other + 1] + normals[3 * t + 2] * normals[3 * other + 2];
+      if (dot <= cos) push(i, j);
+    }
+  }
+  for (const key of open.keys()) push(Math.floor(key / nv), key % nv);
+  const out = new THREE.BufferGeometry();
+  out.setAttribute('position', new THREE.Float32BufferAttribute(lines, 3));
+  return out;
+}
+const edgesOf = (g, box) => (box ? new THREE.EdgesGeometry(g, 30) : featureEdges(g, 30));
+
 // A solid cylinder from p0 to p1.
 function cylinder(p0, p1, radius, mat, segments = 28) {
   const a = v3(p0), b = v3(p1);
@@ -204,14 +246,14 @@ const temperatureLayer = addLayer('temperature', 'cavity temperature', !!data.te
   const faces = new THREE.Mesh(g, material({ color: 0x9fb3c8, transparent: true, opacity: 0.12, depthWrite: false, side: THREE.DoubleSide }));
   faces.renderOrder = 5;
   blockLayer.add(faces);
-  blockLayer.add(new THREE.LineSegments(new THREE.EdgesGeometry(g, 30), lineMaterial({ color: 0x5b6b80 })));
+  blockLayer.add(new THREE.LineSegments(edgesOf(g, b.box), lineMaterial({ color: 0x5b6b80 })));
 }
 // The part (cavity).
 if (data.scene.cavity) {
   const c = data.scene.cavity;
   const g = c.box ? boxGeometry(c.box) : meshGeometry(c.mesh);
   partLayer.add(new THREE.Mesh(g, material({ color: 0xd9a441, side: THREE.DoubleSide })));
-  partLayer.add(new THREE.LineSegments(new THREE.EdgesGeometry(g, 30), lineMaterial({ color: 0x8a6410 })));
+  partLayer.add(new THREE.LineSegments(edgesOf(g, c.box), lineMaterial({ color: 0x8a6410 })));
 } else {
   setLayerAvailable('part', false, 'this mold has no part');
 }
@@ -240,7 +282,7 @@ if (data.temperature) {
   const colors = new Float32Array(values.length * 3);
   values.forEach((v, i) => colors.set(Number.isFinite(v) ? rampColor((v - temperatureMin) / (temperatureMax - temperatureMin)) : [0.6, 0.6, 0.6], 3 * i));
   g.setAttribute('color', new THREE.BufferAttribute(colors, 3));
-  const m = new THREE.Mesh(g, material({ vertexColors: true, roughness: 0.9, polygonOffset: true, polygonOffsetFactor: -1, side: THREE.DoubleSide }));
+  const m = new THREE.Mesh(g, material({ vertexColors: true, polygonOffset: true, polygonOffsetFactor: -1, side: THREE.DoubleSide }));
   temperatureLayer.add(m);
 } else {
   setLayerAvailable('temperature', false, 'no temperature in this report');
@@ -252,7 +294,7 @@ function showLayout(member) {
   const layout = member.layout;
   const mats = new Map();
   const boreMaterial = (c) => {
-    if (!mats.has(c)) mats.set(c, material({ color: circuitColor(c), roughness: 0.35 }));
+    if (!mats.has(c)) mats.set(c, material({ color: circuitColor(c) }));
     return mats.get(c);
   };
   const plugMaterial = material({ color: 0x222222 });
@@ -470,7 +512,7 @@ function chart(container, { title, xLabel, yLabel, xs, ys, width = 360, height =
   svg('path', { d: `M${m.l},${m.t}V${height - m.b}H${width - m.r}`, fill: 'none' }, axis);
   svg('text', { class: 'label', x: (m.l + width - m.r) / 2, y: height - 6, 'text-anchor': 'middle' }, root).textContent = xLabel;
   svg('text', { class: 'label', x: 12, y: (m.t + height - m.b) / 2, 'text-anchor': 'middle', transform: `rotate(-90 12 ${(m.t + height - m.b) / 2})` }, root).textContent = yLabel;
-  return { root, X, Y, plot: svg('g', {}, root), m, width, height };
+  return { root, X, Y, plot: svg('g', {}, root), m, width, height, points: [] };
 }
 
 const tooltip = $('tooltip');
@@ -508,12 +550,47 @@ function drawFront() {
       if (!mm.feasible) p = svg('circle', { ...attrs, fill: '#c62828', 'fill-opacity': 0.75, stroke: '#fff', 'stroke-width': 1 }, c.plot);
       else if (mm.front) p = svg('circle', { ...attrs, fill: '#1f6fd1', stroke: '#fff', 'stroke-width': 1.2 }, c.plot);
       else p = svg('circle', { ...attrs, fill: '#fff', 'fill-opacity': 0.01, stroke: '#8a93a3', 'stroke-width': 1.5 }, c.plot);
-      p.addEventListener('click', () => select(mm.rank));
+      c.points.push({ rank: mm.rank, x, y });
       p.addEventListener('keydown', (e) => { if (e.key === 'Enter' || e.key === ' ') { e.preventDefault(); select(mm.rank); } });
       p.addEventListener('mousemove', (e) => tip(e, memberText(mm)));
       p.addEventListener('mouseleave', () => { tooltip.hidden = true; });
     }
     svg('circle', { class: 'selected', r: 9, cx: -100, cy: -100 }, c.root);
+    c.root.addEventListener('click', (e) => pickAt(c, e));
+  }
+}
+
+// A click on a scatter picks the nearest point on screen; points within a few pixels of it (equal
+// or nearly equal objectives) are one stack: clicking it again steps to the next member, and a
+// list under the plots names them all.
+let pickStack = null;
+function pickAt(c, event) {
+  const ctm = c.root.getScreenCTM();
+  if (!ctm) return;
+  const at = new DOMPoint(event.clientX, event.clientY).matrixTransform(ctm.inverse());
+  const px = 7 / Math.hypot(ctm.a, ctm.b);  // 7 screen pixels in the plot's units
+  const near = c.points.map((p) => ({ rank: p.rank, d: Math.hypot(p.x - at.x, p.y - at.y) })).sort((a, b) => a.d - b.d || a.rank - b.rank);
+  if (!near.length || near[0].d > 2 * px) return;
+  const stack = near.filter((p) => p.d <= near[0].d + px).map((p) => p.rank).sort((a, b) => a - b);
+  const key = stack.join(',');
+  const nearest = stack.indexOf(near[0].rank);
+  const again = (pickStack && pickStack.key === key) || stack[nearest] === shown;
+  const next = again ? (stack.indexOf(shown) + 1) % stack.length : nearest;
+  pickStack = { key, stack };
+  select(stack[next]);
+  showStack(stack);
+}
+function showStack(stack) {
+  const box = $('front-pick');
+  box.replaceChildren();
+  box.hidden = stack.length < 2;
+  if (box.hidden) return;
+  box.append(`${stack.length} layouts overlap here (click the point again for the next):`);
+  for (const rank of stack) {
+    const b = el('button', { type: 'button', 'data-rank': rank, text: `member ${rank}` });
+    b.setAttribute('aria-pressed', String(rank === shown));
+    b.addEventListener('click', () => { select(rank); showStack(stack); });
+    box.append(b);
   }
 }
 
@@ -583,6 +660,7 @@ function applyHash() {
   for (const key of (params.get('hide') || '').split(',')) if (layers[key]) { layers[key].box.checked = false; layers[key].group.visible = false; }
 }
 
+performance.mark('mtcs-scene');  // the block, the part, the keep-outs and the temperature built
 applyHash();
 drawFront();
 drawConvergence();
