@@ -141,9 +141,7 @@ std::string RunConfig::to_yaml(const std::vector<std::string>& objective_names) 
       << mutation.insert << YAML::Key << "remove" << YAML::Value << mutation.remove << YAML::Key << "snap"
       << YAML::Value << mutation.snap << YAML::Key << "diameter" << YAML::Value << mutation.diameter << YAML::Key
       << "circuit" << YAML::Value << mutation.circuit << YAML::Key << "access_guided" << YAML::Value
-      << mutation.access_guided;
-  if (mutation.moves > 0) out << YAML::Key << "moves" << YAML::Value << mutation.moves;  // absent: as stored before it existed
-  out << YAML::EndMap;
+      << mutation.access_guided << YAML::Key << "moves" << YAML::Value << mutation.moves << YAML::EndMap;
   out << YAML::EndMap;
   std::string s = out.c_str();
   return s + "\n";

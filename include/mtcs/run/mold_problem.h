@@ -24,8 +24,9 @@ struct MutationRates {
   // turned to free directions of the accessibility map at their entry (src/run/aim_bores.h).
   bool access_guided = true;
   // Holes (runs of aligned waypoints; waypoints for angled holes) moved per offspring on average,
-  // at least one; 0: all of them, every time.
-  double moves = 0;
+  // at least one; 0: all of them, every time. Two beat all on the gear and matched them on the
+  // plate at equal budgets, and keep a child's other bores cached (experiments/evaluate).
+  double moves = 2;
 };
 
 class MoldProblem final : public opt::Problem {
