@@ -4,6 +4,7 @@
 // 4 M. With slot weights the image points of each target are summed on the fly, so no
 // points x columns buffer is written and read back.
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -183,7 +184,34 @@ void slots_base(const ChannelAxis& axis, const Vec3& origin, int kinds, const fl
   MTCS_SLOTS_BODY
 }
 
+#define MTCS_ACCUMULATE_BODY                                                        \
+  constexpr std::size_t kChunk = 256;                                               \
+  double acc[kChunk];                                                               \
+  for (std::size_t s0 = 0; s0 < n; s0 += kChunk) {                                  \
+    const std::size_t len = std::min(kChunk, n - s0);                               \
+    for (std::size_t i = 0; i < len; ++i) acc[i] = T[s0 + i];                       \
+    for (int c = 0; c < ncols; ++c) {                                               \
+      const double xc = x[c];                                                       \
+      const float* v = cols + std::size_t(c) * n + s0;                              \
+      for (std::size_t i = 0; i < len; ++i) acc[i] += xc * double(v[i]);            \
+    }                                                                               \
+    for (std::size_t i = 0; i < len; ++i) T[s0 + i] = acc[i];                       \
+  }
+__attribute__((target("avx2,fma"))) void accumulate_avx2(const float* cols, std::size_t n, int ncols,
+                                                         const double* x, double* T) {
+  MTCS_ACCUMULATE_BODY
+}
+void accumulate_base(const float* cols, std::size_t n, int ncols, const double* x, double* T) {
+  MTCS_ACCUMULATE_BODY
+}
+#undef MTCS_ACCUMULATE_BODY
+
 }  // namespace
+
+void accumulate_float_columns(const float* cols, std::size_t n, int ncols, const double* x, double* T) {
+  if (has_avx2_fma()) accumulate_avx2(cols, n, ncols, x, T);
+  else accumulate_base(cols, n, ncols, x, T);
+}
 
 void element_fields_float(const ChannelAxis& axis, const Vec3& origin, int kinds, const float* x,
                           const float* y, const float* z, std::size_t n, float* out) {

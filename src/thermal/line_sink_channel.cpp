@@ -5,20 +5,29 @@
 
 namespace mtcs::thermal {
 
+std::vector<float> LineSinkModel::Impl::float_columns_at(const ChannelAxis& source, const PointSet& ps,
+                                                         const Vec3& origin) const {
+  const int cols = source.elements * kinds;
+  const std::size_t T = ps.targets();
+  std::vector<float> acc(T * cols, 0.0f);
+  element_fields_float_slots(source, origin, kinds, ps.sx.data(), ps.sy.data(), ps.sz.data(), ps.sw.data(), T,
+                             ps.slots, acc.data());
+  for (int c = 0; c < cols; ++c) {
+    const float scale = float((c % kinds == 0 ? -1 : 1) * inv4pik);  // a sink takes heat out
+    for (std::size_t t = 0; t < T; ++t) acc[c * T + t] *= scale;
+  }
+  return acc;
+}
+
 MatrixXd LineSinkModel::Impl::columns_at(const ChannelAxis& source, const PointSet& ps, bool single,
                                          const Vec3& origin) const {
   const int cols = source.elements * kinds;
-  MatrixXd out = MatrixXd::Zero(ps.targets(), cols);
   if (single && ps.slots > 0) {
-    const std::size_t T = ps.targets();
-    std::vector<float> acc(T * cols, 0.0f);
-    element_fields_float_slots(source, origin, kinds, ps.sx.data(), ps.sy.data(), ps.sz.data(), ps.sw.data(), T,
-                               ps.slots, acc.data());
-    for (int c = 0; c < cols; ++c) {
-      const float scale = float((c % kinds == 0 ? -1 : 1) * inv4pik);
-      for (std::size_t t = 0; t < T; ++t) out(t, c) = scale * acc[c * T + t];
-    }
-  } else if (single) {
+    const std::vector<float> v = float_columns_at(source, ps, origin);
+    return Eigen::Map<const Eigen::MatrixXf>(v.data(), Eigen::Index(ps.targets()), cols).cast<double>();
+  }
+  MatrixXd out = MatrixXd::Zero(ps.targets(), cols);
+  if (single) {
     const std::size_t n = ps.points.size();
     std::vector<float> buf(n * cols);
     element_fields_float(source, origin, kinds, ps.x.data(), ps.y.data(), ps.z.data(), n, buf.data());
@@ -74,12 +83,15 @@ std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(
     }
   if (b->walls_single) b->walls.make_slots();
   // At the samples.
-  const MatrixXd at_samples = columns_at(a, sample_set, options.single_precision, sample_origin);
-  if (options.single_precision) {
+  if (options.single_precision && sample_set.slots > 0) {
+    b->sample_cols_f = float_columns_at(a, sample_set, sample_origin);
+  } else if (options.single_precision) {
+    const MatrixXd at_samples = columns_at(a, sample_set, true, sample_origin);
     b->sample_cols_f.resize(n_samples * cols);
     for (int c = 0; c < cols; ++c)
       for (std::size_t s = 0; s < n_samples; ++s) b->sample_cols_f[c * n_samples + s] = float(at_samples(s, c));
   } else {
+    const MatrixXd at_samples = columns_at(a, sample_set, false, sample_origin);
     b->sample_cols_d.assign(at_samples.data(), at_samples.data() + at_samples.size());
   }
   // At the convective faces' grids (means).

@@ -57,6 +57,10 @@ void element_fields_float_slots(const ChannelAxis& axis, const Vec3& origin, int
                                 const float* y, const float* z, const float* w, std::size_t targets,
                                 int slots, float* out);
 
+// T[s] += sum over c of x[c] * double(cols[c * n + s]), s < n: a channel's float columns at the
+// samples weighted by its strengths (AVX2 when the CPU has it; chunks of samples kept in cache).
+void accumulate_float_columns(const float* cols, std::size_t n, int ncols, const double* x, double* T);
+
 // The potential of a uniform unit source on a triangle, summed over the images at s.
 double triangle_image_potential(std::span<const Image> images, const Vec3& a, const Vec3& b,
                                 const Vec3& c, const Vec3& s);

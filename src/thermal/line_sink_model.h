@@ -78,9 +78,13 @@ struct LineSinkModel::Impl {
   // The heat input's field on a grid over the block, and on a finer one around the heated
   // triangles (large blocks only: `heat_fine_box`); for collocation points in `heat_near` (the
   // triangles' bounds grown by two cells of the finest grid there) it is summed exactly.
+  // Two fields per node: the whole heat input, and the part of its `far_heat_images` alone.
+  // In heat_near only the near images' triangles are summed exactly (the identity and images
+  // whose triangles lie close: one or two of ~25); the far ones, smooth there, are interpolated.
   FieldGrid heat_grid, heat_fine;
   Box heat_fine_box = Box::empty();
   Box heat_near = Box::empty();
+  std::vector<Image> near_heat_images, far_heat_images;
 
   // The far lattice's kernel on the same grid: its images of the centre lie a block's width or
   // more outside, so it is smooth everywhere inside.
@@ -93,10 +97,11 @@ struct LineSinkModel::Impl {
   }
 
   double heat_at(const Vec3& p) const {
-    if (heat_grid.values.empty() || heat_near.contains(p) || !setting.block.contains(p)) return heat_field(p);
-    double v;
-    (heat_fine_box.contains(p) ? heat_fine : heat_grid).interpolate(p, &v);
-    return v;
+    if (heat_grid.values.empty() || !setting.block.contains(p)) return heat_field(p);
+    double v[2];
+    (heat_fine_box.contains(p) ? heat_fine : heat_grid).interpolate(p, v);
+    if (!heat_near.contains(p)) return v[0];
+    return heat_field(p, near_heat_images) + v[1];
   }
   std::vector<ConvectiveFace> faces;
   std::optional<double> fixed_constant;  // an isothermal face's ambient
@@ -110,10 +115,11 @@ struct LineSinkModel::Impl {
   VectorXd heat_face_means;                  // per face: heat input's field, face mean
   MatrixXd face_face_means;                  // faces x faces
 
-  double heat_field(const Vec3& p) const {
+  double heat_field(const Vec3& p) const { return heat_field(p, images); }
+  double heat_field(const Vec3& p, std::span<const Image> of) const {
     double sum = 0;
     for (const HeatedTriangle& t : setting.heat_in)
-      sum += t.flux * triangle_image_potential(images, t.a, t.b, t.c, p);
+      sum += t.flux * triangle_image_potential(of, t.a, t.b, t.c, p);
     return sum * inv4pik;
   }
   // Field of a unit uniform loss (W/mm^2 out of the steel) over a face.
@@ -184,6 +190,8 @@ struct LineSinkModel::Impl {
   // only where asked (samples, face grids): a wall point sits a radius, maybe 1e-3 mm, from
   // its axis, finer than a float resolves at the block's coordinates.
   MatrixXd columns_at(const ChannelAxis& source, const PointSet& ps, bool single, const Vec3& origin) const;
+  // The same in single precision over a slot layout, column-major (the samples' cached columns).
+  std::vector<float> float_columns_at(const ChannelAxis& source, const PointSet& ps, const Vec3& origin) const;
   // Columns of `source` at the rows of a channel: its wall points' mean and half-differences.
   MatrixXd channel_at_rows(const LineSinkCache::ChannelBlock& rows, const ChannelAxis& source) const;
   // Everything of one channel that does not depend on the others (line_sink_channel.cpp).

@@ -215,11 +215,28 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     }
     g.values.resize(std::size_t(g.nodes[0]) * g.nodes[1] * g.nodes[2] * fields);
   };
-  auto fill_heat = [&](FieldGrid& g) {
+  auto fill_heat = [&](FieldGrid& g) {  // per node: the whole field, the far images' part
     std::size_t n = 0;
     for (int k = 0; k < g.nodes[2]; ++k)
       for (int j = 0; j < g.nodes[1]; ++j)
-        for (int i = 0; i < g.nodes[0]; ++i) g.values[n++] = m.heat_field(g.origin + g.step.cwiseProduct(Vec3(i, j, k)));
+        for (int i = 0; i < g.nodes[0]; ++i) {
+          const Vec3 p = g.origin + g.step.cwiseProduct(Vec3(i, j, k));
+          const double far = m.heat_field(p, m.far_heat_images);
+          g.values[n++] = m.heat_field(p, m.near_heat_images) + far;
+          g.values[n++] = far;
+        }
+  };
+  // Near images: those whose heated triangles come within 3 cells (of the grid interpolating
+  // there) of heat_near; the others are smooth there and join the tables.
+  auto split_heat_images = [&](const Box& bounds, double cell) {
+    const Box near{m.heat_near.min.cwiseMax(box.min), m.heat_near.max.cwiseMin(box.max)};
+    m.near_heat_images.clear(), m.far_heat_images.clear();
+    for (const Image& im : m.images) {
+      const Vec3 a = im.mult.cwiseProduct(bounds.min) + im.offset, b = im.mult.cwiseProduct(bounds.max) + im.offset;
+      const Box image_bounds{a.cwiseMin(b), a.cwiseMax(b)};
+      const bool far = box_distance_sq(image_bounds, near) >= 9 * cell * cell;
+      (far ? m.far_heat_images : m.near_heat_images).push_back(im);
+    }
   };
   if (!m.far_images.empty() && grids) {
     FieldGrid& g = m.far_grid;
@@ -237,20 +254,23 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     for (const HeatedTriangle& t : setting.heat_in)
       for (const Vec3& v : {t.a, t.b, t.c}) bounds.min = bounds.min.cwiseMin(v), bounds.max = bounds.max.cwiseMax(v);
     FieldGrid& g = m.heat_grid;
-    grid_over(g, box, 1, kCoarseCells);
-    fill_heat(g);
+    grid_over(g, box, 2, kCoarseCells);
     const Vec3 margin = Vec3::Constant(2 * g.step.maxCoeff());
     m.heat_near = {bounds.min - margin, bounds.max + margin};
+    double near_cell = g.step.maxCoeff();
     if (g.step.maxCoeff() > 1.01 * options.heat_grid) {
       const Box region{m.heat_near.min.cwiseMax(box.min), m.heat_near.max.cwiseMin(box.max)};
       if ((region.size().array() > 0).all()) {
         m.heat_fine_box = region;
-        grid_over(m.heat_fine, region, 1, kFineCells);
-        fill_heat(m.heat_fine);
+        grid_over(m.heat_fine, region, 2, kFineCells);
         const Vec3 fine_margin = Vec3::Constant(2 * m.heat_fine.step.maxCoeff());
         m.heat_near = {bounds.min - fine_margin, bounds.max + fine_margin};
+        near_cell = m.heat_fine.step.maxCoeff();
       }
     }
+    split_heat_images(bounds, near_cell);
+    fill_heat(g);
+    if (!m.heat_fine.values.empty()) fill_heat(m.heat_fine);
   }
   m.heat_samples.resize(m.n_samples);
   m.face_samples.resize(m.n_samples, nf);

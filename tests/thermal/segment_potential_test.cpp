@@ -4,6 +4,11 @@
 #include <cmath>
 
 #include "thermal/segment_potential.h"
+#include "thermal/line_sink_fields.h"
+#include <chrono>
+#include <random>
+#include <vector>
+#include <cstdio>
 
 using namespace mtcs::thermal;
 
@@ -156,4 +161,29 @@ TEST_CASE("triangle potential: a square's centre, the closed form 8 a asinh(1)")
   // Orientation does not matter for a potential.
   CHECK(triangle_potential(p00, p11, p10, Vec3(1, 2, 0.5)) ==
         Approx(triangle_potential(p00, p10, p11, Vec3(1, 2, 0.5))).epsilon(1e-14));
+}
+
+// The float slot kernel alone (hidden: a measurement): 720 targets x 6 image slots, 4 elements.
+TEST_CASE("element fields: float slot kernel, best time", "[.bench]") {
+  using namespace mtcs::thermal;
+  Channel ch;
+  ch.axis = {Vec3(0, 40, 45), Vec3(120, 40, 45)};
+  ch.radius = 5;
+  const ChannelAxis axis = channel_axis(ch, 4);
+  const std::size_t T = 720;
+  const int slots = 6;
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<float> u(-60, 60);
+  std::vector<float> x(T * slots), y(T * slots), z(T * slots), w(T * slots, 1.0f);
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = u(rng), y[i] = u(rng), z[i] = u(rng);
+  std::vector<float> out(T * 12);
+  double best = 1e9, sum = 0;
+  for (int i = 0; i < 3000; ++i) {
+    std::fill(out.begin(), out.end(), 0.0f);
+    const auto t0 = std::chrono::steady_clock::now();
+    element_fields_float_slots(axis, Vec3(60, 40, 30), 3, x.data(), y.data(), z.data(), w.data(), T, slots, out.data());
+    best = std::min(best, std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
+  }
+  for (float v : out) sum += v;
+  std::printf("slot kernel best %.2f us (checksum %.6g)\n", best, sum);
 }
