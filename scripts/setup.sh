@@ -11,6 +11,7 @@ PACKAGES=(
   python3 python3-matplotlib
   clang-14 libfuzzer-14-dev
   nodejs chromium
+  openmpi-bin libopenmpi-dev
 )
 
 # The report page's browser test: puppeteer-core (and three.js, which src/report/assets vendors),
