@@ -4,6 +4,7 @@
 // bytes (island_wire.h), every number as its exact bits.
 #include <mpi.h>
 
+#include <exception>
 #include <numeric>
 #include <stdexcept>
 
@@ -30,8 +31,10 @@ class MpiTransport final : public IslandTransport {
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
   }
+  // Left by an error (the exception on its way to main's message and exit code): no finalize,
+  // which would wait for ranks that wait for this one; mpirun ends them when this rank exits.
   ~MpiTransport() override {
-    if (owns_) MPI_Finalize();
+    if (owns_ && std::uncaught_exceptions() == unwinding_) MPI_Finalize();
   }
 
   std::vector<int> local(int islands) const override {
@@ -135,6 +138,7 @@ class MpiTransport final : public IslandTransport {
 
   int rank_ = 0, size_ = 1;
   bool owns_ = false;
+  int unwinding_ = std::uncaught_exceptions();
 };
 
 }  // namespace

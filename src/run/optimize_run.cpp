@@ -61,6 +61,8 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
       mold_path = meta.at("mold");
       config_text = meta.at("config");
       islands = meta.count("islands") ? IslandSettings::parse(meta.at("islands"), db_path + ":islands") : IslandSettings{};
+      if (islands.islands == 0 && mpi_launch_size() > 0)
+        throw io::InputError(db_path, 0, 0, "islands", "not an island run: resume it without mpirun");
       if (content_hash(read_file_text(mold_path)) != meta.at("mold_hash"))
         throw io::InputError(mold_path, 0, 0, "", "the mold spec changed since the run started; start a new run");
     }
