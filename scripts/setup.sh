@@ -13,6 +13,7 @@ PACKAGES=(
   nodejs chromium
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-ocaf-dev
   libocct-data-exchange-dev libocct-visualization-dev
+  openmpi-bin libopenmpi-dev
 )
 
 # The report page's browser test: puppeteer-core (and three.js, which src/report/assets vendors),

@@ -39,6 +39,8 @@ struct Options {
   std::string algorithm = "es";
   std::vector<double> ref;
   bool json = false;
+  run::IslandSettings islands;  // islands 0: one population
+  std::string topology = "ring";
 };
 
 // A built-in multi-objective test problem with SMS-EMOA: prints a JSON summary, and stores the
@@ -67,7 +69,8 @@ int run_optimize(const Options& o) {
   if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
   run::OptimizeRequest request{o.mold, o.resume, o.out,
                                {o.config, o.algorithm == "es" ? "" : o.algorithm, o.ref, o.seed, o.evaluations}, o.polish,
-                               [](const std::string& dir) { make_output_folder(dir); }};
+                               [](const std::string& dir) { make_output_folder(dir); }, o.islands};
+  request.islands.topology = opt::parse_topology(o.topology);
   const run::Interruption interruption;  // Ctrl-C: stop after this generation, write, say how to resume
   const run::OptimizeResult r = run::optimize_mold(
       request, [](const run::MoldOptimizer& optimizer, int log_every) { return run::ProgressSink(run::ProgressPrinter(optimizer, log_every)); },
@@ -118,6 +121,15 @@ Command add_optimize_command(CLI::App& app) {
                   "(objective / scale), default twice the worst of the initial population")
       ->delimiter(',');
   sub->add_flag("--json", o->json, "test problems: the summary as one line of JSON");
+  sub->add_option("--islands", o->islands.islands,
+                  "P populations (each 1/P of the budget) with migration, in threads, or one per rank under\n"
+                  "mpirun -np P; the same seed and P give the same run either way")->check(CLI::Range(1, 65536));
+  sub->add_option("--migration-every", o->islands.migration_every, "islands: generations between migrations")
+      ->capture_default_str()->check(CLI::Range(1, 100000000));
+  sub->add_option("--migrants", o->islands.migrants, "islands: members each island sends (ES: its best; SMS-EMOA: front\n"
+                  "members of largest hypervolume contribution)")->capture_default_str()->check(CLI::Range(0, 100000));
+  sub->add_option("--topology", o->topology, "islands: ring or fully-connected")->capture_default_str()
+      ->check(CLI::IsMember({"ring", "fully-connected"}));
   return {sub, [o] {
             if (!o->problem.empty()) return run_test_problem(*o);
             if (o->resume.empty() && o->mold.empty())

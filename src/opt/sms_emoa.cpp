@@ -66,10 +66,15 @@ Generation SmsEmoa::step(const Generation& prev) const {
   next.population.push_back(std::move(child));
   ++next.evaluations;
 
-  // Reduce: drop one member of the worst front, ranked as the problem asks (its penalty method).
+  next.population.erase(next.population.begin() + long(loser(next.population)));
+  return next;
+}
+
+// The member a step removes: one of the worst front, ranked as the problem asks (its penalty method).
+std::size_t SmsEmoa::loser(const std::vector<Individual>& population) const {
   std::vector<Score> ranked;
-  ranked.reserve(next.population.size());
-  for (const auto& ind : next.population) ranked.push_back(problem_.ranking(ind.score));
+  ranked.reserve(population.size());
+  for (const auto& ind : population) ranked.push_back(problem_.ranking(ind.score));
   bool first = false;
   const std::vector<std::size_t> worst = worst_front(ranked, &first);
   std::size_t drop = worst.front();
@@ -102,8 +107,41 @@ Generation SmsEmoa::step(const Generation& prev) const {
       drop = worst[w];
     }
   }
-  next.population.erase(next.population.begin() + long(drop));
-  return next;
+  return drop;
+}
+
+std::vector<Individual> SmsEmoa::emigrants(const Generation& g, int k) const {
+  std::vector<Score> ranked;
+  for (const auto& ind : g.population) ranked.push_back(problem_.ranking(ind.score));
+  std::vector<std::size_t> first;
+  for (std::size_t i = 0; i < ranked.size(); ++i) {
+    bool dominated = false;
+    for (std::size_t j = 0; j < ranked.size() && !dominated; ++j) dominated = j != i && dominates(ranked[j], ranked[i]);
+    if (!dominated) first.push_back(i);
+  }
+  if (!first.empty() && ranked[first.front()].feasible) {  // largest exclusive hypervolume first
+    std::vector<Point> pts;
+    for (const std::size_t i : first) pts.push_back(ranked[i].objectives);
+    const std::vector<double> c = contributions(pts, config_.ref);
+    std::vector<std::size_t> order(first.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return c[a] > c[b]; });
+    std::vector<std::size_t> sorted;
+    for (const std::size_t o : order) sorted.push_back(first[o]);
+    first = std::move(sorted);
+  }
+  first.resize(std::min(first.size(), std::size_t(std::max(k, 0))));
+  std::vector<Individual> out;
+  for (const std::size_t i : first) out.push_back(g.population[i]);
+  return out;
+}
+
+Generation SmsEmoa::immigrate(const Generation& g, const std::vector<Individual>& arrivals) const {
+  Generation out = g;
+  out.population.insert(out.population.end(), arrivals.begin(), arrivals.end());
+  while (out.population.size() > g.population.size())
+    out.population.erase(out.population.begin() + long(loser(out.population)));
+  return out;
 }
 
 std::vector<Point> SmsEmoa::front(const Generation& g) {

@@ -20,45 +20,101 @@ namespace mtcs::run {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// The process's island transport: MPI when mpirun started it, threads for --islands P, none for
+// one population.
+std::unique_ptr<IslandTransport> transport_for(const OptimizeRequest& r) {
+  const int ranks = mpi_launch_size();
+  if (ranks == 0) return r.islands.islands > 0 || !r.resume.empty() ? thread_transport() : nullptr;
+  if (r.resume.empty() && r.islands.islands != ranks)
+    throw io::InputError("", 0, 0, "--islands",
+                         "started by mpirun with " + std::to_string(ranks) + " ranks: give --islands " + std::to_string(ranks));
+  auto mpi = mpi_transport();
+  if (!mpi) throw io::InputError("", 0, 0, "--islands", "started by mpirun, but this mtcs was built without MPI");
+  return mpi;
+}
+
+}  // namespace
+
 OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& make_progress,
                              const std::function<bool()>& stop) {
+  std::unique_ptr<IslandTransport> transport = transport_for(r);
+  const bool writer = !transport || transport->writer();
   const bool resuming = !r.resume.empty();
   const std::string out_dir = resuming ? r.resume : r.out;
   const std::string db_path = (fs::path(out_dir) / "run.sqlite").string();
   std::optional<store::RunStore> db;
-  std::string mold_path = r.mold, config_text;
-  if (resuming) {
-    if (!fs::exists(db_path)) throw io::InputError(db_path, 0, 0, "", "no run to resume here");
-    db = store::RunStore::resume(db_path);
-    const auto meta = db->meta();
-    for (const char* key : {"mold", "mold_hash", "config"})
-      if (!meta.count(key)) throw io::InputError(db_path, 0, 0, key, "missing from the store: not a mold run to resume");
-    mold_path = meta.at("mold");
-    config_text = meta.at("config");
-    if (content_hash(read_file_text(mold_path)) != meta.at("mold_hash"))
-      throw io::InputError(mold_path, 0, 0, "", "the mold spec changed since the run started; start a new run");
+  std::unique_ptr<const Session> made;
+  IslandSettings islands = r.islands;
+  std::string mold_path = r.mold;
+  // Opens or makes the store (the writer) and the session; under MPI every rank learns whether
+  // all could, so that none waits for a failed one.
+  auto set_up = [&] {
+    std::string config_text;
+    if (resuming) {
+      if (!fs::exists(db_path)) throw io::InputError(db_path, 0, 0, "", "no run to resume here");
+      if (writer) db = store::RunStore::resume(db_path);
+      const auto meta = writer ? db->meta() : store::RunStore::open(db_path).meta();
+      for (const char* key : {"mold", "mold_hash", "config"})
+        if (!meta.count(key)) throw io::InputError(db_path, 0, 0, key, "missing from the store: not a mold run to resume");
+      mold_path = meta.at("mold");
+      config_text = meta.at("config");
+      islands = meta.count("islands") ? IslandSettings::parse(meta.at("islands"), db_path + ":islands") : IslandSettings{};
+      if (islands.islands == 0 && mpi_launch_size() > 0)
+        throw io::InputError(db_path, 0, 0, "islands", "not an island run: resume it without mpirun");
+      if (content_hash(read_file_text(mold_path)) != meta.at("mold_hash"))
+        throw io::InputError(mold_path, 0, 0, "", "the mold spec changed since the run started; start a new run");
+    }
+    // A resumed run keeps its stored config; a new one resolves RUN.yaml and the command line.
+    made = resuming ? std::make_unique<const Session>(mold::load_mold_spec(mold_path), config_text, db_path + ":config")
+                    : std::make_unique<const Session>(mold::load_mold_spec(mold_path), r.overrides);
+    if (!resuming && writer) {
+      if (r.prepare_out) r.prepare_out(out_dir);
+      if (store::RunStore::in_use(db_path))
+        throw io::InputError(db_path, 0, 0, "", "the run here is in use: another process writes it; choose --out");
+      if (fs::exists(db_path))
+        throw io::InputError(db_path, 0, 0, "", "a run exists here: resume it with --resume " + out_dir + " or choose --out");
+      auto meta = mold_run_meta(mold_path, *made);
+      if (islands.islands > 0) meta["islands"] = islands.to_text();
+      db = store::RunStore::create(db_path, meta);
+    }
+  };
+  if (mpi_launch_size() == 0) {
+    set_up();
+  } else {
+    std::exception_ptr failed;
+    try {
+      set_up();
+    } catch (...) {
+      failed = std::current_exception();
+    }
+    const bool ready = transport->all(!failed);
+    if (failed) std::rethrow_exception(failed);
+    if (!ready) return {out_dir, mold_path, false, 0, 0, 0};  // rank 0 says why
   }
-  // A resumed run keeps its stored config; a new one resolves RUN.yaml and the command line.
-  const Session session = resuming ? Session(mold::load_mold_spec(mold_path), config_text, db_path + ":config")
-                                   : Session(mold::load_mold_spec(mold_path), r.overrides);
+  if (islands.islands == 0) transport.reset();  // a resumed run of one population
+  const Session& session = *made;
   const mold::Scene& scene = session.scene();
   const std::vector<std::string>& names = session.objective_names();
   const RunConfig& config = session.config();
-  if (!resuming) {
-    if (r.prepare_out) r.prepare_out(out_dir);
-    if (store::RunStore::in_use(db_path))
-      throw io::InputError(db_path, 0, 0, "", "the run here is in use: another process writes it; choose --out");
-    if (fs::exists(db_path))
-      throw io::InputError(db_path, 0, 0, "", "a run exists here: resume it with --resume " + out_dir + " or choose --out");
-    db = store::RunStore::create(db_path, mold_run_meta(mold_path, session));
-  }
-
   const MoldProblem& problem = session.problem();
   const MoldOptimizer optimizer(problem, scene, config);
   spdlog::debug("mold {}: {} surface samples; run config:\n{}", mold_path, session.pipeline().surface_samples(),
                 config.to_yaml(names));
-  if (optimizer.pareto()) spdlog::info(hypervolume_basis(optimizer, names));
-  const StoredRun stored = run_stored(optimizer, problem, *db, make_progress(optimizer, config.log_every), stop);
+  if (optimizer.pareto() && writer) spdlog::info(hypervolume_basis(optimizer, names));
+  StoredRun stored;
+  if (transport) {
+    const ProgressPrinter printer(optimizer, config.log_every);
+    stored = run_islands(optimizer, problem, islands, *transport, db ? &*db : nullptr,
+                         [&](const opt::Generation& g, const std::string& line) {
+                           printer.print(optimizer.pareto() ? g.index / optimizer.mu() : g.index, line);
+                         },
+                         stop);
+    if (!writer) return {out_dir, mold_path, false, 0, 0, 0};  // rank 0 writes the outputs
+  } else {
+    stored = run_stored(optimizer, problem, *db, make_progress(optimizer, config.log_every), stop);
+  }
   const opt::Generation& last = stored.last;
 
   // The best layout, for CAD and for re-scoring with mtcs evaluate; optionally polished.

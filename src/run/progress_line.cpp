@@ -48,7 +48,11 @@ void ProgressPrinter::operator()(const opt::Generation& g, double seconds, long 
   // SMS-EMOA's generations are its stored steps, every mu.
   const int generation = optimizer_->pareto() ? g.index / optimizer_->mu() : g.index;
   if (quiet_ || (!tty_ && generation % log_every_ != 0)) return;
-  const std::string line = progress_line(*optimizer_, g, seconds, evaluations);
+  print(generation, progress_line(*optimizer_, g, seconds, evaluations));
+}
+
+void ProgressPrinter::print(int generation, const std::string& line) const {
+  if (quiet_ || (!tty_ && generation % log_every_ != 0)) return;
   if (tty_) std::fprintf(stderr, "\r%s\033[K", line.c_str());
   else spdlog::info(line);
 }

@@ -219,30 +219,126 @@ std::map<std::string, std::string> RunStore::meta() const {
   });
 }
 
+namespace {
+
+// One generation's rows in the run's tables (inside the caller's transaction).
+void insert_generation(sqlite3* db, const opt::Generation& g, double seconds) {
+  int feasible = 0;
+  Statement ins(db,
+                "INSERT INTO individual(generation, rank, genotype, steps, objectives, violation, feasible, value,"
+                " violations) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  for (std::size_t r = 0; r < g.population.size(); ++r) {
+    const auto& ind = g.population[r];
+    feasible += ind.score.feasible ? 1 : 0;
+    ins.bind(1, g.index).bind(2, int(r)).bind(3, ind.x).bind(4, ind.steps).bind(5, ind.score.objectives);
+    ins.bind(6, ind.score.violation).bind(7, ind.score.feasible ? 1 : 0).bind(8, ind.score.value);
+    ins.bind(9, ind.score.detail).step();
+    ins.reset();
+  }
+  Statement gen(db, "INSERT INTO generation(idx, evaluations, best, feasible_share, seconds) VALUES(?, ?, ?, ?, ?)");
+  gen.bind(1, g.index).bind(2, g.evaluations);
+  gen.bind(3, g.population.empty() ? 0.0 : g.population.front().score.value);
+  gen.bind(4, g.population.empty() ? 0.0 : double(feasible) / double(g.population.size())).bind(5, seconds).step();
+}
+
+}  // namespace
+
 void RunStore::save(const opt::Generation& g, double seconds) {
   try {
     exec(db_, "BEGIN IMMEDIATE;");
-    int feasible = 0;
-    Statement ins(db_,
-                  "INSERT INTO individual(generation, rank, genotype, steps, objectives, violation, feasible, value,"
-                  " violations) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?)");
-    for (std::size_t r = 0; r < g.population.size(); ++r) {
-      const auto& ind = g.population[r];
-      feasible += ind.score.feasible ? 1 : 0;
-      ins.bind(1, g.index).bind(2, int(r)).bind(3, ind.x).bind(4, ind.steps).bind(5, ind.score.objectives);
-      ins.bind(6, ind.score.violation).bind(7, ind.score.feasible ? 1 : 0).bind(8, ind.score.value);
-      ins.bind(9, ind.score.detail).step();
-      ins.reset();
-    }
-    Statement gen(db_, "INSERT INTO generation(idx, evaluations, best, feasible_share, seconds) VALUES(?, ?, ?, ?, ?)");
-    gen.bind(1, g.index).bind(2, g.evaluations);
-    gen.bind(3, g.population.empty() ? 0.0 : g.population.front().score.value);
-    gen.bind(4, g.population.empty() ? 0.0 : double(feasible) / double(g.population.size())).bind(5, seconds).step();
+    insert_generation(db_, g, seconds);
     exec(db_, "COMMIT;");
   } catch (const std::exception& e) {
     sqlite3_exec(db_, "ROLLBACK;", nullptr, nullptr, nullptr);  // keeps the last whole generation
     throw std::runtime_error(path_ + ": cannot save generation " + std::to_string(g.index) + ": " + e.what());
   }
+}
+
+namespace {
+
+bool has_island_tables(sqlite3* db) {
+  Statement q(db, "SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = 'island_generation'");
+  q.step();
+  return q.integer(0) > 0;
+}
+
+}  // namespace
+
+void RunStore::save_islands(const std::vector<opt::Generation>& islands, const opt::Generation& merged, double seconds) {
+  try {
+    exec(db_, "BEGIN IMMEDIATE;");
+    exec(db_,
+         "CREATE TABLE IF NOT EXISTS island_generation(island INTEGER, idx INTEGER, evaluations INTEGER, best REAL,"
+         "  feasible_share REAL, seconds REAL, PRIMARY KEY(island, idx));"
+         "CREATE TABLE IF NOT EXISTS island_individual(island INTEGER, generation INTEGER, rank INTEGER, genotype BLOB,"
+         "  steps BLOB, objectives BLOB, violation REAL, feasible INTEGER, value REAL, violations TEXT,"
+         "  PRIMARY KEY(island, generation, rank));");
+    Statement ins(db_,
+                  "INSERT INTO island_individual(island, generation, rank, genotype, steps, objectives, violation,"
+                  " feasible, value, violations) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+    Statement gen(db_,
+                  "INSERT INTO island_generation(island, idx, evaluations, best, feasible_share, seconds)"
+                  " VALUES(?, ?, ?, ?, ?, ?)");
+    for (std::size_t i = 0; i < islands.size(); ++i) {
+      const opt::Generation& g = islands[i];
+      int feasible = 0;
+      for (std::size_t r = 0; r < g.population.size(); ++r) {
+        const auto& ind = g.population[r];
+        feasible += ind.score.feasible ? 1 : 0;
+        ins.bind(1, int(i)).bind(2, g.index).bind(3, int(r)).bind(4, ind.x).bind(5, ind.steps);
+        ins.bind(6, ind.score.objectives).bind(7, ind.score.violation).bind(8, ind.score.feasible ? 1 : 0);
+        ins.bind(9, ind.score.value).bind(10, ind.score.detail).step();
+        ins.reset();
+      }
+      gen.bind(1, int(i)).bind(2, g.index).bind(3, g.evaluations);
+      gen.bind(4, g.population.empty() ? 0.0 : g.population.front().score.value);
+      gen.bind(5, g.population.empty() ? 0.0 : double(feasible) / double(g.population.size())).bind(6, seconds).step();
+      gen.reset();
+    }
+    insert_generation(db_, merged, seconds);
+    exec(db_, "COMMIT;");
+  } catch (const std::exception& e) {
+    sqlite3_exec(db_, "ROLLBACK;", nullptr, nullptr, nullptr);
+    throw std::runtime_error(path_ + ": cannot save the islands' generation " + std::to_string(merged.index) + ": " +
+                             e.what());
+  }
+}
+
+std::optional<opt::Generation> RunStore::island_generation(int island, int index) const {
+  return reading(path_, [&]() -> std::optional<opt::Generation> {
+    if (!has_island_tables(db_)) return std::nullopt;
+    Statement g(db_, "SELECT evaluations FROM island_generation WHERE island = ? AND idx = ?");
+    g.bind(1, island).bind(2, index);
+    if (!g.step()) return std::nullopt;
+    opt::Generation out;
+    out.index = index;
+    out.evaluations = g.integer(0);
+    Statement q(db_,
+                "SELECT genotype, steps, objectives, violation, feasible, value, violations FROM island_individual"
+                " WHERE island = ? AND generation = ? ORDER BY rank");
+    q.bind(1, island).bind(2, index);
+    while (q.step()) {
+      opt::Individual ind;
+      ind.x = q.doubles(0);
+      ind.steps = q.doubles(1);
+      ind.score = {q.doubles(2), q.real(3), q.integer(4) != 0, q.real(5), q.text(6)};
+      out.population.push_back(std::move(ind));
+    }
+    return out;
+  });
+}
+
+std::vector<GenerationSummary> RunStore::island_summaries(int island) const {
+  return reading(path_, [&] {
+    std::vector<GenerationSummary> out;
+    if (!has_island_tables(db_)) return out;
+    Statement q(db_,
+                "SELECT idx, evaluations, best, feasible_share, seconds FROM island_generation WHERE island = ?"
+                " ORDER BY idx");
+    q.bind(1, island);
+    while (q.step()) out.push_back({int(q.integer(0)), q.integer(1), q.real(2), q.real(3), q.real(4)});
+    return out;
+  });
 }
 
 std::optional<opt::Generation> RunStore::generation(int index) const {

@@ -39,7 +39,14 @@ class SmsEmoa {
   // ranking the search used).
   static std::vector<Point> front(const Generation& g);
 
+  // Island migration hooks (opt/migration.h): up to k members of the first front (by the
+  // problem's ranking), largest exclusive hypervolume contribution first; and the population
+  // with `arrivals` inserted, reduced back to its size one removal at a time as a step reduces.
+  std::vector<Individual> emigrants(const Generation& g, int k) const;
+  Generation immigrate(const Generation& g, const std::vector<Individual>& arrivals) const;
+
  private:
+  std::size_t loser(const std::vector<Individual>& population) const;
   const Problem& problem_;
   SmsConfig config_;
 };

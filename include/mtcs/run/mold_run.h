@@ -51,6 +51,9 @@ class MoldOptimizer {
   // Whether g has spent the budget.
   bool done(const opt::Generation& g) const { return pareto_ ? sms_.done(g) : es_.done(g); }
   long budget() const { return sms_.config().evaluations; }
+  // The optimisers themselves (islands make one per island from their configs).
+  const opt::EvolutionStrategy& es() const { return es_; }
+  const opt::SmsEmoa& sms() const { return sms_; }
   // Hypervolumes are reported in scaled objectives (objective / its scale in the spec): the
   // scales, the reference point so scaled, and the hypervolume of a front of raw points.
   const std::vector<double>& scales() const { return scales_; }

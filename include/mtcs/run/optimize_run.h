@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "mtcs/opt/population.h"
+#include "mtcs/run/islands.h"
 #include "mtcs/run/mold_run.h"
 
 namespace mtcs::run {
@@ -22,6 +23,9 @@ struct OptimizeRequest {
   int polish = 0;      // COBYLA evaluations after the run (0: none)
   // Makes a new run's folder once the spec has loaded (the caller's rules for --out).
   std::function<void(const std::string& dir)> prepare_out;
+  // A new run's islands (run/islands.h; islands 0: one population). Started by mpirun, one
+  // island per rank: rank 0 writes the store and the outputs, the others only search.
+  IslandSettings islands;
 };
 
 struct OptimizeResult {

@@ -19,6 +19,8 @@ class ProgressPrinter {
  public:
   ProgressPrinter(const MoldOptimizer& optimizer, int log_every);
   void operator()(const opt::Generation& g, double seconds, long evaluations) const;
+  // Any line (the islands'), by the same rules, for the run's `generation`.
+  void print(int generation, const std::string& line) const;
 
  private:
   const MoldOptimizer* optimizer_;

@@ -52,6 +52,15 @@ class RunStore {
   std::optional<opt::Generation> generation(int index) const;
   std::vector<GenerationSummary> summaries() const;
 
+  // Island runs (run/islands.h): one row per island and generation in tables of their own,
+  // made by the first save_islands (older stores keep their schema and open as before). One
+  // transaction holds every island's generation and the archipelago's (`merged`: all islands'
+  // members), which the readers of whole runs (replay, report, resume's checks) see as usual.
+  void save_islands(const std::vector<opt::Generation>& islands, const opt::Generation& merged, double seconds);
+  std::optional<opt::Generation> island_generation(int island, int index) const;
+  // Summaries of one island's stored generations, in order (empty: none).
+  std::vector<GenerationSummary> island_summaries(int island) const;
+
  private:
   RunStore(sqlite3* db, std::string path, int lock_fd);
   sqlite3* db_ = nullptr;

@@ -1,0 +1,81 @@
+#pragma once
+// The island model on a mold (mtcs optimize --islands P): P populations of the run's optimiser
+// (ES or SMS-EMOA), island i seeded by opt::island_seed(run seed, i), each with 1/P of the
+// evaluation budget, stepping in lockstep one stored generation at a time (an ES generation;
+// SMS-EMOA's mu steps). Every `migration_every` generations each island sends `migrants` to its
+// neighbours (ring or fully connected), chosen from the populations before any arrival: the same
+// seed and P give the same run, bit for bit, whatever the threads or processes. The islands run
+// in this process's threads, or one per MPI rank (IslandTransport); rank 0 stores every island's
+// generation and the archipelago's (all members) in the run store, one transaction per
+// generation: a resumed run continues exactly from the last stored one.
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mtcs/opt/migration.h"
+#include "mtcs/run/mold_run.h"
+#include "mtcs/run/stored_run.h"
+#include "mtcs/store/run_store.h"
+
+namespace mtcs::run {
+
+struct IslandSettings {
+  int islands = 0;           // 0: one population, no islands
+  int migration_every = 10;  // stored generations between migrations
+  int migrants = 1;          // sent by each island at each migration
+  opt::Topology topology = opt::Topology::ring;
+
+  // The text stored in the run's meta ("islands"), read back on resume.
+  std::string to_text() const;
+  // io::InputError naming `origin` and the field.
+  static IslandSettings parse(const std::string& text, const std::string& origin);
+};
+
+// Where the islands live: all in this process (threads), or one per MPI rank. Every call is
+// collective: each process makes it at the same point of the run.
+class IslandTransport {
+ public:
+  virtual ~IslandTransport() = default;
+  // This process's islands, of `islands` in all.
+  virtual std::vector<int> local(int islands) const = 0;
+  // Whether this process writes the store and the outputs (rank 0).
+  virtual bool writer() const = 0;
+  // Each local island's emigrants; returns each local island's arrivals, sources in the order
+  // opt::migration_sources gives.
+  virtual std::vector<std::vector<opt::Individual>> migrate(const std::vector<std::vector<opt::Individual>>& outgoing,
+                                                            int islands, opt::Topology topology) = 0;
+  // Every island's generation at the writer (in island order); elsewhere empty.
+  virtual std::vector<opt::Generation> gather(const std::vector<opt::Generation>& local, int islands) = 0;
+  // The writer's generations of every island, each to the process that runs it.
+  virtual std::vector<opt::Generation> scatter(const std::vector<opt::Generation>& all, int islands) = 0;
+  // The writer's value, everywhere.
+  virtual bool broadcast(bool value) = 0;
+  virtual std::string broadcast(const std::string& value) = 0;
+  // True everywhere when it is true everywhere.
+  virtual bool all(bool value) = 0;
+};
+
+// All islands in this process, stepped in parallel (TBB) or one after another.
+std::unique_ptr<IslandTransport> thread_transport();
+// One island per MPI rank when this process was started by mpirun and mtcs was built with MPI
+// (MTCS_WITH_MPI); otherwise nullptr. Initialises MPI; the transport's end finalises it.
+std::unique_ptr<IslandTransport> mpi_transport();
+// The number of ranks mpirun started, or 0 outside mpirun.
+int mpi_launch_size();
+
+// Runs the archipelago from the store's last generation (resume) or fresh populations to the
+// budget, or until stop() (the writer's) is true after a stored generation. `db` is the writer's
+// store (nullptr elsewhere); `on_line` gets the live line of each stored generation (writer).
+StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, const IslandSettings& settings,
+                      IslandTransport& transport, store::RunStore* db,
+                      const std::function<void(const opt::Generation& merged, const std::string& line)>& on_line,
+                      const std::function<bool()>& stop = {});
+
+// The live line: the archipelago's progress (all islands' members) and each island's best (ES)
+// or hypervolume (SMS-EMOA).
+std::string island_progress_line(const MoldOptimizer& base, const opt::Generation& merged,
+                                 const std::vector<opt::Generation>& islands, double seconds, long evaluations);
+
+}  // namespace mtcs::run

@@ -1,0 +1,223 @@
+#include "mtcs/run/islands.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+#include "mtcs/io/input_error.h"
+#include "mtcs/run/progress_line.h"
+
+namespace mtcs::run {
+namespace {
+
+// One island: the run's optimiser with the island's seed and share of the budget.
+class Island {
+ public:
+  Island(const MoldOptimizer& base, const opt::Problem& problem, int index, int islands)
+      : problem_(problem), es_(problem, config(base.es().config(), index, islands)),
+        sms_(problem, config(base.sms().config(), index, islands)), pareto_(base.pareto()), mu_(base.mu()) {}
+
+  opt::Generation initial() const { return pareto_ ? sms_.initial() : es_.initial(); }
+  bool done(const opt::Generation& g) const { return pareto_ ? sms_.done(g) : es_.done(g); }
+  // One stored generation on: an ES generation, or SMS-EMOA's steps to the next multiple of mu.
+  opt::Generation advance(const opt::Generation& g) const {
+    if (!pareto_) return es_.step(g);
+    opt::Generation next = sms_.step(g);
+    while (next.index % mu_ != 0 && !sms_.done(next)) next = sms_.step(next);
+    return next;
+  }
+  // Whether the generation `g` ends with a migration.
+  bool migrates_after(const opt::Generation& g, int every) const {
+    if (done(g) || (pareto_ && g.index % mu_ != 0)) return false;
+    const int n = pareto_ ? g.index / mu_ : g.index;
+    return n > 0 && n % every == 0;
+  }
+  std::vector<opt::Individual> emigrants(const opt::Generation& g, int k) const {
+    return pareto_ ? sms_.emigrants(g, k) : opt::best_emigrants(g, k);
+  }
+  opt::Generation immigrate(const opt::Generation& g, const std::vector<opt::Individual>& arrivals) const {
+    if (arrivals.empty()) return g;
+    return pareto_ ? sms_.immigrate(g, arrivals) : opt::replace_worst(problem_, g, arrivals);
+  }
+
+ private:
+  template <class Config>
+  static Config config(Config c, int index, int islands) {
+    c.seed = opt::island_seed(c.seed, index);
+    c.evaluations /= islands;
+    return c;
+  }
+  const opt::Problem& problem_;
+  opt::EvolutionStrategy es_;
+  opt::SmsEmoa sms_;
+  bool pareto_;
+  int mu_;
+};
+
+// Every island's members in one generation (the archipelago's): ES best first (stable), SMS-EMOA
+// in island order.
+opt::Generation merge(const MoldOptimizer& base, const opt::Problem& problem, const std::vector<opt::Generation>& islands) {
+  opt::Generation m;
+  m.index = islands.front().index;
+  for (const auto& g : islands) {
+    m.evaluations += g.evaluations;
+    m.population.insert(m.population.end(), g.population.begin(), g.population.end());
+  }
+  if (!base.pareto())
+    std::stable_sort(m.population.begin(), m.population.end(),
+                     [&](const opt::Individual& a, const opt::Individual& b) { return problem.better(a.score, b.score); });
+  return m;
+}
+
+class ThreadTransport final : public IslandTransport {
+ public:
+  std::vector<int> local(int islands) const override {
+    std::vector<int> all(static_cast<std::size_t>(islands));
+    for (int i = 0; i < islands; ++i) all[std::size_t(i)] = i;
+    return all;
+  }
+  bool writer() const override { return true; }
+  std::vector<std::vector<opt::Individual>> migrate(const std::vector<std::vector<opt::Individual>>& outgoing, int islands,
+                                                    opt::Topology topology) override {
+    std::vector<std::vector<opt::Individual>> arrivals(static_cast<std::size_t>(islands));
+    for (int i = 0; i < islands; ++i)
+      for (const int s : opt::migration_sources(topology, islands, i))
+        arrivals[std::size_t(i)].insert(arrivals[std::size_t(i)].end(), outgoing[std::size_t(s)].begin(),
+                                        outgoing[std::size_t(s)].end());
+    return arrivals;
+  }
+  std::vector<opt::Generation> gather(const std::vector<opt::Generation>& local, int) override { return local; }
+  std::vector<opt::Generation> scatter(const std::vector<opt::Generation>& all, int) override { return all; }
+  bool broadcast(bool value) override { return value; }
+  std::string broadcast(const std::string& value) override { return value; }
+  bool all(bool value) override { return value; }
+};
+
+}  // namespace
+
+std::unique_ptr<IslandTransport> thread_transport() { return std::make_unique<ThreadTransport>(); }
+
+int mpi_launch_size() {
+  // Open MPI's mpirun says so in the environment of every rank it starts (MPICH: PMI_SIZE).
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
+    if (const char* v = std::getenv(name)) return std::max(1, std::atoi(v));
+  return 0;
+}
+
+std::string IslandSettings::to_text() const {
+  return "islands: " + std::to_string(islands) + "\nmigration_every: " + std::to_string(migration_every) +
+         "\nmigrants: " + std::to_string(migrants) + "\ntopology: " + opt::topology_name(topology) + "\n";
+}
+
+IslandSettings IslandSettings::parse(const std::string& text, const std::string& origin) {
+  IslandSettings s;
+  std::istringstream in(text);
+  std::string line;
+  int row = 0;
+  while (std::getline(in, line)) {
+    ++row;
+    const auto colon = line.find(": ");
+    if (colon == std::string::npos) continue;
+    const std::string key = line.substr(0, colon), value = line.substr(colon + 2);
+    try {
+      if (key == "islands") s.islands = std::stoi(value);
+      else if (key == "migration_every") s.migration_every = std::stoi(value);
+      else if (key == "migrants") s.migrants = std::stoi(value);
+      else if (key == "topology") s.topology = opt::parse_topology(value);
+    } catch (const std::exception& e) {
+      throw io::InputError(origin, row, colon + 3, key, "not a valid value: " + value);
+    }
+  }
+  if (s.islands < 1 || s.migration_every < 1 || s.migrants < 0)
+    throw io::InputError(origin, 0, 0, "islands", "needs islands >= 1, migration_every >= 1, migrants >= 0");
+  return s;
+}
+
+std::string island_progress_line(const MoldOptimizer& base, const opt::Generation& merged,
+                                 const std::vector<opt::Generation>& islands, double seconds, long evaluations) {
+  std::string each;
+  char buf[40];
+  for (const auto& g : islands) {
+    if (base.pareto()) std::snprintf(buf, sizeof buf, " %.4g", base.scaled_hypervolume(opt::SmsEmoa::front(g)));
+    else std::snprintf(buf, sizeof buf, " %.4g", g.population.front().score.value);
+    each += buf;
+  }
+  std::string line = progress_line(base, merged, seconds, evaluations);
+  // SMS-EMOA's generation on the line counts steps of all islands' populations: say so by islands.
+  return "islands " + std::to_string(islands.size()) + " | " + line + " | " + (base.pareto() ? "HV" : "best") + " by island" +
+         each;
+}
+
+StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, const IslandSettings& s,
+                      IslandTransport& transport, store::RunStore* db,
+                      const std::function<void(const opt::Generation&, const std::string&)>& on_line,
+                      const std::function<bool()>& stop) {
+  const auto t0 = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  const int P = s.islands;
+  const std::vector<int> mine = transport.local(P);
+  std::vector<Island> islands;
+  for (const int i : mine) islands.emplace_back(base, problem, i, P);
+
+  // Where to start: the store's last generation of every island (the writer reads, the others
+  // receive theirs), or fresh populations.
+  double seconds_before = 0;
+  long evals_before = 0;
+  std::vector<opt::Generation> all;
+  if (db) {
+    if (const auto last = db->last()) {
+      seconds_before = db->summaries().back().seconds;
+      evals_before = last->evaluations;
+      for (int i = 0; i < P; ++i) {
+        auto g = db->island_generation(i, last->index);
+        if (!g) throw std::runtime_error("run store: island " + std::to_string(i) + " has no generation " +
+                                         std::to_string(last->index) + " (not an island run of " + std::to_string(P) + ")");
+        all.push_back(std::move(*g));
+      }
+    }
+  }
+  const bool resuming = transport.broadcast(!all.empty());
+  std::vector<opt::Generation> gens(islands.size());
+  if (resuming) {
+    gens = transport.scatter(all, P);
+  } else {
+    tbb::parallel_for(std::size_t(0), islands.size(), [&](std::size_t k) { gens[k] = islands[k].initial(); });
+  }
+
+  StoredRun r;
+  // Stores one generation of every island (the writer), and tells the live line.
+  auto store = [&] {
+    const std::vector<opt::Generation> every = transport.gather(gens, P);
+    if (!transport.writer()) return;
+    r.last = merge(base, problem, every);
+    const double sec = elapsed();
+    if (db) db->save_islands(every, r.last, seconds_before + sec);
+    if (on_line) on_line(r.last, island_progress_line(base, r.last, every, sec, r.last.evaluations - evals_before));
+  };
+  if (!resuming) store();
+  else if (transport.writer()) r.last = merge(base, problem, transport.gather(gens, P));
+  else transport.gather(gens, P);
+
+  while (!islands.front().done(gens.front()) && !transport.broadcast(stop && stop())) {
+    tbb::parallel_for(std::size_t(0), islands.size(), [&](std::size_t k) { gens[k] = islands[k].advance(gens[k]); });
+    if (islands.front().migrates_after(gens.front(), s.migration_every) && P > 1) {
+      std::vector<std::vector<opt::Individual>> out;
+      for (std::size_t k = 0; k < islands.size(); ++k) out.push_back(islands[k].emigrants(gens[k], s.migrants));
+      const auto arrivals = transport.migrate(out, P, s.topology);
+      for (std::size_t k = 0; k < islands.size(); ++k) gens[k] = islands[k].immigrate(gens[k], arrivals[k]);
+    }
+    store();
+  }
+  r.interrupted = !islands.front().done(gens.front());
+  if (base.pareto() && transport.writer())
+    std::stable_sort(r.last.population.begin(), r.last.population.end(),
+                     [&](const opt::Individual& a, const opt::Individual& b) { return problem.better(a.score, b.score); });
+  r.seconds = seconds_before + elapsed();
+  return r;
+}
+
+}  // namespace mtcs::run

@@ -1,0 +1,151 @@
+// One island per MPI rank (mtcs built with MTCS_WITH_MPI, started by mpirun): migrants go
+// point to point around the ring, or to every rank (all-gather) when fully connected; rank 0
+// gathers every island's generation to store it. Messages are generations and migrants as
+// bytes (island_wire.h), every number as its exact bits.
+#include <mpi.h>
+
+#include <exception>
+#include <numeric>
+#include <stdexcept>
+
+#include "island_wire.h"
+#include "mtcs/run/islands.h"
+
+namespace mtcs::run {
+namespace {
+
+void check(int rc, const char* what) {
+  if (rc != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + what + " failed");
+}
+
+class MpiTransport final : public IslandTransport {
+ public:
+  MpiTransport() {
+    int ready = 0;
+    MPI_Initialized(&ready);
+    if (!ready) {
+      int provided = 0;
+      check(MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided), "init");
+      owns_ = true;
+    }
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  }
+  // Left by an error (the exception on its way to main's message and exit code): no finalize,
+  // which would wait for ranks that wait for this one; mpirun ends them when this rank exits.
+  ~MpiTransport() override {
+    if (owns_ && std::uncaught_exceptions() == unwinding_) MPI_Finalize();
+  }
+
+  std::vector<int> local(int islands) const override {
+    if (islands != size_)
+      throw std::runtime_error("islands: " + std::to_string(islands) + " islands on " + std::to_string(size_) + " ranks");
+    return {rank_};
+  }
+  bool writer() const override { return rank_ == 0; }
+
+  std::vector<std::vector<opt::Individual>> migrate(const std::vector<std::vector<opt::Individual>>& outgoing, int islands,
+                                                    opt::Topology topology) override {
+    const std::string mine = wire::encode(outgoing.front());
+    std::vector<opt::Individual> arrivals;
+    if (topology == opt::Topology::ring) {
+      const int to = (rank_ + 1) % islands, from = (rank_ + islands - 1) % islands;
+      int size = int(mine.size()), incoming = 0;
+      check(MPI_Sendrecv(&size, 1, MPI_INT, to, 1, &incoming, 1, MPI_INT, from, 1, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+            "ring sizes");
+      std::string bytes(std::size_t(incoming), '\0');
+      check(MPI_Sendrecv(mine.data(), size, MPI_BYTE, to, 2, bytes.data(), incoming, MPI_BYTE, from, 2, MPI_COMM_WORLD,
+                         MPI_STATUS_IGNORE),
+            "ring migrants");
+      arrivals = wire::decode_individuals(bytes);
+    } else {
+      const std::vector<std::string> every = all_gather(mine);
+      for (const int s : opt::migration_sources(topology, islands, rank_)) {
+        const auto part = wire::decode_individuals(every[std::size_t(s)]);
+        arrivals.insert(arrivals.end(), part.begin(), part.end());
+      }
+    }
+    return {arrivals};
+  }
+
+  std::vector<opt::Generation> gather(const std::vector<opt::Generation>& local, int) override {
+    const std::string mine = wire::encode(local.front());
+    int size = int(mine.size());
+    const auto ranks = static_cast<std::size_t>(size_);
+    std::vector<int> sizes(ranks), offsets(ranks);
+    check(MPI_Gather(&size, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, MPI_COMM_WORLD), "gather sizes");
+    std::exclusive_scan(sizes.begin(), sizes.end(), offsets.begin(), 0);
+    std::string all(rank_ == 0 ? std::size_t(offsets.back() + sizes.back()) : 0, '\0');
+    check(MPI_Gatherv(mine.data(), size, MPI_BYTE, all.data(), sizes.data(), offsets.data(), MPI_BYTE, 0, MPI_COMM_WORLD),
+          "gather generations");
+    std::vector<opt::Generation> out;
+    if (rank_ == 0)
+      for (int r = 0; r < size_; ++r)
+        out.push_back(wire::decode_generation(all.substr(std::size_t(offsets[std::size_t(r)]), std::size_t(sizes[std::size_t(r)]))));
+    return out;
+  }
+
+  std::vector<opt::Generation> scatter(const std::vector<opt::Generation>& all, int) override {
+    if (rank_ == 0) {
+      for (int r = 1; r < size_; ++r) {
+        const std::string bytes = wire::encode(all[std::size_t(r)]);
+        int size = int(bytes.size());
+        check(MPI_Send(&size, 1, MPI_INT, r, 3, MPI_COMM_WORLD), "scatter size");
+        check(MPI_Send(bytes.data(), size, MPI_BYTE, r, 4, MPI_COMM_WORLD), "scatter generation");
+      }
+      return {all.front()};
+    }
+    int size = 0;
+    check(MPI_Recv(&size, 1, MPI_INT, 0, 3, MPI_COMM_WORLD, MPI_STATUS_IGNORE), "scatter size");
+    std::string bytes(std::size_t(size), '\0');
+    check(MPI_Recv(bytes.data(), size, MPI_BYTE, 0, 4, MPI_COMM_WORLD, MPI_STATUS_IGNORE), "scatter generation");
+    return {wire::decode_generation(bytes)};
+  }
+
+  bool broadcast(bool value) override {
+    int v = value ? 1 : 0;
+    check(MPI_Bcast(&v, 1, MPI_INT, 0, MPI_COMM_WORLD), "broadcast");
+    return v != 0;
+  }
+  std::string broadcast(const std::string& value) override {
+    int size = int(value.size());
+    check(MPI_Bcast(&size, 1, MPI_INT, 0, MPI_COMM_WORLD), "broadcast size");
+    std::string out = rank_ == 0 ? value : std::string(std::size_t(size), '\0');
+    check(MPI_Bcast(out.data(), size, MPI_BYTE, 0, MPI_COMM_WORLD), "broadcast text");
+    return out;
+  }
+  bool all(bool value) override {
+    int v = value ? 1 : 0, out = 0;
+    check(MPI_Allreduce(&v, &out, 1, MPI_INT, MPI_LAND, MPI_COMM_WORLD), "all");
+    return out != 0;
+  }
+
+ private:
+  std::vector<std::string> all_gather(const std::string& mine) {
+    int size = int(mine.size());
+    const auto ranks = static_cast<std::size_t>(size_);
+    std::vector<int> sizes(ranks), offsets(ranks);
+    check(MPI_Allgather(&size, 1, MPI_INT, sizes.data(), 1, MPI_INT, MPI_COMM_WORLD), "all-gather sizes");
+    std::exclusive_scan(sizes.begin(), sizes.end(), offsets.begin(), 0);
+    std::string all(std::size_t(offsets.back() + sizes.back()), '\0');
+    check(MPI_Allgatherv(mine.data(), size, MPI_BYTE, all.data(), sizes.data(), offsets.data(), MPI_BYTE, MPI_COMM_WORLD),
+          "all-gather migrants");
+    std::vector<std::string> out;
+    for (int r = 0; r < size_; ++r)
+      out.push_back(all.substr(std::size_t(offsets[std::size_t(r)]), std::size_t(sizes[std::size_t(r)])));
+    return out;
+  }
+
+  int rank_ = 0, size_ = 1;
+  bool owns_ = false;
+  int unwinding_ = std::uncaught_exceptions();
+};
+
+}  // namespace
+
+std::unique_ptr<IslandTransport> mpi_transport() {
+  if (mpi_launch_size() == 0) return nullptr;
+  return std::make_unique<MpiTransport>();
+}
+
+}  // namespace mtcs::run

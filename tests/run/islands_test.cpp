@@ -1,0 +1,227 @@
+// Issue 15, item 1: islands in one process. The same seed and P give the same store whatever
+// the thread count; one island is the plain run; an interrupted archipelago resumed ends as the
+// uninterrupted one; migration moves what it should (ES: the best replace the worst; SMS-EMOA:
+// the front members of largest hypervolume contribution, computed here by hand).
+
+#include <catch2/catch.hpp>
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <unistd.h>
+
+#include "mtcs/opt/migration.h"
+#include "mtcs/opt/sms_emoa.h"
+#include "mtcs/run/optimize_run.h"
+#include "run/island_wire.h"
+
+using namespace mtcs;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kMold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("mtcs_islands_" + std::to_string(::getpid())) / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir.parent_path());
+  return dir;
+}
+
+run::OptimizeRequest request(const fs::path& out, int islands, const std::string& algorithm = "es") {
+  run::OptimizeRequest r;
+  r.mold = kMold;
+  r.out = out.string();
+  r.overrides.algorithm = algorithm;
+  r.overrides.seed = 7;
+  r.overrides.evaluations = algorithm == "es" ? 1200 : 900;
+  r.prepare_out = [](const std::string& dir) { fs::create_directories(dir); };
+  r.islands.islands = islands;
+  r.islands.migration_every = 2;
+  r.islands.migrants = 2;
+  return r;
+}
+
+run::OptimizeResult optimize(const run::OptimizeRequest& r, const std::function<bool()>& stop = {}) {
+  return run::optimize_mold(r, [](const run::MoldOptimizer&, int) { return run::ProgressSink(); }, stop);
+}
+
+// Bit patterns, so that -0 and NaN compare as stored.
+std::vector<std::uint64_t> bits(const std::vector<double>& v) {
+  std::vector<std::uint64_t> out(v.size());
+  if (!v.empty()) std::memcpy(out.data(), v.data(), v.size() * sizeof(double));
+  return out;
+}
+
+// Every stored row but the wall times: the run's generations, then each island's.
+std::vector<std::vector<std::uint64_t>> rows(const fs::path& dir, int islands) {
+  const auto db = store::RunStore::open((dir / "run.sqlite").string());
+  std::vector<std::vector<std::uint64_t>> out;
+  auto add = [&](const opt::Generation& g, int island) {
+    for (const auto& ind : g.population) {
+      std::vector<std::uint64_t> row{std::uint64_t(island), std::uint64_t(g.index), std::uint64_t(g.evaluations)};
+      for (const auto* v : {&ind.x, &ind.steps, &ind.score.objectives}) {
+        const auto b = bits(*v);
+        row.insert(row.end(), b.begin(), b.end());
+      }
+      const auto s = bits({ind.score.violation, ind.score.value});
+      row.insert(row.end(), s.begin(), s.end());
+      out.push_back(row);
+    }
+  };
+  for (const auto& s : db.summaries()) add(*db.generation(s.index), -1);
+  for (int i = 0; i < islands; ++i)
+    for (const auto& s : db.island_summaries(i)) add(*db.island_generation(i, s.index), i);
+  return out;
+}
+
+// A problem of one coordinate: value = x, better = smaller.
+struct Line final : opt::Problem {
+  std::string name() const override { return "line"; }
+  opt::Genotype sample(opt::Rng& rng) const override { return {rng.uniform()}; }
+  std::vector<double> initial_steps(const opt::Genotype&) const override { return {0.1}; }
+  void mutate(opt::Genotype&, const std::vector<double>&, opt::Rng&) const override {}
+  opt::Score evaluate(const opt::Genotype& g) const override { return {{g[0], 1 - g[0]}, 0, true, g[0], ""}; }
+};
+
+opt::Individual member(double f1, double f2) { return {{f1}, {0.1}, {{f1, f2}, 0, true, f1, ""}}; }
+
+}  // namespace
+
+TEST_CASE("islands: the same seed and P give the same store with 1 thread or all", "[run][islands]") {
+  for (const std::string algorithm : {"es", "sms-emoa"}) {
+    const fs::path a = scratch("threads_all_" + algorithm), one = scratch("threads_one_" + algorithm);
+    optimize(request(a, 3, algorithm));
+    {
+      tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+      optimize(request(one, 3, algorithm));
+    }
+    const auto ra = rows(a, 3);
+    CHECK(ra.size() > 100);
+    CHECK(ra == rows(one, 3));
+    // One row per island and stored generation, and the archipelago's own.
+    const auto db = store::RunStore::open((a / "run.sqlite").string());
+    for (int i = 0; i < 3; ++i) CHECK(db.island_summaries(i).size() == db.summaries().size());
+    CHECK(db.island_summaries(3).empty());
+    CHECK(db.summaries().back().evaluations == 3 * db.island_summaries(0).back().evaluations);
+  }
+}
+
+TEST_CASE("islands: one island is the plain run of the same seed", "[run][islands]") {
+  for (const std::string algorithm : {"es", "sms-emoa"}) {
+    const fs::path island = scratch("one_island_" + algorithm), plain = scratch("plain_" + algorithm);
+    optimize(request(island, 1, algorithm));
+    optimize(request(plain, 0, algorithm));
+    auto main_rows = [](const fs::path& dir) {
+      auto r = rows(dir, 0);
+      return r;
+    };
+    CHECK(main_rows(island) == main_rows(plain));
+  }
+}
+
+TEST_CASE("islands: an interrupted archipelago resumed ends as the uninterrupted one", "[run][islands]") {
+  for (const std::string algorithm : {"es", "sms-emoa"}) {
+    const fs::path whole = scratch("whole_" + algorithm), parts = scratch("parts_" + algorithm);
+    auto r = request(whole, 4, algorithm);
+    r.islands.topology = opt::Topology::fully_connected;
+    const run::OptimizeResult done = optimize(r);
+    CHECK_FALSE(done.interrupted);
+    // Stopped after 3 stored generations (a migration falls in the stretch after), then resumed.
+    r.out = parts.string();
+    int calls = 0;
+    const run::OptimizeResult stopped = optimize(r, [&] { return ++calls > 3; });
+    CHECK(stopped.interrupted);
+    CHECK(stopped.last_generation < done.last_generation);
+    run::OptimizeRequest again;
+    again.resume = parts.string();
+    const run::OptimizeResult resumed = optimize(again);
+    CHECK_FALSE(resumed.interrupted);
+    CHECK(resumed.last_generation == done.last_generation);
+    CHECK(rows(parts, 4) == rows(whole, 4));
+  }
+}
+
+TEST_CASE("islands: settings survive the store's text; bad ones name the field", "[run][islands]") {
+  run::IslandSettings s;
+  s.islands = 5, s.migration_every = 3, s.migrants = 4, s.topology = opt::Topology::fully_connected;
+  const auto back = run::IslandSettings::parse(s.to_text(), "meta");
+  CHECK(back.islands == 5);
+  CHECK(back.migration_every == 3);
+  CHECK(back.migrants == 4);
+  CHECK(back.topology == opt::Topology::fully_connected);
+  CHECK_THROWS_WITH(run::IslandSettings::parse("islands: 2\ntopology: star\n", "meta"), Catch::Contains("topology"));
+  CHECK_THROWS_WITH(run::IslandSettings::parse("islands: 0\n", "meta"), Catch::Contains("islands"));
+}
+
+TEST_CASE("islands: who receives from whom; island 0 keeps the run's seed", "[opt][islands]") {
+  CHECK(opt::migration_sources(opt::Topology::ring, 4, 0) == std::vector<int>{3});
+  CHECK(opt::migration_sources(opt::Topology::ring, 4, 2) == std::vector<int>{1});
+  CHECK(opt::migration_sources(opt::Topology::fully_connected, 4, 2) == std::vector<int>{0, 1, 3});
+  CHECK(opt::migration_sources(opt::Topology::ring, 1, 0).empty());
+  CHECK(opt::island_seed(42, 0) == 42);
+  std::vector<std::uint64_t> seeds;
+  for (int i = 0; i < 64; ++i) seeds.push_back(opt::island_seed(42, i));
+  std::sort(seeds.begin(), seeds.end());
+  CHECK(std::adjacent_find(seeds.begin(), seeds.end()) == seeds.end());
+}
+
+TEST_CASE("islands: ES migrants are the best, and replace the worst only when better", "[opt][islands]") {
+  const Line line;
+  opt::Generation g;
+  for (const double v : {0.1, 0.3, 0.5, 0.7}) g.population.push_back(member(v, 1 - v));
+  const auto out = opt::best_emigrants(g, 2);
+  REQUIRE(out.size() == 2);
+  CHECK(out[0].score.value == 0.1);
+  CHECK(out[1].score.value == 0.3);
+  // Arrivals 0.2 and 0.9: 0.2 displaces the worst (0.7); 0.9 is worse than all and stays out.
+  const auto after = opt::replace_worst(line, g, {member(0.9, 0.1), member(0.2, 0.8)});
+  std::vector<double> values;
+  for (const auto& ind : after.population) values.push_back(ind.score.value);
+  CHECK(values == std::vector<double>{0.1, 0.2, 0.3, 0.5});
+}
+
+TEST_CASE("islands: SMS-EMOA sends front members by hypervolume contribution and reduces arrivals away", "[opt][islands]") {
+  const Line line;
+  opt::SmsConfig c;
+  c.mu = 4;
+  c.ref = {5, 5};
+  const opt::SmsEmoa sms(line, c);
+  // Front (1,4), (2,2), (4,1) against (5,5): exclusive boxes 1x1, 2x2, 1x1; (3,3) is dominated.
+  opt::Generation g;
+  for (const auto& p : std::vector<std::pair<double, double>>{{3, 3}, {1, 4}, {2, 2}, {4, 1}})
+    g.population.push_back(member(p.first, p.second));
+  const auto out = sms.emigrants(g, 2);
+  REQUIRE(out.size() == 2);
+  CHECK(out[0].score.objectives == std::vector<double>{2, 2});  // contribution 4
+  CHECK(out[1].score.objectives == std::vector<double>{1, 4});  // 1, tied with (4,1): the earlier
+  CHECK(sms.emigrants(g, 10).size() == 3);                      // the front only
+  // An arrival that dominates (3,3) and (2,2)'s box corner: (1.5,1.5) comes in, the dominated
+  // (3,3) goes; a dominated arrival (4.5,4.5) goes itself.
+  const auto after = sms.immigrate(g, {member(1.5, 1.5), member(4.5, 4.5)});
+  REQUIRE(after.population.size() == 4);
+  std::vector<std::vector<double>> kept;
+  for (const auto& ind : after.population) kept.push_back(ind.score.objectives);
+  CHECK(std::count(kept.begin(), kept.end(), std::vector<double>{1.5, 1.5}) == 1);
+  CHECK(std::count(kept.begin(), kept.end(), std::vector<double>{3, 3}) == 0);
+  CHECK(std::count(kept.begin(), kept.end(), std::vector<double>{4.5, 4.5}) == 0);
+}
+
+TEST_CASE("islands: messages between ranks keep every bit", "[run][islands]") {
+  opt::Generation g;
+  g.index = 12, g.evaluations = 1234567890123L;
+  g.population.push_back({{-0.0, 4.9e-324, 1e308}, {std::nan("")}, {{1, 2}, 0.5, false, 3.25, "bore 2 too close"}});
+  g.population.push_back({{}, {}, {{}, 0, true, -1, ""}});
+  const opt::Generation back = run::wire::decode_generation(run::wire::encode(g));
+  CHECK(back.index == 12);
+  CHECK(back.evaluations == 1234567890123L);
+  REQUIRE(back.population.size() == 2);
+  CHECK(bits(back.population[0].x) == bits(g.population[0].x));
+  CHECK(bits(back.population[0].steps) == bits(g.population[0].steps));
+  CHECK(back.population[0].score.detail == "bore 2 too close");
+  CHECK_FALSE(back.population[0].score.feasible);
+  CHECK(back.population[1].score.value == -1);
+  CHECK_THROWS(run::wire::decode_generation(run::wire::encode(g).substr(0, 30)));
+}
