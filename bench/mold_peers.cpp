@@ -56,6 +56,10 @@ class Recorder final : public opt::Problem {
     return s;
   }
 
+  long evaluations() const {
+    const std::lock_guard<std::mutex> hold(lock_);
+    return count_;
+  }
   PeerResult finish() const {
     const std::lock_guard<std::mutex> hold(lock_);
     PeerResult r{best_, scaler_.scaled_hypervolume(archive_), count_, seconds(), trace_};
@@ -126,6 +130,7 @@ class FixedTopology {
     }
   }
   std::size_t size() const { return slots_.size(); }
+  long evaluations() const { return recorder_.evaluations(); }
   std::vector<double> start() const {
     std::vector<double> u;
     for (const auto& s : slots_)
@@ -200,7 +205,11 @@ void run_nlopt(const std::string& algorithm, const FixedTopology& coords, long b
   std::vector<double> last_x;
   opt::Score last;
   auto score_of = [&](const std::vector<double>& v) -> const opt::Score& {
-    if (v != last_x) last_x = v, last = coords.score(v);
+    if (v != last_x) {
+      // CRS2 may ask a few points past maxeval: the budget is the same for every algorithm.
+      if (coords.evaluations() >= budget) throw nlopt::forced_stop();
+      last_x = v, last = coords.score(v);
+    }
     return last;
   };
   using ScoreOf = decltype(score_of);
