@@ -13,7 +13,7 @@
 
 #include "mtcs/opt/benchmark_problems.h"
 #include "mtcs/opt/sms_emoa.h"
-#include "src/opt/sms_fronts.h"
+#include "opt/sms_fronts.h"
 
 using namespace mtcs::opt;
 
