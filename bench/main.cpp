@@ -79,21 +79,25 @@ int run(int argc, char** argv) {
 
   CLI::App* optimize = app.add_subcommand(
       "optimize",
-      "One optimiser on one mold over seeds 1..K at an equal budget. CSV on stdout:\n"
-      "  mold,algorithm,seed,evaluations,best_objective,feasible,seconds\n"
-      "and with --trace FILE the convergence (algorithm,seed,evaluations,best_feasible).\n"
-      "Algorithms: es, random (random search), nlopt (GN_ISRES on the coordinates of --topology).\n"
-      "Example: mtcs bench optimize molds/plate.yaml --algorithm es --seeds 11 --evaluations 20000");
+      "Optimisers on one mold over seeds 1..K at an equal budget. CSV on stdout:\n"
+      "  mold,algorithm,seed,evaluations,best_objective,feasible,seconds,hypervolume\n"
+      "and with --trace FILE the anytime course (algorithm,seed,evaluations,best_feasible,seconds,hypervolume).\n"
+      "Algorithms: es, sms-emoa, random (mtcs's, on the mold problem); isres, crs2 (NLopt), cmaes, nsga2,\n"
+      "moead (pagmo) on the coordinates of a fixed topology (--topology, default each seed's first sample);\n"
+      "nlopt: isres under its old name. Hypervolume: feasible non-dominated layouts evaluated, scaled.\n"
+      "Example: mtcs bench optimize molds/plate.yaml --algorithm es nsga2 --seeds 11 --evaluations 20000");
   auto oo = std::make_shared<OptimizeRuns>();
   optimize->add_option("mold", oo->mold, "mold spec")->required();
-  optimize->add_option("--algorithm", oo->algorithm, "es, random or nlopt")->capture_default_str()
-      ->check(CLI::IsMember({"es", "random", "nlopt"}));
+  optimize->add_option("--algorithm", oo->algorithms, "one or more of es, sms-emoa, random, isres, crs2, cmaes, nsga2, moead")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"es", "sms-emoa", "random", "isres", "crs2", "cmaes", "nsga2", "moead", "nlopt"}));
   optimize->add_option("--config", oo->config, "run config (ES settings)");
   optimize->add_option("--topology", oo->topology,
-                       "layout whose topology (and start) nlopt keeps (default: the seed's first random sample)");
+                       "layout whose topology (and start) the fixed-topology peers keep (default: the seed's first random sample)");
   optimize->add_option("--seeds", oo->seeds, "seeds 1..K")->capture_default_str()->check(CLI::Range(1, 1000));
   optimize->add_option("--evaluations", oo->evaluations, "budget per run")->capture_default_str();
-  optimize->add_option("--trace", oo->trace, "convergence CSV to write");
+  optimize->add_option("--trace", oo->trace, "anytime CSV to write");
+  optimize->add_option("--trace-every", oo->trace_every, "evaluations between anytime points (default: budget / 100)");
 
   CLI::App* hv = app.add_subcommand(
       "hypervolume",

@@ -1,8 +1,9 @@
 #include "mtcs/opt/sms_emoa.h"
 
-#include "run_to_budget.h"
+#include "sms_fronts.h"
 
 #include <algorithm>
+#include <mutex>
 #include <numeric>
 
 namespace mtcs::opt {
@@ -20,32 +21,15 @@ bool dominates(const Score& a, const Score& b) {
   return strictly;
 }
 
-// Indices of the worst non-dominated front (fast non-dominated sorting, Deb et al.).
-std::vector<std::size_t> worst_front(const std::vector<Score>& scores, bool* is_first) {
-  const std::size_t n = scores.size();
-  std::vector<int> count(n, 0);
-  std::vector<std::vector<std::size_t>> beats(n);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j)
-      if (i != j && dominates(scores[i], scores[j])) beats[i].push_back(j), ++count[j];
-  std::vector<std::size_t> current;
-  for (std::size_t i = 0; i < n; ++i)
-    if (count[i] == 0) current.push_back(i);
-  *is_first = true;
-  for (;;) {
-    std::vector<std::size_t> next;
-    for (const std::size_t i : current)
-      for (const std::size_t j : beats[i])
-        if (--count[j] == 0) next.push_back(j);
-    if (next.empty()) return current;
-    current = std::move(next);
-    *is_first = false;
-  }
-}
-
 }  // namespace
 
-SmsEmoa::SmsEmoa(const Problem& problem, SmsConfig config) : problem_(problem), config_(std::move(config)) {}
+struct SmsEmoa::Fronts {
+  std::mutex lock;  // one population at a time (a shared algorithm steps under it)
+  detail::SteadyStateFronts fronts;
+};
+
+SmsEmoa::SmsEmoa(const Problem& problem, SmsConfig config)
+    : problem_(problem), config_(std::move(config)), fronts_(std::make_shared<Fronts>()) {}
 
 Generation SmsEmoa::initial() const {
   return sample_population(problem_, config_.seed, config_.mu);
@@ -53,61 +37,51 @@ Generation SmsEmoa::initial() const {
 
 Generation SmsEmoa::step(const Generation& prev) const {
   Generation next = prev;
-  next.index = prev.index + 1;
-  Rng rng = Rng::for_individual(config_.seed, std::uint64_t(next.index), 0);
-  const int mu = int(prev.population.size());
-  const Individual& a = prev.population[std::size_t(rng.below(mu))];
-  const Individual& b = prev.population[std::size_t(rng.below(mu))];
-  Individual child;
-  child.x = problem_.recombine(a.x, b.x, rng);
-  child.steps = a.steps;
-  problem_.mutate(child.x, child.steps, rng);
-  child.score = problem_.evaluate(child.x);
-  next.population.push_back(std::move(child));
-  ++next.evaluations;
-
-  next.population.erase(next.population.begin() + long(loser(next.population)));
+  advance(next);
   return next;
 }
 
-// The member a step removes: one of the worst front, ranked as the problem asks (its penalty method).
-std::size_t SmsEmoa::loser(const std::vector<Individual>& population) const {
-  std::vector<Score> ranked;
-  ranked.reserve(population.size());
-  for (const auto& ind : population) ranked.push_back(problem_.ranking(ind.score));
-  bool first = false;
-  const std::vector<std::size_t> worst = worst_front(ranked, &first);
-  std::size_t drop = worst.front();
-  if (worst.size() > 1) {
-    const bool feasible = ranked[worst.front()].feasible;
-    if (!feasible) {
-      // Infeasible front: the largest violation goes.
-      for (const std::size_t i : worst)
-        if (ranked[i].violation > ranked[drop].violation) drop = i;
-    } else {
-      // Candidates: the whole worst front, or (paper's rule, fronts after the first) those
-      // dominated by the most members; among them the least exclusive hypervolume goes.
-      std::vector<int> count(worst.size(), 0);
-      if (config_.domcount_then_hv && !first)
-        for (std::size_t w = 0; w < worst.size(); ++w)
-          for (const auto& other : ranked)
-            count[w] += dominates(other, ranked[worst[w]]) ? 1 : 0;
-      const int most = *std::max_element(count.begin(), count.end());
-      std::vector<std::size_t> tied;
-      for (std::size_t w = 0; w < worst.size(); ++w)
-        if (count[w] == most) tied.push_back(w);
-      std::size_t w = tied.front();
-      if (tied.size() > 1) {
-        std::vector<Point> pts;
-        for (const std::size_t i : worst) pts.push_back(ranked[i].objectives);
-        const std::vector<double> c = contributions(pts, config_.ref);
-        for (const std::size_t t : tied)
-          if (c[t] < c[w]) w = t;
-      }
-      drop = worst[w];
-    }
+void SmsEmoa::advance(Generation& g) const {
+  ++g.index;
+  const int mu = int(g.population.size());
+  const long lambda = std::max(1L, std::min<long>(config_.lambda, config_.evaluations - g.evaluations));
+  std::vector<Individual> children(static_cast<std::size_t>(lambda));
+  for (long k = 0; k < lambda; ++k) {
+    Rng rng = Rng::for_individual(config_.seed, std::uint64_t(g.index), std::uint64_t(k));
+    const Individual& a = g.population[std::size_t(rng.below(mu))];
+    const Individual& b = g.population[std::size_t(rng.below(mu))];
+    Individual& child = children[std::size_t(k)];
+    child.x = problem_.recombine(a.x, b.x, rng);
+    child.steps = a.steps;
+    problem_.mutate(child.x, child.steps, rng);
   }
-  return drop;
+  if (lambda == 1) {
+    children.front().score = problem_.evaluate(children.front().x);
+  } else {
+    std::vector<Genotype> xs;
+    for (const auto& c : children) xs.push_back(c.x);
+    std::vector<Score> scores = evaluate_all(problem_, xs);
+    for (std::size_t k = 0; k < children.size(); ++k) children[k].score = std::move(scores[k]);
+  }
+  g.evaluations += lambda;
+
+  // Reduce: drop lambda members, one at a time from the worst front, ranked as the problem asks
+  // (its penalty method).
+  const std::lock_guard<std::mutex> hold(fronts_->lock);
+  detail::SteadyStateFronts& fronts = fronts_->fronts;
+  if (!fronts.holds(g.population)) {
+    fronts.clear();
+    for (const auto& ind : g.population) fronts.push(ind.score, problem_.ranking(ind.score));
+  }
+  for (auto& child : children) {
+    fronts.push(child.score, problem_.ranking(child.score));
+    g.population.push_back(std::move(child));
+  }
+  for (long k = 0; k < lambda; ++k) {
+    const std::size_t drop = fronts.worst(config_.domcount_then_hv, config_.ref);
+    fronts.erase(drop);
+    g.population.erase(g.population.begin() + long(drop));
+  }
 }
 
 std::vector<Individual> SmsEmoa::emigrants(const Generation& g, int k) const {
@@ -137,10 +111,19 @@ std::vector<Individual> SmsEmoa::emigrants(const Generation& g, int k) const {
 }
 
 Generation SmsEmoa::immigrate(const Generation& g, const std::vector<Individual>& arrivals) const {
+  // Reduced back to its size one removal at a time, as a step reduces.
   Generation out = g;
-  out.population.insert(out.population.end(), arrivals.begin(), arrivals.end());
-  while (out.population.size() > g.population.size())
-    out.population.erase(out.population.begin() + long(loser(out.population)));
+  detail::SteadyStateFronts fronts;
+  for (const auto& ind : out.population) fronts.push(ind.score, problem_.ranking(ind.score));
+  for (const auto& a : arrivals) {
+    fronts.push(a.score, problem_.ranking(a.score));
+    out.population.push_back(a);
+  }
+  while (out.population.size() > g.population.size()) {
+    const std::size_t drop = fronts.worst(config_.domcount_then_hv, config_.ref);
+    fronts.erase(drop);
+    out.population.erase(out.population.begin() + long(drop));
+  }
   return out;
 }
 
@@ -159,7 +142,14 @@ std::vector<Point> SmsEmoa::front(const Generation& g) {
 
 Generation run(const SmsEmoa& algorithm, const Generation* start, const std::function<void(const Generation&)>& on_step,
                const std::function<bool(const Generation&)>& stop) {
-  return run_to_budget(algorithm, start, on_step, stop);
+  // run_to_budget's loop, stepping in place.
+  Generation g = start ? *start : algorithm.initial();
+  if (!start && on_step) on_step(g);
+  while (!algorithm.done(g) && !(stop && stop(g))) {
+    algorithm.advance(g);
+    if (on_step) on_step(g);
+  }
+  return g;
 }
 
 }  // namespace mtcs::opt

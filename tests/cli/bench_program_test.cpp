@@ -43,7 +43,7 @@ TEST_CASE("mtcs bench: runs mtcs-bench with the arguments and its exit code", "[
   REQUIRE(run_mtcs("bench sms-emoa --problem zdt1 --seeds 1 --evaluations 300 --algorithms sms-emoa,nsga2 > " +
                    out.string()) == 0);
   const std::string csv = read_text(out);
-  CHECK(csv.find("problem,algorithm,seed,evaluations,hypervolume,seconds\n") == 0);
+  CHECK(csv.find("problem,algorithm,seed,evaluations,hypervolume,seconds,cpu_seconds\n") == 0);
   CHECK(csv.find("zdt1,nsga2,1,300,") != std::string::npos);  // pagmo's NSGA-II ran: the peer is in mtcs-bench
   // A bad subcommand is mtcs-bench's usage error: exit 2, as before the split.
   CHECK(run_mtcs("bench no-such-benchmark") == 2);

@@ -7,9 +7,15 @@
 // infeasible points come after every feasible one, ordered by violation (constrained
 // domination); a penalty method ranks penalised objectives instead. Contributions use the given
 // reference point.
+//
+// lambda > 1 (for expensive evaluations): each step makes lambda offspring from the same
+// parents, evaluates them in parallel and removes lambda members one by one; with lambda = 1 it
+// is the steady-state algorithm above. The fronts are kept between steps (src/opt/sms_fronts.h),
+// updated as a point comes in or goes out.
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "mtcs/opt/evolution_strategy.h"
@@ -23,6 +29,7 @@ struct SmsConfig {
   std::uint64_t seed = 1;
   Point ref;                     // reference point for the contributions (and the reported HV)
   bool domcount_then_hv = true;  // false: least contribution only
+  int lambda = 1;                // offspring per step, evaluated in parallel
 };
 
 class SmsEmoa {
@@ -30,8 +37,10 @@ class SmsEmoa {
   SmsEmoa(const Problem& problem, SmsConfig config);
 
   Generation initial() const;
-  // One step: one offspring, one removal. The generation index counts steps.
+  // One step: lambda offspring, lambda removals. The generation index counts steps.
   Generation step(const Generation& previous) const;
+  // The same step on g itself (what run does: no copy of the population).
+  void advance(Generation& g) const;
   bool done(const Generation& g) const { return g.evaluations >= config_.evaluations; }
   const SmsConfig& config() const { return config_; }
 
@@ -46,9 +55,12 @@ class SmsEmoa {
   Generation immigrate(const Generation& g, const std::vector<Individual>& arrivals) const;
 
  private:
-  std::size_t loser(const std::vector<Individual>& population) const;
+  struct Fronts;
+
   const Problem& problem_;
   SmsConfig config_;
+  // The fronts of the last population stepped (checked against the population it is given).
+  std::shared_ptr<Fronts> fronts_;
 };
 
 // Runs to the budget (or until `stop` says so after a step: an interruption the run resumes from).

@@ -1,0 +1,207 @@
+// SMS-EMOA's kept fronts (src/opt/sms_fronts.h) against the full sort they replace: Deb's fast
+// non-dominated sorting of all points at every step, then the paper's removal rules, as
+// sms_emoa.cpp did it before (copied here as the reference). The same member must go, ties
+// included, on random sets built to tie (duplicates, shared coordinates, equal violations,
+// points outside the reference box), and whole runs must match step for step.
+
+#include <catch2/catch.hpp>
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <limits>
+#include <random>
+
+#include "mtcs/opt/benchmark_problems.h"
+#include "mtcs/opt/sms_emoa.h"
+#include "opt/sms_fronts.h"
+
+using namespace mtcs::opt;
+
+namespace {
+
+bool dominates(const Score& a, const Score& b) {
+  if (a.feasible != b.feasible) return a.feasible;
+  if (!a.feasible) return a.violation < b.violation;
+  bool strictly = false;
+  for (std::size_t k = 0; k < a.objectives.size(); ++k) {
+    if (a.objectives[k] > b.objectives[k]) return false;
+    strictly = strictly || a.objectives[k] < b.objectives[k];
+  }
+  return strictly;
+}
+
+std::vector<std::size_t> worst_front(const std::vector<Score>& scores, bool* is_first) {
+  const std::size_t n = scores.size();
+  std::vector<int> count(n, 0);
+  std::vector<std::vector<std::size_t>> beats(n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j)
+      if (i != j && dominates(scores[i], scores[j])) beats[i].push_back(j), ++count[j];
+  std::vector<std::size_t> current;
+  for (std::size_t i = 0; i < n; ++i)
+    if (count[i] == 0) current.push_back(i);
+  *is_first = true;
+  for (;;) {
+    std::vector<std::size_t> next;
+    for (const std::size_t i : current)
+      for (const std::size_t j : beats[i])
+        if (--count[j] == 0) next.push_back(j);
+    if (next.empty()) return current;
+    current = std::move(next);
+    *is_first = false;
+  }
+}
+
+// The member the full sort removes.
+std::size_t reference_drop(const std::vector<Score>& ranked, bool domcount_then_hv, const Point& ref) {
+  bool first = false;
+  const std::vector<std::size_t> worst = worst_front(ranked, &first);
+  std::size_t drop = worst.front();
+  if (worst.size() > 1) {
+    if (!ranked[worst.front()].feasible) {
+      for (const std::size_t i : worst)
+        if (ranked[i].violation > ranked[drop].violation) drop = i;
+    } else {
+      std::vector<int> count(worst.size(), 0);
+      if (domcount_then_hv && !first)
+        for (std::size_t w = 0; w < worst.size(); ++w)
+          for (const auto& other : ranked) count[w] += dominates(other, ranked[worst[w]]) ? 1 : 0;
+      const int most = *std::max_element(count.begin(), count.end());
+      std::vector<std::size_t> tied;
+      for (std::size_t w = 0; w < worst.size(); ++w)
+        if (count[w] == most) tied.push_back(w);
+      std::size_t w = tied.front();
+      if (tied.size() > 1) {
+        std::vector<Point> pts;
+        for (const std::size_t i : worst) pts.push_back(ranked[i].objectives);
+        const std::vector<double> c = contributions(pts, ref);
+        for (const std::size_t t : tied)
+          if (c[t] < c[w]) w = t;
+      }
+      drop = worst[w];
+    }
+  }
+  return drop;
+}
+
+// The old step, whole: the reference run.
+Generation reference_step(const Problem& problem, const SmsConfig& config, const Generation& prev) {
+  Generation next = prev;
+  next.index = prev.index + 1;
+  Rng rng = Rng::for_individual(config.seed, std::uint64_t(next.index), 0);
+  const int mu = int(prev.population.size());
+  const Individual& a = prev.population[std::size_t(rng.below(mu))];
+  const Individual& b = prev.population[std::size_t(rng.below(mu))];
+  Individual child;
+  child.x = problem.recombine(a.x, b.x, rng);
+  child.steps = a.steps;
+  problem.mutate(child.x, child.steps, rng);
+  child.score = problem.evaluate(child.x);
+  next.population.push_back(std::move(child));
+  ++next.evaluations;
+  std::vector<Score> ranked;
+  for (const auto& ind : next.population) ranked.push_back(problem.ranking(ind.score));
+  next.population.erase(next.population.begin() + long(reference_drop(ranked, config.domcount_then_hv, config.ref)));
+  return next;
+}
+
+// Points made to tie: coordinates on a coarse grid (shared values, duplicates, mutual
+// non-domination in bulk), some outside the reference box, some infeasible with few violation
+// levels, some infinite.
+Score random_score(std::mt19937_64& gen, std::size_t m, int grid) {
+  std::uniform_int_distribution<int> cell(0, grid);
+  std::uniform_real_distribution<double> u(0, 1);
+  Score s;
+  for (std::size_t k = 0; k < m; ++k) s.objectives.push_back(double(cell(gen)) / grid * 1.2);
+  const double r = u(gen);
+  if (r < 0.1) {
+    s.feasible = false;
+    s.violation = double(cell(gen) % 4 + 1);
+  } else if (r < 0.13) {
+    s.objectives[0] = std::numeric_limits<double>::infinity();
+  } else if (r < 0.4 && m == 2) {
+    // on a line: many mutually non-dominated points
+    const double t = double(cell(gen)) / grid;
+    s.objectives = {t, 1 - t};
+  }
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("SMS fronts: the kept fronts drop what the full sort drops", "[opt][sms-emoa][fronts]") {
+  std::mt19937_64 gen(12345);
+  for (const std::size_t m : {2u, 3u}) {
+    for (const int grid : {4, 12, 1000}) {
+      for (const bool domcount : {true, false}) {
+        for (const int lambda : {1, 3}) {
+          const Point ref(m, 1.1);
+          std::vector<Score> pop;
+          detail::SteadyStateFronts fronts;
+          for (int i = 0; i < 30; ++i) {
+            pop.push_back(random_score(gen, m, grid));
+            fronts.push(pop.back(), pop.back());
+          }
+          int checked = 0;
+          for (int step = 0; step < 300; ++step) {
+            for (int k = 0; k < lambda; ++k) {
+              pop.push_back(random_score(gen, m, grid));
+              fronts.push(pop.back(), pop.back());
+            }
+            for (int k = 0; k < lambda; ++k) {
+              const std::size_t expected = reference_drop(pop, domcount, ref);
+              const std::size_t got = fronts.worst(domcount, ref);
+              checked += expected == got ? 1 : 0;
+              REQUIRE(got == expected);
+              pop.erase(pop.begin() + long(expected));
+              fronts.erase(got);
+            }
+          }
+          CHECK(checked == 300 * lambda);
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("SMS fronts: a run steps exactly as the full sort did", "[opt][sms-emoa][fronts]") {
+  for (const std::string name : {"zdt1", "zdt3", "dtlz1", "dtlz2"}) {
+    const auto p = make_benchmark_problem(name);
+    SmsConfig c;
+    c.mu = 30;
+    c.seed = 4;
+    c.evaluations = 2500;
+    c.ref = std::vector<double>(std::size_t(objective_count(name)), 1.1);
+    const SmsEmoa sms(*p, c);
+    Generation ours = sms.initial(), theirs = ours;
+    while (!sms.done(ours)) {
+      sms.advance(ours);
+      theirs = reference_step(*p, c, theirs);
+      REQUIRE(ours.population.size() == theirs.population.size());
+      for (std::size_t i = 0; i < ours.population.size(); ++i) REQUIRE(ours.population[i].x == theirs.population[i].x);
+    }
+    CHECK(ours.evaluations == theirs.evaluations);
+    // step() on a copy agrees with advance() too (the fronts follow whichever population comes).
+    CHECK(sms.step(theirs).population.back().x == [&] { Generation g = theirs; sms.advance(g); return g.population.back().x; }());
+  }
+}
+
+TEST_CASE("SMS-EMOA with lambda offspring per step: same result whatever the thread count", "[opt][sms-emoa][fronts]") {
+  const auto p = make_benchmark_problem("zdt2");
+  SmsConfig c;
+  c.mu = 20;
+  c.lambda = 8;
+  c.evaluations = 1000;
+  c.ref = {1.1, 1.1};
+  const SmsEmoa sms(*p, c);
+  const auto with_threads = [&](int threads) {
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    return run(sms, nullptr, {});
+  };
+  const Generation a = with_threads(1);
+  CHECK(a.evaluations == 1000);
+  CHECK(a.index == (1000 - 20) / 8 + 1);  // the last step spends the 4 left
+  CHECK(a.population.size() == 20);
+  const Generation b = with_threads(2);
+  for (std::size_t i = 0; i < a.population.size(); ++i) CHECK(a.population[i].x == b.population[i].x);
+}
