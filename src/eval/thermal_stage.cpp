@@ -35,12 +35,6 @@ __attribute__((target_clones("avx2", "default"))) void nearer_squared(const floa
   }
 }
 
-// m[i] = min(m[i], c[i]): one more bore of a circuit.
-__attribute__((target_clones("avx2", "default"))) void min_into(float* __restrict m, const float* __restrict c,
-                                                                std::size_t n) {
-  for (std::size_t i = 0; i < n; ++i) m[i] = c[i] < m[i] ? c[i] : m[i];
-}
-
 // e[i] = sqrt(m[i]) - r: a circuit's squared distances to effective wall distances.
 __attribute__((target_clones("avx2", "default"))) void wall_distances(const float* __restrict m, double r,
                                                                       double* __restrict e, std::size_t n) {
@@ -115,26 +109,20 @@ class ThermalStage final : public Stage {
     }
     return circuits_.get(key, [&] {
       const std::size_t n = samples_.size();
+      // Recomputed rather than cached per bore: a bore's column costs ~2 us to compute and about
+      // as much to fetch from memory once the cache outgrows the processor's (experiments/evaluate).
       std::vector<float> near2(n, std::numeric_limits<float>::infinity());
-      for (std::size_t b = first; b < last; ++b) min_into(near2.data(), bore_squared(layout.bores[b]).data(), n);
+      for (std::size_t b = first; b < last; ++b) {
+        const auto& bore = layout.bores[b];
+        const Vec3 a = bore.flow_start - origin_, d = bore.flow_end - bore.flow_start;
+        const float fa[3] = {float(a.x()), float(a.y()), float(a.z())};
+        const float fd[3] = {float(d.x()), float(d.y()), float(d.z())};
+        const float dd = fd[0] * fd[0] + fd[1] * fd[1] + fd[2] * fd[2];
+        nearer_squared(xs_.data(), ys_.data(), zs_.data(), n, fa, fd, dd > 0 ? 1 / dd : 0, near2.data());
+      }
       auto e = std::make_unique_for_overwrite<double[]>(n);
       wall_distances(near2.data(), r, e.get(), n);
       return e;
-    });
-  }
-
-  // Squared single-precision distance of every sample to one bore's flow segment.
-  const std::vector<float>& bore_squared(const mold::Bore& bore) const {
-    const std::array<double, 6> key{bore.flow_start.x(), bore.flow_start.y(), bore.flow_start.z(),
-                                    bore.flow_end.x(),   bore.flow_end.y(),   bore.flow_end.z()};
-    return bores_.get(key, [&] {
-      std::vector<float> m(samples_.size(), std::numeric_limits<float>::infinity());
-      const Vec3 a = bore.flow_start - origin_, d = bore.flow_end - bore.flow_start;
-      const float fa[3] = {float(a.x()), float(a.y()), float(a.z())};
-      const float fd[3] = {float(d.x()), float(d.y()), float(d.z())};
-      const float dd = fd[0] * fd[0] + fd[1] * fd[1] + fd[2] * fd[2];
-      nearer_squared(xs_.data(), ys_.data(), zs_.data(), m.size(), fa, fd, dd > 0 ? 1 / dd : 0, m.data());
-      return m;
     });
   }
 
@@ -145,9 +133,8 @@ class ThermalStage final : public Stage {
   Vec3 origin_;     // the block's corner: single-precision coordinates are relative to it
   std::vector<float> xs_, ys_, zs_;
   int uniformity_slot_ = -1, worst_slot_ = -1;
-  // Per thread, by exact geometry: a child's unchanged circuits and bores are not recomputed.
-  ExactCache<std::vector<double>, std::unique_ptr<double[]>> circuits_{512};
-  ExactCache<std::array<double, 6>, std::vector<float>> bores_{2048};
+  // Per thread, by exact geometry: a child's unchanged circuits are not recomputed.
+  ExactCache<std::vector<double>, std::unique_ptr<double[]>> circuits_{256};
 };
 
 }  // namespace
