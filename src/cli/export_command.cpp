@@ -43,7 +43,7 @@ Command add_export_command(CLI::App& app) {
             mold::Layout layout;
             if (!o->layout.empty()) {
               session = std::make_unique<run::Session>(o->source);
-              layout = mold::decode(session->scene(), mold::load_layout(o->layout, session->spec()));
+              layout = mold::decode(session->scene(), session->read_layout(o->layout));
             } else {
               report::StoredLayout s = report::stored_layout(o->source, o->generation, o->member);
               if (!s.note.empty()) spdlog::warn(s.note);
