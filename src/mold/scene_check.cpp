@@ -1,5 +1,6 @@
 #include "scene_check.h"
 
+#include <cmath>
 #include <sstream>
 
 namespace mtcs::mold {
@@ -89,13 +90,16 @@ void check_scene(const io::YamlReader& r, const YAML::Node& root, const MoldSpec
       }
     if (ps.maxCoeff() < kMinPartShare * size.maxCoeff()) {
       const YAML::Node at = pick(c, spec.cavity->mesh ? "scale" : "box", field, "cavity");
-      r.fail(at, field, "the part measures " + size_text(ps) + ", less than 1/" + std::to_string(int(1 / kMinPartShare)) +
+      r.fail(at, field, "the part measures " + size_text(ps) + ", less than 1/" + std::to_string(std::lround(1 / kMinPartShare)) +
                             " of the block (" + size_text(size) + ")" + hint);
     }
     if (const std::string out = leaves(part, block, tol); !out.empty()) {
       const YAML::Node at = pick(c, spec.cavity->mesh ? "translate" : "box", field, "cavity");
+      // A small part outside the block is most often a mesh in other units, placed by its file.
+      const bool small = ps.maxCoeff() < 0.1 * size.maxCoeff();
       r.fail(at, field, "the part (" + size_text(ps) + ") leaves the block: it " + out +
-                            (spec.cavity->mesh ? "; place it with cavity.translate (and rotate)" : ""));
+                            (spec.cavity->mesh ? "; place it with cavity.translate (and rotate)" : "") +
+                            (spec.cavity->mesh && small ? "; it is also small for the block (" + size_text(size) + "): " + kScaleHint : ""));
     }
   }
 

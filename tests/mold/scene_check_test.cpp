@@ -112,6 +112,16 @@ TEST_CASE("scene check: a part in metres (1/1000 of its size) is refused as too 
   CHECK_THAT(std::string(e.what()), Catch::Contains("1000 from metres"));
 }
 
+TEST_CASE("scene check: a small part left where its file put it is refused with a scale hint", "[mold][scene]") {
+  // The fandisk case of docs/first-mold.md: 4.8 x 5.2 x 2.7 units, z from -2.7 to 0.
+  write("small.off", boxes_off({{0, 12.6, -2.68, 4.83, 17.85, 0}}));
+  const io::InputError e = error_of(kBlock + "cavity:\n  mesh: small.off\n");
+  CHECK(e.field() == "cavity.mesh");
+  CHECK_THAT(std::string(e.what()), Catch::Contains("leaves the block: it reaches z = -2.68 mm"));
+  CHECK_THAT(std::string(e.what()), Catch::Contains("it is also small for the block (200 x 210 x 110 mm)"));
+  CHECK_THAT(std::string(e.what()), Catch::Contains("give a scale"));
+}
+
 TEST_CASE("scene check: a part partly outside the block is refused, naming the face it crosses", "[mold][scene]") {
   write("part.off", boxes_off({{0, 0, 0, 100, 60, 20}}));
   const io::InputError e = error_of(kBlock + "cavity: {mesh: part.off, translate: [150, 75, 40]}\n");
