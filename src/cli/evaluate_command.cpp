@@ -30,14 +30,15 @@ Command add_evaluate_command(CLI::App& app) {
   sub->add_flag("--json", opt->json,
                 "one JSON object on stdout: {feasible, objectives, violation, violations[{kind, elements, "
                 "distance, margin, where}], drillable[{bore, free, cell, map, free_cells, pivot, tool, draw}] (with "
-                "drilling.access_map), stages[{name, seconds}]}");
+                "drilling.access_map), stages[{name, seconds}], changes[{circuit, waypoint, what}] (what reading the layout "
+                "changed: snaps within 0.01 mm, diagonal steps drilled as axis-parallel legs)}");
   return {sub, [opt] {
             const run::Session session(opt->mold);
-            const mold::Genome genome = mold::load_layout(opt->layout, session.spec());
-            const eval::Evaluation e = session.pipeline().evaluate(genome, true);
-            const mold::Layout layout = mold::decode(session.scene(), genome);
-            if (opt->json) eval::write_evaluation_json(std::cout, e, session.pipeline(), layout);
-            else eval::write_evaluation_text(std::cout, e, session.pipeline(), layout);
+            const mold::WrittenLayout w = mold::read_layout(opt->layout, session.spec());
+            const eval::Evaluation e = session.pipeline().evaluate(w.genome, true);
+            const mold::Layout layout = mold::decode(session.scene(), w.genome);
+            if (opt->json) eval::write_evaluation_json(std::cout, e, session.pipeline(), layout, w.changes);
+            else eval::write_evaluation_text(std::cout, e, session.pipeline(), layout, w.changes);
             return 0;
           }};
 }

@@ -41,7 +41,7 @@ TriangleMesh load_solid(const std::string& path) {
 int print_layout_interference(const std::string& mold_path, const std::string& layout_path, bool json) {
   const run::Session session(mold_path);
   const run::LayoutInterference r =
-      run::layout_interference(session.pipeline(), mold::load_layout(layout_path, session.spec()));
+      run::layout_interference(session.pipeline(), session.read_layout(layout_path));
   if (json) run::write_layout_interference_json(std::cout, r, mold_path, layout_path);
   else run::write_layout_interference_text(std::cout, r);
   return 0;

@@ -61,7 +61,7 @@ Command add_thermal_command(CLI::App& app) {
               return 2;
             }
             const run::Session session(opt->mold);
-            const mold::Layout layout = mold::decode(session.scene(), mold::load_layout(opt->layout, session.spec()));
+            const mold::Layout layout = mold::decode(session.scene(), session.read_layout(opt->layout));
             eval::ThermalQuery query = eval::thermal_query(session.spec());
             if (!opt->tier.empty())
               query.tier = opt->tier == "t1" ? mold::ThermalTier::T1 : opt->tier == "t2" ? mold::ThermalTier::T2

@@ -45,7 +45,7 @@ std::string found_and_needed(const Violation& v) {
 }  // namespace
 
 void write_evaluation_json(std::ostream& out, const Evaluation& e, const Pipeline& pipeline,
-                           const mold::Layout& layout) {
+                           const mold::Layout& layout, const std::vector<mold::LayoutChange>& changes) {
   nlohmann::ordered_json j;
   j["feasible"] = e.feasible();
   j["objectives"] = nlohmann::ordered_json::object();
@@ -72,11 +72,17 @@ void write_evaluation_json(std::ostream& out, const Evaluation& e, const Pipelin
   }
   j["stages"] = nlohmann::ordered_json::array();
   for (const auto& s : e.stages) j["stages"].push_back({{"name", s.name}, {"seconds", s.seconds}});
+  j["changes"] = nlohmann::ordered_json::array();
+  for (const auto& c : changes) j["changes"].push_back({{"circuit", c.circuit}, {"waypoint", c.waypoint}, {"what", c.what}});
   out << j.dump(2) << "\n";
 }
 
 void write_evaluation_text(std::ostream& out, const Evaluation& e, const Pipeline& pipeline,
-                           const mold::Layout& layout) {
+                           const mold::Layout& layout, const std::vector<mold::LayoutChange>& changes) {
+  // What the drilling plan changed in the layout as written comes first: the rest scores it.
+  if (!changes.empty()) out << "changed from the layout as written\n";
+  for (const auto& c : changes) out << "  " << c.what << "\n";
+  if (!changes.empty()) out << "\n";
   double dead = 0;
   for (const auto& b : layout.bores) dead += b.dead_end;
   out << "bores " << layout.bores.size() << ", plugs " << layout.plugs << " (dead ends " << dead

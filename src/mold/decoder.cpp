@@ -78,6 +78,15 @@ std::vector<Vec3> routed_waypoints(const Scene& scene, const Circuit& circuit) {
   return merged;
 }
 
+Genome drilled_genome(const Scene& scene, const Genome& genome) {
+  Genome out;
+  for (const Circuit& c : genome.circuits) {
+    Circuit d{routed_waypoints(scene, c), c.diameter};
+    if (d.waypoints.size() >= 2) out.circuits.push_back(std::move(d));
+  }
+  return out;
+}
+
 Layout decode(const Scene& scene, const Genome& genome) {
   const MoldSpec& spec = scene.spec();
   const Drilling& drill = spec.drilling;

@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 
@@ -17,14 +18,74 @@ using io::indexed;
 
 using geometry::Vec3;
 
-Genome load_layout(const std::string& path, const MoldSpec& spec) {
+namespace {
+
+std::string mm(double v) { return io::shortest(std::round(v * 1e6) / 1e6) + " mm"; }
+
+std::string point(const Vec3& p) { return "[" + io::shortest(p.x()) + ", " + io::shortest(p.y()) + ", " + io::shortest(p.z()) + "]"; }
+
+std::string faces_text(const std::vector<Face>& faces) {
+  std::string s;
+  for (const Face f : faces) s += (s.empty() ? "" : ", ") + to_string(f);
+  return s;
+}
+
+// The waypoints of one circuit as written, checked against the drilling rules; what is snapped
+// or routed is recorded in `changes`, what cannot be drilled as written is refused at its node.
+void check_circuit(const YamlReader& r, const YAML::Node& w, const std::string& path, const MoldSpec& spec, int c,
+                   Circuit& circuit, std::vector<LayoutChange>& changes) {
+  const Drilling& drill = spec.drilling;
+  if (!drill.axis_parallel) return;
+  static const char* kAxis = "xyz";
+  std::array<bool, 3> drillable{false, false, false};
+  for (const Face f : drill.allowed_faces) drillable[std::size_t(axis_of(f))] = true;
+  std::vector<Vec3>& pts = circuit.waypoints;
+  const Vec3 inlet = pts.front();
+  for (std::size_t i = 1; i < pts.size(); ++i) {
+    Vec3& p = pts[i];
+    const std::string wp = indexed(path, i);
+    const std::string who = "circuit " + std::to_string(c) + ", waypoint " + std::to_string(i);
+    for (int k = 0; k < 3; ++k) {
+      if (drillable[std::size_t(k)] || p[k] == inlet[k]) continue;
+      const double off = std::abs(p[k] - inlet[k]);
+      const std::string axis(1, kAxis[k]);
+      if (off > kLayoutSnap)
+        r.fail(w[i], wp,
+               who + " leaves the drilling plane of its inlet (" + axis + " = " + mm(inlet[k]) + ", here " + axis +
+                   " = " + mm(p[k]) + "): holes must run parallel to an allowed face, and no face in "
+                   "drilling.allowed_faces (" + faces_text(drill.allowed_faces) + ") is drilled along " + axis +
+                   "; give it " + axis + " = " + io::shortest(inlet[k]) + " or allow a face on " + axis);
+      changes.push_back({c, int(i), who + ": " + axis + " snapped from " + io::shortest(p[k]) + " to the inlet's " +
+                                        io::shortest(inlet[k]) + " mm (within " + mm(kLayoutSnap) + ")"});
+      p[k] = inlet[k];
+    }
+    // A step along more than one axis is drilled as legs along the axes, longest first.
+    const Vec3 d = p - pts[i - 1];
+    int moving = 0;
+    for (int k = 0; k < 3; ++k) moving += d[k] != 0 ? 1 : 0;
+    if (moving > 1) {
+      std::string axes;
+      for (int k = 0; k < 3; ++k)
+        if (d[k] != 0) axes += (axes.empty() ? "" : " and ") + std::string(1, kAxis[k]);
+      changes.push_back({c, int(i), who + ": the step from " + point(pts[i - 1]) + " to " + point(p) + " runs along " +
+                                        axes + "; drilled as " + std::to_string(moving) +
+                                        " axis-parallel holes, longest first (drilling.axis_parallel)"});
+    }
+  }
+}
+
+}  // namespace
+
+WrittenLayout read_layout(const std::string& path, const MoldSpec& spec) {
   const YamlReader r(path);
   const YAML::Node root = r.load();
   r.expect_map(root, "", {"circuits"});
   if (!root["circuits"]) r.fail(root, "circuits", "a layout needs a list of circuits");
   const YAML::Node& cs = root["circuits"];
   r.expect_sequence(cs, "circuits");
-  Genome g;
+  if (cs.size() == 0) r.fail(cs, "circuits", "the layout has no circuit: an empty layout cools nothing, so it is not scored");
+  WrittenLayout out;
+  Genome& g = out.genome;
   for (std::size_t c = 0; c < cs.size(); ++c) {
     const std::string cp = indexed("circuits", c);
     r.expect_map(cs[c], cp, {"diameter", "waypoints"});
@@ -39,10 +100,16 @@ Genome load_layout(const std::string& path, const MoldSpec& spec) {
     if (w.size() < 2) r.fail(w, cp + ".waypoints", "a circuit needs at least an inlet and an outlet");
     for (std::size_t i = 0; i < w.size(); ++i)
       circuit.waypoints.push_back(r.vec3(w[i], indexed(cp + ".waypoints", i)));
+    bool moves = false;
+    for (const Vec3& p : circuit.waypoints) moves = moves || p != circuit.waypoints.front();
+    if (!moves) r.fail(w, cp + ".waypoints", "circuit " + std::to_string(c) + " drills nothing: all its waypoints are the same point");
+    check_circuit(r, w, cp + ".waypoints", spec, int(c), circuit, out.changes);
     g.circuits.push_back(std::move(circuit));
   }
-  return g;
+  return out;
 }
+
+Genome load_layout(const std::string& path, const MoldSpec& spec) { return read_layout(path, spec).genome; }
 
 void save_layout(const std::string& path, const Genome& genome) {
   YAML::Emitter out;

@@ -9,7 +9,11 @@
 #include <filesystem>
 #include <sstream>
 
+#include <Eigen/Geometry>
+
+#include "mtcs/mesh/mesh_check.h"
 #include "mtcs/mesh/mesh_io.h"
+#include "scene_check.h"
 #include "mtcs/io/yaml_reader.h"
 
 namespace mtcs::mold {
@@ -63,24 +67,71 @@ Box parse_box(const YamlReader& r, const YAML::Node& n, const std::string& path)
   return b;
 }
 
-MeshSource parse_mesh(const YamlReader& r, const YAML::Node& file, const YAML::Node& translate,
-                      const std::string& path, const std::string& translate_path) {
+// `scale` as a number or [sx, sy, sz], each > 0 (a negative factor would turn the mesh inside out).
+Vec3 parse_scale(const YamlReader& r, const YAML::Node& n, const std::string& path) {
+  if (n.IsSequence()) {
+    if (n.size() != 3) r.fail(n, path, "expected a factor or three factors [sx, sy, sz]");
+    return {r.number(n[0], at(path, 0), 1e-9, 1e9), r.number(n[1], at(path, 1), 1e-9, 1e9),
+            r.number(n[2], at(path, 2), 1e-9, 1e9)};
+  }
+  const double f = r.number(n, path, 1e-9, 1e9);
+  return {f, f, f};
+}
+
+// `rotate`: {axis: [x, y, z], degrees: a} (right-handed about the axis through the origin), or a
+// list of them applied in order.
+Eigen::Matrix3d parse_rotate(const YamlReader& r, const YAML::Node& n, const std::string& path) {
+  if (n.IsSequence()) {
+    Eigen::Matrix3d m = Eigen::Matrix3d::Identity();
+    for (std::size_t i = 0; i < n.size(); ++i) m = parse_rotate(r, n[i], at(path, i)) * m;
+    return m;
+  }
+  r.expect_map(n, path, {"axis", "degrees"});
+  if (!n["axis"] || !n["degrees"]) r.fail(n, path, "a rotation needs axis: [x, y, z] and degrees");
+  const Vec3 axis = r.vec3(n["axis"], path + ".axis");
+  if (!(axis.norm() > 0)) r.fail(n["axis"], path + ".axis", "the axis must not be zero");
+  const double deg = r.number(n["degrees"], path + ".degrees", -360, 360);
+  return Eigen::AngleAxisd(deg * 3.14159265358979323846 / 180, axis.normalized()).toRotationMatrix();
+}
+
+// The mesh of a block, cavity or keep-out map `n` ("mesh", and optionally "scale", "rotate",
+// "translate"): read, checked (closed, oriented outwards, no self-intersection), then scaled,
+// rotated and translated in that order, about the file's origin.
+MeshSource parse_mesh(const YamlReader& r, const YAML::Node& n, const std::string& prefix) {
+  const YAML::Node& file = n["mesh"];
+  const std::string path = prefix + ".mesh";
   MeshSource m;
   const std::string rel = r.text(file, path);
   const std::filesystem::path base = std::filesystem::path(r.file()).parent_path();
   m.path = (base / rel).lexically_normal().string();
-  if (translate) m.translate = r.vec3(translate, translate_path);
+  if (n["translate"]) m.translate = r.vec3(n["translate"], prefix + ".translate");
+  const Vec3 scale = n["scale"] ? parse_scale(r, n["scale"], prefix + ".scale") : Vec3(1, 1, 1);
+  const Eigen::Matrix3d rotate = n["rotate"] ? parse_rotate(r, n["rotate"], prefix + ".rotate") : Eigen::Matrix3d::Identity();
   if (!std::filesystem::exists(m.path)) r.fail(file, path, "mesh file not found: " + m.path);
   try {
     m.mesh = mesh::read_mesh(m.path);
   } catch (const mesh::MeshError& e) {
     r.fail(file, path, e.what());
   }
+  if (double(m.mesh.triangles.size()) > kMaxSpecTriangles)
+    r.fail(file, path, m.path + ": " + std::to_string(m.mesh.triangles.size()) + " triangles, more than " +
+                           std::to_string(long(kMaxSpecTriangles)) + ": simplify the mesh (e.g. quadric edge collapse)");
   const std::string problem = mesh::closed_mesh_problem(m.mesh);
   if (!problem.empty()) r.fail(file, path, m.path + ": " + problem);
   if (m.mesh.signed_volume() < 0) r.fail(file, path, m.path + ": the mesh is oriented inwards (negative volume)");
+  // As `mtcs interfere` checks its solids: a self-intersecting surface bounds no solid.
+  const mesh::MeshCheck check = mesh::check_mesh(m.mesh);
+  if (!check.ok()) r.fail(file, path, m.path + ": not the surface of a solid: " + check.message());
+  for (Vec3& v : m.mesh.vertices) v = rotate * Vec3(v.cwiseProduct(scale));
   m.mesh.translate(m.translate);
   return m;
+}
+
+// translate, scale and rotate place a mesh: refused beside a box, patch or cylinder.
+void mesh_only(const YamlReader& r, const YAML::Node& n, const std::string& prefix) {
+  if (n["mesh"]) return;
+  for (const char* key : {"translate", "scale", "rotate"})
+    if (n[key]) r.fail(n[key], prefix + "." + key, std::string(key) + " applies to a mesh only");
 }
 
 // The two axes along a face's plane, in x, y, z order.
@@ -144,12 +195,13 @@ double surface_sample_estimate(const Cavity& c) {
 }
 
 Cavity parse_cavity(const YamlReader& r, const YAML::Node& n, const Box& block) {
-  r.expect_map(n, "cavity", {"mesh", "translate", "box", "patch", "sample_spacing", "wall_thickness"});
+  r.expect_map(n, "cavity", {"mesh", "translate", "scale", "rotate", "box", "patch", "sample_spacing", "wall_thickness"});
+  mesh_only(r, n, "cavity");
   Cavity c;
   if (int(bool(n["mesh"])) + int(bool(n["box"])) + int(bool(n["patch"])) > 1)
     r.fail(n, "cavity", "give one of mesh, box or patch");
   if (n["mesh"]) {
-    c.mesh = parse_mesh(r, n["mesh"], n["translate"], "cavity.mesh", "cavity.translate");
+    c.mesh = parse_mesh(r, n, "cavity");
   } else if (n["box"]) {
     c.box = parse_box(r, n["box"], "cavity.box");
   } else if (n["patch"]) {
@@ -159,9 +211,13 @@ Cavity parse_cavity(const YamlReader& r, const YAML::Node& n, const Box& block) 
   } else {
     r.fail(n, "cavity", "the cavity needs a mesh (file), a box or a patch");
   }
-  if (n["translate"] && !n["mesh"]) r.fail(n["translate"], "cavity.translate", "translate applies to a mesh only");
   if (n["sample_spacing"]) c.sample_spacing = r.number(n["sample_spacing"], "cavity.sample_spacing", 1e-3, kHuge);
   if (n["wall_thickness"]) c.wall_thickness = r.number(n["wall_thickness"], "cavity.wall_thickness", 1e-6, kHuge);
+  return c;
+}
+
+// After the scene check: a part in the wrong units is named as such, not as too many samples.
+void check_samples(const YamlReader& r, const YAML::Node& n, const Cavity& c) {
   const double samples = surface_sample_estimate(c);
   if (!(samples <= kMaxSurfaceSamples)) {
     std::ostringstream msg;
@@ -169,11 +225,11 @@ Cavity parse_cavity(const YamlReader& r, const YAML::Node& n, const Box& block) 
         << kMaxSurfaceSamples << "; raise sample_spacing";
     r.fail(n["sample_spacing"] ? n["sample_spacing"] : n, n["sample_spacing"] ? "cavity.sample_spacing" : "cavity", msg.str());
   }
-  return c;
 }
 
 KeepOut parse_keep_out(const YamlReader& r, const YAML::Node& n, const std::string& path) {
-  r.expect_map(n, path, {"name", "cylinder", "mesh", "translate", "clearance"});
+  r.expect_map(n, path, {"name", "cylinder", "mesh", "translate", "scale", "rotate", "clearance"});
+  mesh_only(r, n, path);
   KeepOut k;
   k.name = n["name"] ? r.text(n["name"], path + ".name") : path;
   if (n["cylinder"] && n["mesh"]) r.fail(n, path, "give either cylinder or mesh, not both");
@@ -183,9 +239,8 @@ KeepOut parse_keep_out(const YamlReader& r, const YAML::Node& n, const std::stri
     if (!c["p0"] || !c["p1"] || !c["radius"]) r.fail(c, path + ".cylinder", "a cylinder needs p0, p1 and radius");
     k.cylinder = geometry::Cylinder{r.vec3(c["p0"], path + ".cylinder.p0"), r.vec3(c["p1"], path + ".cylinder.p1"),
                                     r.number(c["radius"], path + ".cylinder.radius", 1e-9, kHuge)};
-    if (n["translate"]) r.fail(n["translate"], path + ".translate", "translate applies to a mesh only");
   } else if (n["mesh"]) {
-    k.mesh = parse_mesh(r, n["mesh"], n["translate"], path + ".mesh", path + ".translate");
+    k.mesh = parse_mesh(r, n, path);
   } else {
     r.fail(n, path, "a keep-out needs a cylinder or a mesh");
   }
@@ -263,6 +318,8 @@ Objectives parse_objectives(const YamlReader& r, const YAML::Node& n) {
       const std::string s = r.text(n["use"][i], at("objectives.use", i));
       const auto objective = objective_named(s);
       if (!objective) r.fail(n["use"][i], at("objectives.use", i), "expected " + kObjectiveNames + "; got '" + s + "'");
+      if (std::find(o.use.begin(), o.use.end(), *objective) != o.use.end())
+        r.fail(n["use"][i], at("objectives.use", i), "'" + s + "' is listed twice: each objective once");
       o.use.push_back(*objective);
     }
     if (o.use.empty()) r.fail(n["use"], "objectives.use", "at least one objective is needed");
@@ -404,10 +461,11 @@ MoldSpec load_mold_spec(const std::string& path) {
   if (!root["block"]) r.fail(root, "block", "the block is required");
   {
     const YAML::Node& b = root["block"];
-    r.expect_map(b, "block", {"box", "mesh", "translate"});
+    r.expect_map(b, "block", {"box", "mesh", "translate", "scale", "rotate"});
+    mesh_only(r, b, "block");
     if (b["box"] && b["mesh"]) r.fail(b, "block", "give either box or mesh, not both");
     if (b["box"]) s.block.box = parse_box(r, b["box"], "block.box");
-    else if (b["mesh"]) s.block.mesh = parse_mesh(r, b["mesh"], b["translate"], "block.mesh", "block.translate");
+    else if (b["mesh"]) s.block.mesh = parse_mesh(r, b, "block");
     else r.fail(b, "block", "the block needs a box or a mesh");
   }
   if (root["cavity"])
@@ -425,6 +483,8 @@ MoldSpec load_mold_spec(const std::string& path) {
   if (root["objectives"]) s.objectives = parse_objectives(r, root["objectives"]);
   if (root["thermal"]) s.thermal = parse_thermal(r, root["thermal"]);
   if (root["penalty"]) s.penalty = parse_penalty(r, root["penalty"]);
+  check_scene(r, root, s);
+  if (s.cavity) check_samples(r, root["cavity"], *s.cavity);
   return s;
 }
 

@@ -142,7 +142,9 @@ StoredLayout layout_to_export(const std::string& source, const std::string& layo
   if (layout_file.empty()) return stored_layout(source, generation, member);
   StoredLayout s;  // the scene alone: decoding needs no pipeline (a thermal model can take seconds)
   const mold::Scene scene(mold::load_mold_spec(source));
-  s.layout = run::shop_plan(mold::decode(scene, mold::load_layout(layout_file, scene.spec())));
+  const mold::WrittenLayout written = mold::read_layout(layout_file, scene.spec());
+  for (const mold::LayoutChange& c : written.changes) s.note += (s.note.empty() ? "" : "; ") + layout_file + ": " + c.what;
+  s.layout = run::shop_plan(mold::decode(scene, written.genome));
   return s;
 }
 

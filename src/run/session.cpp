@@ -2,7 +2,10 @@
 
 #include <atomic>
 
+#include <spdlog/spdlog.h>
+
 #include "mtcs/eval/thermal_tiers.h"
+#include "mtcs/mold/layout_io.h"
 
 namespace mtcs::run {
 namespace {
@@ -48,5 +51,11 @@ Session::Session(mold::MoldSpec spec, const std::string& config_yaml, const std:
               [&](const std::vector<std::string>& names) { return parse_run_config(config_yaml, origin, names); }) {}
 
 long Session::scenes_built() { return scenes; }
+
+mold::Genome Session::read_layout(const std::string& layout_path) const {
+  mold::WrittenLayout w = mold::read_layout(layout_path, spec());
+  for (const mold::LayoutChange& c : w.changes) spdlog::warn("{}: {}", layout_path, c.what);
+  return std::move(w.genome);
+}
 
 }  // namespace mtcs::run

@@ -37,7 +37,8 @@ bool on_run(const Vec3& a, const Vec3& b, const Vec3& c, double tol) {
 
 mold::Genome shop_layout(const mold::Scene& scene, const mold::Genome& genome, double tolerance) {
   const geometry::Box& box = scene.block_bounds();
-  mold::Genome g = genome;
+  // What the decoder drills, so that the file re-reads as written (no axis it could not drill).
+  mold::Genome g = mold::drilled_genome(scene, genome);
   for (auto& c : g.circuits)
     for (Vec3& p : c.waypoints)
       for (int k = 0; k < 3; ++k) {

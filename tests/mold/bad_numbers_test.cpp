@@ -63,8 +63,9 @@ TEST_CASE("bad numbers: a coordinate of 1e308 is out of range, not an infinity l
   CHECK_THAT(std::string(e.what()), Catch::Contains("out of range"));
   CHECK(error_of(kBlock + "keep_outs:\n  - {name: k, cylinder: {p0: [1, 1, 0], p1: [1, 1, 1.7e308], radius: 1}}\n").field() ==
         "keep_outs[0].cylinder.p1[2]");
-  // The bound is a kilometre scale, far beyond any mold: 1e6 mm still loads.
-  CHECK(load("block: {box: {min: [-1e6, 0, 0], max: [1e6, 100, 50]}}\n").block.box->min.x() == -1e6);
+  // The bound is a kilometre scale, far beyond any mold: 1e6 mm still loads (a block of a
+  // plausible size there: the scene check refuses blocks over 10 m, scene_check_test.cpp).
+  CHECK(load("block: {box: {min: [-1e6, 0, 0], max: [-999900, 100, 50]}}\n").block.box->min.x() == -1e6);
 }
 
 TEST_CASE("bad numbers: denormals and negative zero are numbers like any other", "[mold][bad-numbers]") {
@@ -79,15 +80,16 @@ TEST_CASE("bad numbers: denormals and negative zero are numbers like any other",
 
 TEST_CASE("bad numbers: a cavity sampled into more than 2e7 points asks for a larger spacing", "[mold][bad-numbers]") {
   const auto t0 = std::chrono::steady_clock::now();
-  const std::string block = "block: {box: {min: [0, 0, 0], max: [1e6, 1e6, 1e6]}}\n";
-  auto e = error_of(block + "cavity: {box: {min: [10, 10, 10], max: [9e5, 9e5, 9e5]}, sample_spacing: 0.001}\n");
+  // A 10 m block, the largest the scene check accepts (scene_check_test.cpp).
+  const std::string block = "block: {box: {min: [0, 0, 0], max: [1e4, 1e4, 1e4]}}\n";
+  auto e = error_of(block + "cavity: {box: {min: [10, 10, 10], max: [9e3, 9e3, 9e3]}, sample_spacing: 0.001}\n");
   CHECK(e.field() == "cavity.sample_spacing");
   CHECK_THAT(std::string(e.what()), Catch::Contains("raise sample_spacing"));
-  // Without a spacing, the default 3 mm on a 900 m box is too fine as well: the cavity is named.
-  e = error_of(block + "cavity: {box: {min: [10, 10, 10], max: [9e5, 9e5, 9e5]}}\n");
+  // Without a spacing, the default 3 mm on a 9 m box is too fine as well: the cavity is named.
+  e = error_of(block + "cavity: {box: {min: [10, 10, 10], max: [9e3, 9e3, 9e3]}}\n");
   CHECK(e.field() == "cavity");
   // A patch and a mesh are counted too.
-  CHECK(error_of(block + "cavity: {patch: {face: +z, min: [0, 0], max: [1e6, 1e6]}, sample_spacing: 0.01}\n").field() ==
+  CHECK(error_of(block + "cavity: {patch: {face: +z, min: [0, 0], max: [1e4, 1e4]}, sample_spacing: 0.01}\n").field() ==
         "cavity.sample_spacing");
   write("tetra.off", kTetra);
   CHECK(error_of(kBlock + "cavity: {mesh: tetra.off, sample_spacing: 0.001}\n").field() == "cavity.sample_spacing");

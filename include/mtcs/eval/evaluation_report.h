@@ -9,10 +9,15 @@
 #include "mtcs/eval/evaluation.h"
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/mold/layout.h"
+#include "mtcs/mold/layout_io.h"
 
 namespace mtcs::eval {
 
-void write_evaluation_json(std::ostream& out, const Evaluation& e, const Pipeline& pipeline, const mold::Layout& layout);
-void write_evaluation_text(std::ostream& out, const Evaluation& e, const Pipeline& pipeline, const mold::Layout& layout);
+// `changes`: what reading the layout changed (mold::read_layout), listed first in the text and as
+// "changes" [{circuit, waypoint, what}] in the JSON.
+void write_evaluation_json(std::ostream& out, const Evaluation& e, const Pipeline& pipeline, const mold::Layout& layout,
+                           const std::vector<mold::LayoutChange>& changes = {});
+void write_evaluation_text(std::ostream& out, const Evaluation& e, const Pipeline& pipeline, const mold::Layout& layout,
+                           const std::vector<mold::LayoutChange>& changes = {});
 
 }  // namespace mtcs::eval

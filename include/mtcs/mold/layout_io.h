@@ -9,6 +9,7 @@
 // and the drilling plan as CSV and STL for CAD.
 
 #include <string>
+#include <vector>
 
 #include "mtcs/mold/genome.h"
 #include "mtcs/mold/layout.h"
@@ -16,8 +17,29 @@
 
 namespace mtcs::mold {
 
-// Throws io::InputError (file, line, column, field) on bad input; diameters must be in the
-// spec's drilling.diameters.
+// How far a written coordinate may be snapped without refusing the layout (mm): the shop
+// rounding of saved layouts.
+inline constexpr double kLayoutSnap = 0.01;
+
+// One thing the drilling plan changes in a layout as written (a coordinate snapped, a diagonal
+// step drilled as axis-parallel legs), in words naming the circuit and the waypoint.
+struct LayoutChange {
+  int circuit = 0, waypoint = 0;
+  std::string what;
+};
+
+struct WrittenLayout {
+  Genome genome;                     // as written, with the snaps applied
+  std::vector<LayoutChange> changes; // everything the decoder does beyond the written holes
+};
+
+// A user's layout is scored as written or refused: io::InputError (file, line, column, field)
+// on bad input, diameters not in the spec's drilling.diameters, an empty layout, a circuit whose
+// waypoints are all one point, and (with drilling.axis_parallel) a waypoint that leaves its
+// inlet's coordinate along an axis no allowed face is drilled along by more than kLayoutSnap.
+// The optimiser's genomes are not read here: mold::decode repairs them silently.
+WrittenLayout read_layout(const std::string& path, const MoldSpec& spec);
+// read_layout's genome; the changes are dropped (callers that show them use read_layout).
 Genome load_layout(const std::string& path, const MoldSpec& spec);
 void save_layout(const std::string& path, const Genome& genome);
 // bores.csv: name,circuit,segment,p0x,p0y,p0z,p1x,p1y,p1z,diameter,entry_face,plugged,dead_end

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mtcs/eval/pipeline.h"
+#include "mtcs/mold/genome.h"
 #include "mtcs/mold/scene.h"
 #include "mtcs/run/mold_problem.h"
 #include "mtcs/run/mold_run.h"
@@ -33,6 +34,10 @@ class Session {
   const RunConfig& config() const { return config_; }
   // The mold problem of the config (its weights, mutation rates and penalty variant).
   const MoldProblem& problem() const { return *problem_; }
+
+  // A user's layout file, read as written or refused (mold::read_layout); each change the
+  // drilling plan makes to it (a snap, a diagonal step drilled as legs) is logged as a warning.
+  mold::Genome read_layout(const std::string& layout_path) const;
 
   // Scenes built by Sessions in this process: compare-penalties builds one per run, however
   // many variants it compares (a test counts them).

@@ -1,0 +1,128 @@
+#include "scene_check.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace mtcs::mold {
+
+using geometry::Vec3;
+
+namespace {
+
+constexpr const char* kAxes = "xyz";
+
+std::string size_text(const Vec3& s) {
+  std::ostringstream out;
+  out.precision(4);
+  out << s.x() << " x " << s.y() << " x " << s.z() << " mm";
+  return out.str();
+}
+
+std::string mm(double v) {
+  std::ostringstream out;
+  out.precision(6);
+  out << v << " mm";
+  return out.str();
+}
+
+// The first place where `inner` leaves `outer` by more than `tol`: "reaches x = 250 mm, beyond
+// the block's +x face at 200 mm"; "" when inside.
+std::string leaves(const Box& inner, const Box& outer, double tol) {
+  for (int k = 0; k < 3; ++k) {
+    if (inner.min[k] < outer.min[k] - tol)
+      return std::string("reaches ") + kAxes[k] + " = " + mm(inner.min[k]) + ", beyond the block's -" + kAxes[k] +
+             " face at " + mm(outer.min[k]);
+    if (inner.max[k] > outer.max[k] + tol)
+      return std::string("reaches ") + kAxes[k] + " = " + mm(inner.max[k]) + ", beyond the block's +" + kAxes[k] +
+             " face at " + mm(outer.max[k]);
+  }
+  return "";
+}
+
+// The bounding box of a solid cylinder: each end widened by r sqrt(1 - u_k^2) along axis k.
+Box cylinder_bounds(const geometry::Cylinder& c) {
+  const Vec3 u = (c.p1 - c.p0).normalized();
+  Vec3 reach;
+  for (int k = 0; k < 3; ++k) reach[k] = c.radius * std::sqrt(std::max(0.0, 1 - u[k] * u[k]));
+  return {c.p0.cwiseMin(c.p1) - reach, c.p0.cwiseMax(c.p1) + reach};
+}
+
+// The field a designer edits to move or resize a mesh: its translate or scale when written,
+// else the mesh itself.
+const YAML::Node pick(const YAML::Node& n, const char* preferred, std::string& field, const std::string& prefix) {
+  if (n[preferred]) {
+    field = prefix + "." + preferred;
+    return n[preferred];
+  }
+  const char* fallback = n["mesh"] ? "mesh" : n["box"] ? "box" : "cylinder";
+  field = prefix + "." + fallback;
+  return n[fallback];
+}
+
+const std::string kScaleHint =
+    "is the mesh in other units than mm? give a scale (0.001 from micrometres, 1000 from metres, 25.4 from inches)";
+
+}  // namespace
+
+void check_scene(const io::YamlReader& r, const YAML::Node& root, const MoldSpec& spec) {
+  const Box block = spec.block.box ? *spec.block.box : spec.block.mesh->mesh.bounds();
+  const Vec3 size = block.size();
+  const YAML::Node& b = root["block"];
+  std::string field;
+  for (int k = 0; k < 3; ++k)
+    if (!(size[k] <= kMaxBlockExtent)) {
+      const YAML::Node at = pick(b, spec.block.mesh ? "scale" : "box", field, "block");
+      r.fail(at, field, "the block measures " + size_text(size) + ": more than " + mm(kMaxBlockExtent) + " along " +
+                            kAxes[k] + " is no mold block in mm" + (spec.block.mesh ? "; " + kScaleHint : ""));
+    }
+  const double tol = 1e-6 * size.maxCoeff();
+
+  if (spec.cavity && !spec.cavity->is_patch()) {
+    const YAML::Node& c = root["cavity"];
+    const Box part = spec.cavity->bounds();
+    const Vec3 ps = part.size();
+    const std::string hint = spec.cavity->mesh ? "; " + kScaleHint : "";
+    for (int k = 0; k < 3; ++k)
+      if (ps[k] > size[k] + tol) {
+        const YAML::Node at = pick(c, spec.cavity->mesh ? "scale" : "box", field, "cavity");
+        r.fail(at, field, "the part measures " + size_text(ps) + ", larger than the block (" + size_text(size) +
+                              ") along " + kAxes[k] + hint);
+      }
+    if (ps.maxCoeff() < kMinPartShare * size.maxCoeff()) {
+      const YAML::Node at = pick(c, spec.cavity->mesh ? "scale" : "box", field, "cavity");
+      r.fail(at, field, "the part measures " + size_text(ps) + ", less than 1/" + std::to_string(std::lround(1 / kMinPartShare)) +
+                            " of the block (" + size_text(size) + ")" + hint);
+    }
+    if (const std::string out = leaves(part, block, tol); !out.empty()) {
+      const YAML::Node at = pick(c, spec.cavity->mesh ? "translate" : "box", field, "cavity");
+      // A small part outside the block is most often a mesh in other units, placed by its file.
+      const bool small = ps.maxCoeff() < 0.1 * size.maxCoeff();
+      r.fail(at, field, "the part (" + size_text(ps) + ") leaves the block: it " + out +
+                            (spec.cavity->mesh ? "; place it with cavity.translate (and rotate)" : "") +
+                            (spec.cavity->mesh && small ? "; it is also small for the block (" + size_text(size) + "): " + kScaleHint : ""));
+    }
+  }
+
+  for (std::size_t i = 0; i < spec.keep_outs.size(); ++i) {
+    const KeepOut& k = spec.keep_outs[i];
+    const YAML::Node& n = root["keep_outs"][i];
+    const std::string prefix = io::indexed("keep_outs", i);
+    Box bounds;
+    if (k.cylinder) {
+      const geometry::Cylinder& cyl = *k.cylinder;
+      if (!((cyl.p1 - cyl.p0).norm() > tol))
+        r.fail(n["cylinder"]["p1"], prefix + ".cylinder.p1",
+               "keep-out '" + k.name + "' is a pin of zero length: p0 and p1 are the same point; give its two ends");
+      bounds = cylinder_bounds(cyl);
+    } else {
+      bounds = k.mesh->mesh.bounds();
+    }
+    if (const std::string out = leaves(bounds, block, tol); !out.empty()) {
+      const YAML::Node at = pick(n, k.mesh ? "translate" : "cylinder", field, prefix);
+      r.fail(at, field, "keep-out '" + k.name + "' leaves the block: it " + out +
+                            "; keep-outs lie in the block's steel (trim a pin at the block's face)");
+    }
+  }
+}
+
+}  // namespace mtcs::mold
