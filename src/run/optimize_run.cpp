@@ -27,6 +27,7 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
   const std::string db_path = (fs::path(out_dir) / "run.sqlite").string();
   std::optional<store::RunStore> db;
   std::string mold_path = r.mold, config_text;
+  int polish_budget = r.polish;
   if (resuming) {
     if (!fs::exists(db_path)) throw io::InputError(db_path, 0, 0, "", "no run to resume here");
     db = store::RunStore::resume(db_path);
@@ -35,6 +36,14 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
       if (!meta.count(key)) throw io::InputError(db_path, 0, 0, key, "missing from the store: not a mold run to resume");
     mold_path = meta.at("mold");
     config_text = meta.at("config");
+    // The run's polish budget is part of the run: a resume polishes as the run would have.
+    if (meta.count("polish") && r.polish == 0) {
+      try {
+        polish_budget = std::stoi(meta.at("polish"));
+      } catch (const std::exception&) {
+        throw io::InputError(db_path, 0, 0, "polish", "not a whole number in the store's meta: " + meta.at("polish"));
+      }
+    }
     if (content_hash(read_file_text(mold_path)) != meta.at("mold_hash"))
       throw io::InputError(mold_path, 0, 0, "", "the mold spec changed since the run started; start a new run");
   }
@@ -50,7 +59,9 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
       throw io::InputError(db_path, 0, 0, "", "the run here is in use: another process writes it; choose --out");
     if (fs::exists(db_path))
       throw io::InputError(db_path, 0, 0, "", "a run exists here: resume it with --resume " + out_dir + " or choose --out");
-    db = store::RunStore::create(db_path, mold_run_meta(mold_path, session));
+    auto meta = mold_run_meta(mold_path, session);
+    if (r.polish > 0) meta["polish"] = std::to_string(r.polish);
+    db = store::RunStore::create(db_path, meta);
   }
 
   const MoldProblem& problem = session.problem();
@@ -65,8 +76,8 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
   const opt::Individual& first = last.population.front();
   RunOutcome outcome{last, first.score, problem.genome(first.x), stored.seconds, mold_path, std::nullopt, first.score.value};
   outcome.interrupted = stored.interrupted;
-  if (r.polish > 0 && !stored.interrupted) {
-    outcome.polished = polish(problem, scene, outcome.genome, r.polish);
+  if (polish_budget > 0 && !stored.interrupted) {
+    outcome.polished = polish(problem, scene, outcome.genome, polish_budget);
     if (outcome.polished->improved) outcome.genome = outcome.polished->genome, outcome.best = outcome.polished->score;
     spdlog::info("polish (COBYLA, {} evaluations): objective {:.6g}{}", outcome.polished->evaluations, outcome.best.value,
                  outcome.polished->improved ? "" : " (no improvement)");

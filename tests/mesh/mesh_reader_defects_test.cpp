@@ -142,3 +142,17 @@ TEST_CASE("mesh reader defect: a vertex coordinate of an unknown type is refused
                                               "property double y\nproperty double z\nend_header\n0 0 0\n");
   CHECK_THAT(error_of(path), Catch::StartsWith(path + ":4: vertex property x must be float or double, not fproperty"));
 }
+
+// fuzz_mesh_ply, crash-9899519a (long round, 2026-11-25; kept as
+// tests/data/meshes/fuzz_crash_ply_list_z.ply): a vertex's z declared as a list ("property list
+// uchar double z") after x and y twice: CGAL reads z through a number reader of another type
+// (UBSan: "member call on null pointer of type PLY_read_typed_number<float>").
+TEST_CASE("mesh reader defect: a PLY vertex coordinate declared as a list, or twice, is refused", "[mesh][fuzz-defect]") {
+  const std::string artifact = MTCS_TEST_DATA "/meshes/fuzz_crash_ply_list_z.ply";
+  CHECK_THAT(error_of(artifact), Catch::StartsWith(artifact + ":7: property x of element vertex is declared twice"));
+  const std::string head = "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n";
+  const auto list = write("list_z.ply", head + "property list uchar double z\nend_header\n0 0 1 0\n");
+  CHECK_THAT(error_of(list), Catch::StartsWith(list + ":6: vertex property z must be float or double, not a list"));
+  const auto twice = write("twice.ply", head + "property float z\nproperty double y\nend_header\n0 0 0 0\n");
+  CHECK_THAT(error_of(twice), Catch::StartsWith(twice + ":7: property y of element vertex is declared twice"));
+}
