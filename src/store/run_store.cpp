@@ -199,6 +199,7 @@ RunStore RunStore::create(const std::string& path, const std::map<std::string, s
     exec(db, "COMMIT;");
     exec(db, "PRAGMA journal_mode=WAL;");  // kept in the file's header
   }
+  io::crash_point("store-create");
   std::filesystem::rename(fresh, path);
   s.db_ = open_db(path, SQLITE_OPEN_READWRITE);
   exec(s.db_, "PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL;");
