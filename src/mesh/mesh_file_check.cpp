@@ -77,8 +77,7 @@ void check_coordinates(const std::string& path, int lineno, const std::string& l
 }
 
 // The vertex lines of an OBJ ("v x y z") or an ASCII STL ("vertex x y z").
-void check_vertex_lines(const std::string& path, const std::string& text, const std::string& keyword) {
-  std::istringstream in(text);
+void check_vertex_lines(const std::string& path, std::istream& in, const std::string& keyword) {
   std::string line;
   long long vertex = 0;
   for (int lineno = 1; std::getline(in, line); ++lineno) {
@@ -92,34 +91,47 @@ void check_vertex_lines(const std::string& path, const std::string& text, const 
 
 // Binary STL: 80 bytes of header, a triangle count, 50 bytes a triangle. A count that the file
 // does not hold (10 million promised in 200 bytes) is named; CGAL only said it cannot read it.
-void check_stl(const std::string& path, const std::string& text) {
-  const bool ascii = text.compare(0, 5, "solid") == 0 && text.size() > 5 && std::isspace(static_cast<unsigned char>(text[5]));
-  if (ascii) return check_vertex_lines(path, text, "vertex");
-  if (text.size() < 84) throw MeshError(path + ": " + std::to_string(text.size()) + " bytes, too short for a binary STL (84 bytes of header)");
+void check_stl(const std::string& path, std::istream& in) {
+  char head[84] = {};
+  in.read(head, sizeof head);
+  const std::size_t got = std::size_t(in.gcount());
+  const bool ascii = got > 5 && std::string(head, 5) == "solid" && std::isspace(static_cast<unsigned char>(head[5]));
+  in.clear();
+  in.seekg(0);
+  if (ascii) return check_vertex_lines(path, in, "vertex");
+  const std::uintmax_t size = std::filesystem::file_size(path);
+  if (size < 84) throw MeshError(path + ": " + std::to_string(size) + " bytes, too short for a binary STL (84 bytes of header)");
   std::uint32_t count = 0;
-  for (int k = 3; k >= 0; --k) count = (count << 8) | static_cast<unsigned char>(text[80 + std::size_t(k)]);
+  for (int k = 3; k >= 0; --k) count = (count << 8) | static_cast<unsigned char>(head[80 + k]);
   if (count > kMaxMeshTriangles)
     throw MeshError(path + ": the binary STL header promises " + std::to_string(count) + " triangles, more than the " +
                     std::to_string(kMaxMeshTriangles) + " a mesh may have");
   const std::uint64_t expected = 84 + 50 * std::uint64_t(count);
-  if (text.size() != expected)
+  if (size != expected)
     throw MeshError(path + ": the binary STL header promises " + std::to_string(count) + " triangles (" +
-                    std::to_string(expected) + " bytes), the file has " + std::to_string(text.size()) + " bytes");
+                    std::to_string(expected) + " bytes), the file has " + std::to_string(size) + " bytes");
   // CGAL merges equal corners through an ordered map: a NaN compares equal to any point there
-  // and silently became another vertex. Corners after the normal, little-endian floats.
+  // and silently became another vertex. Corners after the normal, little-endian floats; read a
+  // block at a time (a mesh of 10 million triangles is 500 MB).
   static_assert(sizeof(float) == 4);
-  for (std::uint32_t t = 0; t < count; ++t)
-    for (int c = 0; c < 3; ++c)
-      for (int k = 0; k < 3; ++k) {
-        float v = 0;
-        std::memcpy(&v, text.data() + 84 + 50 * std::size_t(t) + 12 * std::size_t(c + 1) + 4 * std::size_t(k), 4);
-        if (!std::isfinite(v) || std::abs(v) > kMaxMeshCoordinate) {
-          std::ostringstream value;
-          value << v;
-          throw MeshError(path + ": triangle " + std::to_string(t) + ", corner " + std::to_string(c) + ": coordinate " +
-                          "xyz"[k] + " is " + value.str() + ", not a finite number of at most 1e9 in size");
+  in.seekg(84);
+  std::vector<char> block(50 * 4096);
+  for (std::uint32_t first = 0; first < count; first += 4096) {
+    const std::uint32_t n = std::min<std::uint32_t>(4096, count - first);
+    if (!in.read(block.data(), std::streamsize(50 * std::size_t(n)))) throw MeshError(path + ": cannot read its triangles");
+    for (std::uint32_t t = 0; t < n; ++t)
+      for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 3; ++k) {
+          float v = 0;
+          std::memcpy(&v, block.data() + 50 * std::size_t(t) + 12 * std::size_t(c + 1) + 4 * std::size_t(k), 4);
+          if (!std::isfinite(v) || std::abs(v) > kMaxMeshCoordinate) {
+            std::ostringstream value;
+            value << v;
+            throw MeshError(path + ": triangle " + std::to_string(first + t) + ", corner " + std::to_string(c) +
+                            ": coordinate " + "xyz"[k] + " is " + value.str() + ", not a finite number of at most 1e9 in size");
+          }
         }
-      }
+  }
 }
 
 // ASCII OFF as CGAL's File_scanner_OFF reads it (a vertex or a face a line after the counts):
@@ -238,13 +250,14 @@ void check_mesh_file(const std::string& path) {
   const std::string ext = lowercase_extension(path);
   if (ext != ".off" && ext != ".ply" && ext != ".obj" && ext != ".stl") return;
   std::ifstream in(path, std::ios::binary);
+  // STL and OBJ are checked as they stream by: no second copy of a large mesh in memory.
+  if (ext == ".obj") return check_vertex_lines(path, in, "v");
+  if (ext == ".stl") return check_stl(path, in);
   std::stringstream ss;
   ss << in.rdbuf();
   const std::string text = ss.str();
   if (ext == ".off") check_off(path, text);
-  else if (ext == ".ply") check_ply(path, text);
-  else if (ext == ".obj") check_vertex_lines(path, text, "v");
-  else check_stl(path, text);
+  else check_ply(path, text);
 }
 
 }  // namespace mtcs::mesh
