@@ -227,20 +227,27 @@ void check_ply(const std::string& path, const std::string& text) {
       const bool small = name == "uchar" || name == "uint8" || name == "char" || name == "int8" || name == "ushort" ||
                          name == "uint16" || name == "short" || name == "int16";
       if (!small) fail(path, lineno, "a list counted in " + name + ": up to 16 bits (uchar, ushort) are supported");
+      std::string index_type;
+      words >> index_type >> name;
     }
-    for (std::string more; words >> more;) name = more;  // CGAL names a property by its last word
-    // CGAL finds a property by its name and reads it as the type it expects: a second x, or a
-    // list named x, meets a reader of another type (a null dereference).
-    if (!declared.insert(element + " " + name).second)
-      fail(path, lineno, "property " + name + " of element " + element + " is declared twice");
-    if (type == "list") {
-      if (element == "vertex" && (name == "x" || name == "y" || name == "z"))
-        fail(path, lineno, "vertex property " + name + " must be float or double, not a list");
-      continue;
+    // CGAL names a property by the word after its type(s); garbage after that is ignored, and a
+    // type it does not know drops the property. Both that name and the line's last word are
+    // checked, so a garbage type before "x" is refused too.
+    std::string last = name;
+    for (std::string more; words >> more;) last = more;
+    std::vector<std::string> names{name};
+    if (last != name) names.push_back(last);
+    for (const std::string& n : names) {
+      // CGAL finds a property by its name and reads it as the type it expects: a second x, or
+      // an x of another type (an integer, a list), meets a reader of another type (a null
+      // dereference).
+      if (!declared.insert(element + " " + n).second)
+        fail(path, lineno, "property " + n + " of element " + element + " is declared twice");
+      const bool coordinate = element == "vertex" && (n == "x" || n == "y" || n == "z");
+      if (coordinate && type == "list") fail(path, lineno, "vertex property " + n + " must be float or double, not a list");
+      const bool real = type == "float" || type == "double" || type == "float32" || type == "float64";
+      if (coordinate && !real) fail(path, lineno, "vertex property " + n + " must be float or double, not " + type);
     }
-    const bool real = type == "float" || type == "double" || type == "float32" || type == "float64";
-    if (element == "vertex" && (name == "x" || name == "y" || name == "z") && !real)
-      fail(path, lineno, "vertex property " + name + " must be float or double, not " + type);
   }
 }
 
