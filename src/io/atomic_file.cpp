@@ -6,6 +6,8 @@
 
 #include <unistd.h>
 
+#include "mtcs/io/crash_point.h"
+
 namespace mtcs::io {
 
 AtomicFile::AtomicFile(std::string path)
@@ -22,6 +24,7 @@ AtomicFile::~AtomicFile() {
 }
 
 void AtomicFile::commit() {
+  crash_point("output");
   out_.flush();
   if (!out_) throw std::runtime_error("cannot write " + path_);
   out_.close();

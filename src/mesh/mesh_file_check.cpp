@@ -3,9 +3,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -49,6 +53,87 @@ void skip_comment(std::istream& in) {
   throw MeshError(path + ":" + std::to_string(line) + ": " + what);
 }
 
+// The coordinates of a vertex line, the three words from word `first` on: each a finite number
+// of at most kMaxMeshCoordinate, refused at its line and column ("nan", "inf", "1e400", "1e308").
+// Words that are no numbers are left to CGAL's reader, which refuses the file.
+void check_coordinates(const std::string& path, int lineno, const std::string& line, std::size_t first, long long vertex) {
+  std::size_t at = 0;
+  for (std::size_t word = 0; word < first + 3; ++word) {
+    at = line.find_first_not_of(" \t\r", at);
+    if (at == std::string::npos) return;
+    const std::size_t end = std::min(line.find_first_of(" \t\r", at), line.size());
+    if (word >= first) {
+      const std::string token = line.substr(at, end - at);
+      char* stop = nullptr;
+      const double v = std::strtod(token.c_str(), &stop);
+      if (stop != token.c_str() + token.size()) return;
+      if (!std::isfinite(v) || std::abs(v) > kMaxMeshCoordinate)
+        throw MeshError(path + ":" + std::to_string(lineno) + ":" + std::to_string(at + 1) + ": vertex " +
+                        std::to_string(vertex) + ": coordinate " + "xyz"[word - first] + " is '" + token.substr(0, 40) +
+                        "', not a finite number of at most 1e9 in size");
+    }
+    at = end;
+  }
+}
+
+// The vertex lines of an OBJ ("v x y z") or an ASCII STL ("vertex x y z").
+void check_vertex_lines(const std::string& path, std::istream& in, const std::string& keyword) {
+  std::string line;
+  long long vertex = 0;
+  for (int lineno = 1; std::getline(in, line); ++lineno) {
+    const std::size_t at = line.find_first_not_of(" \t");
+    if (at == std::string::npos || line.compare(at, keyword.size(), keyword) != 0) continue;
+    const std::size_t after = at + keyword.size();
+    if (after < line.size() && line[after] != ' ' && line[after] != '\t') continue;  // "vn", "vt", "vertices"
+    check_coordinates(path, lineno, line, 1, vertex++);
+  }
+}
+
+// Binary STL: 80 bytes of header, a triangle count, 50 bytes a triangle. A count that the file
+// does not hold (10 million promised in 200 bytes) is named; CGAL only said it cannot read it.
+void check_stl(const std::string& path, std::istream& in) {
+  char head[84] = {};
+  in.read(head, sizeof head);
+  const std::size_t got = std::size_t(in.gcount());
+  const bool ascii = got > 5 && std::string(head, 5) == "solid" && std::isspace(static_cast<unsigned char>(head[5]));
+  in.clear();
+  in.seekg(0);
+  if (ascii) return check_vertex_lines(path, in, "vertex");
+  const std::uintmax_t size = std::filesystem::file_size(path);
+  if (size < 84) throw MeshError(path + ": " + std::to_string(size) + " bytes, too short for a binary STL (84 bytes of header)");
+  std::uint32_t count = 0;
+  for (int k = 3; k >= 0; --k) count = (count << 8) | static_cast<unsigned char>(head[80 + k]);
+  if (count > kMaxMeshTriangles)
+    throw MeshError(path + ": the binary STL header promises " + std::to_string(count) + " triangles, more than the " +
+                    std::to_string(kMaxMeshTriangles) + " a mesh may have");
+  const std::uint64_t expected = 84 + 50 * std::uint64_t(count);
+  if (size != expected)
+    throw MeshError(path + ": the binary STL header promises " + std::to_string(count) + " triangles (" +
+                    std::to_string(expected) + " bytes), the file has " + std::to_string(size) + " bytes");
+  // CGAL merges equal corners through an ordered map: a NaN compares equal to any point there
+  // and silently became another vertex. Corners after the normal, little-endian floats; read a
+  // block at a time (a mesh of 10 million triangles is 500 MB).
+  static_assert(sizeof(float) == 4);
+  in.seekg(84);
+  std::vector<char> block(50 * 4096);
+  for (std::uint32_t first = 0; first < count; first += 4096) {
+    const std::uint32_t n = std::min<std::uint32_t>(4096, count - first);
+    if (!in.read(block.data(), std::streamsize(50 * std::size_t(n)))) throw MeshError(path + ": cannot read its triangles");
+    for (std::uint32_t t = 0; t < n; ++t)
+      for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 3; ++k) {
+          float v = 0;
+          std::memcpy(&v, block.data() + 50 * std::size_t(t) + 12 * std::size_t(c + 1) + 4 * std::size_t(k), 4);
+          if (!std::isfinite(v) || std::abs(v) > kMaxMeshCoordinate) {
+            std::ostringstream value;
+            value << v;
+            throw MeshError(path + ": triangle " + std::to_string(first + t) + ", corner " + std::to_string(c) +
+                            ": coordinate " + "xyz"[k] + " is " + value.str() + ", not a finite number of at most 1e9 in size");
+          }
+        }
+  }
+}
+
 // ASCII OFF as CGAL's File_scanner_OFF reads it (a vertex or a face a line after the counts):
 // CGAL casts a face's size and indices from double to size_t, undefined for negative or huge
 // values; binary OFF and the variants (COFF, NOFF, STOFF, 4OFF, nOFF) are refused.
@@ -89,7 +174,9 @@ void check_off(const std::string& path, const std::string& text) {
   std::string line;
   for (long long v = 0; v < vertices; ++v) {
     skip_comment(in);
+    const int lineno = lines.at(in.tellg());
     if (!std::getline(in, line)) return;
+    check_coordinates(path, lineno, line.substr(0, line.find('#')), 0, v);
   }
   for (long long f = 0; f < faces; ++f) {
     skip_comment(in);
@@ -117,6 +204,7 @@ void check_off(const std::string& path, const std::string& text) {
 void check_ply(const std::string& path, const std::string& text) {
   std::istringstream in(text);
   std::string line, element;
+  std::set<std::string> declared;  // "element property"
   for (int lineno = 1; std::getline(in, line); ++lineno) {
     std::istringstream words(line);
     std::string word, type, name;
@@ -139,12 +227,27 @@ void check_ply(const std::string& path, const std::string& text) {
       const bool small = name == "uchar" || name == "uint8" || name == "char" || name == "int8" || name == "ushort" ||
                          name == "uint16" || name == "short" || name == "int16";
       if (!small) fail(path, lineno, "a list counted in " + name + ": up to 16 bits (uchar, ushort) are supported");
-      continue;
+      std::string index_type;
+      words >> index_type >> name;
     }
-    for (std::string more; words >> more;) name = more;  // CGAL names a property by its last word
-    const bool real = type == "float" || type == "double" || type == "float32" || type == "float64";
-    if (element == "vertex" && (name == "x" || name == "y" || name == "z") && !real)
-      fail(path, lineno, "vertex property " + name + " must be float or double, not " + type);
+    // CGAL names a property by the word after its type(s); garbage after that is ignored, and a
+    // type it does not know drops the property. Both that name and the line's last word are
+    // checked, so a garbage type before "x" is refused too.
+    std::string last = name;
+    for (std::string more; words >> more;) last = more;
+    std::vector<std::string> names{name};
+    if (last != name) names.push_back(last);
+    for (const std::string& n : names) {
+      // CGAL finds a property by its name and reads it as the type it expects: a second x, or
+      // an x of another type (an integer, a list), meets a reader of another type (a null
+      // dereference).
+      if (!declared.insert(element + " " + n).second)
+        fail(path, lineno, "property " + n + " of element " + element + " is declared twice");
+      const bool coordinate = element == "vertex" && (n == "x" || n == "y" || n == "z");
+      if (coordinate && type == "list") fail(path, lineno, "vertex property " + n + " must be float or double, not a list");
+      const bool real = type == "float" || type == "double" || type == "float32" || type == "float64";
+      if (coordinate && !real) fail(path, lineno, "vertex property " + n + " must be float or double, not " + type);
+    }
   }
 }
 
@@ -152,8 +255,11 @@ void check_ply(const std::string& path, const std::string& text) {
 
 void check_mesh_file(const std::string& path) {
   const std::string ext = lowercase_extension(path);
-  if (ext != ".off" && ext != ".ply") return;
+  if (ext != ".off" && ext != ".ply" && ext != ".obj" && ext != ".stl") return;
   std::ifstream in(path, std::ios::binary);
+  // STL and OBJ are checked as they stream by: no second copy of a large mesh in memory.
+  if (ext == ".obj") return check_vertex_lines(path, in, "v");
+  if (ext == ".stl") return check_stl(path, in);
   std::stringstream ss;
   ss << in.rdbuf();
   const std::string text = ss.str();

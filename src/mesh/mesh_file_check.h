@@ -7,6 +7,10 @@
 
 namespace mtcs::mesh {
 
+// A vertex's coordinates are finite and at most this large (mm: a million km), as
+// io::kMaxCoordinate bounds the mold spec's: NaN, infinities and 1e308 are refused by the reader.
+inline constexpr double kMaxMeshCoordinate = 1e9;
+
 void check_mesh_file(const std::string& path);
 
 }  // namespace mtcs::mesh

@@ -6,9 +6,11 @@
 #include <CGAL/IO/polygon_soup_io.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "mesh_file_check.h"
 
@@ -39,6 +41,15 @@ TriangleMesh read_mesh(const std::string& path) {
                     " vertices, more than the " + std::to_string(kMaxMeshTriangles) + " a mesh may have");
   m.vertices.reserve(points.size());
   for (const auto& p : points) m.vertices.emplace_back(p.x(), p.y(), p.z());
+  // Binary STL and PLY, which have no lines to name: NaN, infinities, 1e308 by vertex.
+  for (std::size_t v = 0; v < m.vertices.size(); ++v)
+    for (int k = 0; k < 3; ++k)
+      if (!std::isfinite(m.vertices[v][k]) || std::abs(m.vertices[v][k]) > kMaxMeshCoordinate) {
+        std::ostringstream value;
+        value << m.vertices[v][k];
+        throw MeshError(path + ": vertex " + std::to_string(v) + ": coordinate " + "xyz"[k] + " is " + value.str() +
+                        ", not a finite number of at most 1e9 in size");
+      }
   for (std::size_t f = 0; f < polygons.size(); ++f) {
     const auto& poly = polygons[f];
     if (poly.size() < 3) throw MeshError(path + ": face " + std::to_string(f) + " has fewer than 3 corners");

@@ -48,6 +48,7 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
   std::unique_ptr<const Session> made;
   IslandSettings islands = r.islands;
   std::string mold_path = r.mold;
+  int polish_budget = r.polish;
   // Opens or makes the store (the writer) and the session; under MPI every rank learns whether
   // all could, so that none waits for a failed one.
   auto set_up = [&] {
@@ -60,6 +61,14 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
         if (!meta.count(key)) throw io::InputError(db_path, 0, 0, key, "missing from the store: not a mold run to resume");
       mold_path = meta.at("mold");
       config_text = meta.at("config");
+      // The run's polish budget is part of the run: a resume polishes as the run would have.
+      if (meta.count("polish") && r.polish == 0) {
+        try {
+          polish_budget = std::stoi(meta.at("polish"));
+        } catch (const std::exception&) {
+          throw io::InputError(db_path, 0, 0, "polish", "not a whole number in the store's meta: " + meta.at("polish"));
+        }
+      }
       islands = meta.count("islands") ? IslandSettings::parse(meta.at("islands"), db_path + ":islands") : IslandSettings{};
       if (islands.islands == 0 && mpi_launch_size() > 0)
         throw io::InputError(db_path, 0, 0, "islands", "not an island run: resume it without mpirun");
@@ -77,6 +86,7 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
         throw io::InputError(db_path, 0, 0, "", "a run exists here: resume it with --resume " + out_dir + " or choose --out");
       auto meta = mold_run_meta(mold_path, *made);
       if (islands.islands > 0) meta["islands"] = islands.to_text();
+      if (r.polish > 0) meta["polish"] = std::to_string(r.polish);
       db = store::RunStore::create(db_path, meta);
     }
   };
@@ -121,8 +131,8 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
   const opt::Individual& first = last.population.front();
   RunOutcome outcome{last, first.score, problem.genome(first.x), stored.seconds, mold_path, std::nullopt, first.score.value};
   outcome.interrupted = stored.interrupted;
-  if (r.polish > 0 && !stored.interrupted) {
-    outcome.polished = polish(problem, scene, outcome.genome, r.polish);
+  if (polish_budget > 0 && !stored.interrupted) {
+    outcome.polished = polish(problem, scene, outcome.genome, polish_budget);
     if (outcome.polished->improved) outcome.genome = outcome.polished->genome, outcome.best = outcome.polished->score;
     spdlog::info("polish (COBYLA, {} evaluations): objective {:.6g}{}", outcome.polished->evaluations, outcome.best.value,
                  outcome.polished->improved ? "" : " (no improvement)");

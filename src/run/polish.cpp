@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "holes.h"
+#include "mtcs/io/crash_point.h"
 
 namespace mtcs::run {
 namespace {
@@ -75,6 +76,7 @@ Polished polish(const MoldProblem& problem, const mold::Scene& scene, const mold
       const mold::Genome g = apply(v);
       last = problem.evaluate(problem.encode(g));
       ++best.evaluations;
+      io::crash_point("polish");
       if (problem.better(last, best.score)) best.genome = g, best.score = last, best.improved = true;
     }
     return last;

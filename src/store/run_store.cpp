@@ -5,10 +5,12 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
+#include "mtcs/io/crash_point.h"
 #include "mtcs/io/input_error.h"
 
 namespace mtcs::store {
@@ -171,24 +173,36 @@ RunStore RunStore::create(const std::string& path, const std::map<std::string, s
     throw io::InputError(path, 0, 0, "", "a run store exists here already");
   }
   RunStore s(nullptr, path, lock);
-  s.db_ = open_db(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
-  exec(s.db_, "PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL;");
-  exec(s.db_,
-       "BEGIN;"
-       "CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);"
-       "CREATE TABLE generation(idx INTEGER PRIMARY KEY, evaluations INTEGER, best REAL,"
-       "  feasible_share REAL, seconds REAL);"
-       "CREATE TABLE individual(generation INTEGER, rank INTEGER, genotype BLOB, steps BLOB,"
-       "  objectives BLOB, violation REAL, feasible INTEGER, value REAL, violations TEXT,"
-       "  PRIMARY KEY(generation, rank));");
-  {  // tables and meta in one transaction: a reader never sees a store without its program
-    Statement ins(s.db_, "INSERT INTO meta(key, value) VALUES(?, ?)");
-    for (const auto& [k, v] : meta) {
-      ins.bind(1, k).bind(2, v).step();
-      ins.reset();
+  // Built whole beside the store, then renamed into place: a run killed while creating it
+  // leaves no store or a whole one (tables and program), never a file that is no run store.
+  const std::string fresh = path + ".new";
+  for (const char* suffix : {"", "-journal", "-wal", "-shm"}) std::filesystem::remove(fresh + suffix);
+  {
+    sqlite3* db = open_db(fresh, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
+    const std::unique_ptr<sqlite3, int (*)(sqlite3*)> closing(db, sqlite3_close);
+    exec(db, "PRAGMA synchronous=FULL;");
+    exec(db,
+         "BEGIN;"
+         "CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);"
+         "CREATE TABLE generation(idx INTEGER PRIMARY KEY, evaluations INTEGER, best REAL,"
+         "  feasible_share REAL, seconds REAL);"
+         "CREATE TABLE individual(generation INTEGER, rank INTEGER, genotype BLOB, steps BLOB,"
+         "  objectives BLOB, violation REAL, feasible INTEGER, value REAL, violations TEXT,"
+         "  PRIMARY KEY(generation, rank));");
+    {
+      Statement ins(db, "INSERT INTO meta(key, value) VALUES(?, ?)");
+      for (const auto& [k, v] : meta) {
+        ins.bind(1, k).bind(2, v).step();
+        ins.reset();
+      }
     }
+    exec(db, "COMMIT;");
+    exec(db, "PRAGMA journal_mode=WAL;");  // kept in the file's header
   }
-  exec(s.db_, "COMMIT;");
+  io::crash_point("store-create");
+  std::filesystem::rename(fresh, path);
+  s.db_ = open_db(path, SQLITE_OPEN_READWRITE);
+  exec(s.db_, "PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL;");
   return s;
 }
 
@@ -234,6 +248,7 @@ void insert_generation(sqlite3* db, const opt::Generation& g, double seconds) {
     ins.bind(6, ind.score.violation).bind(7, ind.score.feasible ? 1 : 0).bind(8, ind.score.value);
     ins.bind(9, ind.score.detail).step();
     ins.reset();
+    io::crash_point("store-row");
   }
   Statement gen(db, "INSERT INTO generation(idx, evaluations, best, feasible_share, seconds) VALUES(?, ?, ?, ?, ?)");
   gen.bind(1, g.index).bind(2, g.evaluations);
@@ -244,13 +259,19 @@ void insert_generation(sqlite3* db, const opt::Generation& g, double seconds) {
 }  // namespace
 
 void RunStore::save(const opt::Generation& g, double seconds) {
+  errno = 0;
   try {
     exec(db_, "BEGIN IMMEDIATE;");
     insert_generation(db_, g, seconds);
     exec(db_, "COMMIT;");
   } catch (const std::exception& e) {
+    // The system's word for a failed write (no space left, file too large) says what to do;
+    // SQLite keeps it only for some errors, errno still has it.
+    const int os_error = errno;
+    const bool disk = os_error == ENOSPC || os_error == EFBIG || os_error == EDQUOT || os_error == EIO || os_error == EROFS;
     sqlite3_exec(db_, "ROLLBACK;", nullptr, nullptr, nullptr);  // keeps the last whole generation
-    throw std::runtime_error(path_ + ": cannot save generation " + std::to_string(g.index) + ": " + e.what());
+    throw std::runtime_error(path_ + ": cannot save generation " + std::to_string(g.index) + ": " + e.what() +
+                             (disk ? " (" + std::string(std::strerror(os_error)) + ")" : ""));
   }
 }
 

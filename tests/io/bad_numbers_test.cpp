@@ -12,6 +12,7 @@
 #include "mtcs/io/cylinders_csv.h"
 #include "mtcs/io/front_file.h"
 #include "mtcs/io/input_error.h"
+#include "mtcs/io/pairs_csv.h"
 #include "mtcs/io/points_csv.h"
 
 using mtcs::io::InputError;
@@ -79,4 +80,21 @@ TEST_CASE("bad numbers: a front file refuses NaN and infinities at their column"
   const auto f = mtcs::io::read_front(write("ok.txt", "1e-310 -0\n1e308 0\n"));
   CHECK(f.points[0][0] == 1e-310);
   CHECK(f.points[1][0] == 1e308);
+}
+
+TEST_CASE("bad numbers: the pairs CSV refuses NaN, infinities and 1e400 at their cell, reads denormals and -0",
+          "[io][bad-numbers]") {
+  const std::string head = "id,p0x,p0y,p0z,p1x,p1y,p1z,r0,q0x,q0y,q0z,q1x,q1y,q1z,r1\n";
+  for (const std::string v : {"nan", "NaN", "inf", "-inf", "1e400", "-1e999"}) {
+    INFO(v);
+    const auto e = error_of(mtcs::io::read_pairs_csv, write("pairs.csv", head + "a,0,0,0,10,0,0,1,0,5,0,10," + v + ",0,2\n"));
+    CHECK(e.line() == 2);
+    CHECK(e.column() == 27);
+    CHECK(e.field() == "q1y");
+  }
+  const auto pairs = mtcs::io::read_pairs_csv(write("ok.csv", head + "a,-0,4.9e-324,0,10,0,0,1,0,5,0,1e308,5,0,2\n"));
+  REQUIRE(pairs.size() == 1);
+  CHECK(pairs[0].a.p0.y() == 4.9e-324);
+  CHECK(pairs[0].a.p0.x() == 0.0);
+  CHECK(pairs[0].b.p1.x() == 1e308);
 }

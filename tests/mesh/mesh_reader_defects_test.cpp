@@ -142,3 +142,33 @@ TEST_CASE("mesh reader defect: a vertex coordinate of an unknown type is refused
                                               "property double y\nproperty double z\nend_header\n0 0 0\n");
   CHECK_THAT(error_of(path), Catch::StartsWith(path + ":4: vertex property x must be float or double, not fproperty"));
 }
+
+// fuzz_mesh_ply, crash-9899519a (long round, 2026-11-25; kept as
+// tests/data/meshes/fuzz_crash_ply_list_z.ply): a vertex's z declared as a list ("property list
+// uchar double z") after x and y twice: CGAL reads z through a number reader of another type
+// (UBSan: "member call on null pointer of type PLY_read_typed_number<float>").
+TEST_CASE("mesh reader defect: a PLY vertex coordinate declared as a list, or twice, is refused", "[mesh][fuzz-defect]") {
+  const std::string artifact = MTCS_TEST_DATA "/meshes/fuzz_crash_ply_list_z.ply";
+  CHECK_THAT(error_of(artifact), Catch::StartsWith(artifact + ":7: property x of element vertex is declared twice"));
+  const std::string head = "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n";
+  const auto list = write("list_z.ply", head + "property list uchar double z\nend_header\n0 0 1 0\n");
+  CHECK_THAT(error_of(list), Catch::StartsWith(list + ":6: vertex property z must be float or double, not a list"));
+  const auto twice = write("twice.ply", head + "property float z\nproperty double y\nend_header\n0 0 0 0\n");
+  CHECK_THAT(error_of(twice), Catch::StartsWith(twice + ":7: property y of element vertex is declared twice"));
+}
+
+// fuzz_mesh_ply, crash-116d2d1a (long round 2, after the fix above; kept as
+// tests/data/meshes/fuzz_crash_ply_integer_y.ply): "property uint16 y ist uchar ... 48": CGAL
+// names a property by the word after its type (y), not the line's last word (48), which the
+// check read: an integer y again (the null dereference of crash-48ea8ea7).
+TEST_CASE("mesh reader defect: a PLY property is named by the word after its type, as CGAL reads it", "[mesh][fuzz-defect]") {
+  const std::string artifact = MTCS_TEST_DATA "/meshes/fuzz_crash_ply_integer_y.ply";
+  CHECK_THAT(error_of(artifact), Catch::StartsWith(artifact + ":6: vertex property y must be float or double, not uint16"));
+  const auto path = write("trailing.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                          "property uint16 y garbage\nproperty float z\nend_header\n0 0 0\n");
+  CHECK_THAT(error_of(path), Catch::StartsWith(path + ":5: vertex property y must be float or double, not uint16"));
+  // A list: the name follows the count's and the items' types.
+  const auto list = write("list_y.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                        "property list uchar float y trailing\nproperty float z\nend_header\n0 1 0 0\n");
+  CHECK_THAT(error_of(list), Catch::StartsWith(list + ":5: vertex property y must be float or double, not a list"));
+}

@@ -220,3 +220,29 @@ TEST_CASE("run store faults: mtcs optimize on a run in use is refused, exit 2, '
   }
   CHECK(bytes(p) == before);
 }
+
+// Found by the kill -9 test (tests/cli/kill_resume_test.cpp): a run killed while its store was
+// being created left a run.sqlite without tables, which --resume refused as no run store. The
+// store is now built beside its place and renamed: a kill leaves no store or a whole one.
+TEST_CASE("run store faults: kill -9 while creating the store leaves no store, and a new run starts there",
+          "[store][faults]") {
+  const fs::path p = fresh("killed_create");
+  const pid_t child = ::fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    ::setenv("MTCS_CRASH_AT", "store-create:1", 1);
+    (void)RunStore::create(p.string(), {{"program", "mtcs test"}});
+    ::_exit(0);
+  }
+  int status = 0;
+  REQUIRE(::waitpid(child, &status, 0) == child);
+  REQUIRE(WIFSIGNALED(status));
+  CHECK(WTERMSIG(status) == SIGKILL);
+  CHECK_FALSE(fs::exists(p));
+  CHECK(fs::exists(p.string() + ".new"));  // the half-made store, beside
+  CHECK_THROWS_WITH(RunStore::resume(p.string()), Catch::Contains("no run store here"));
+  RunStore s = RunStore::create(p.string(), {{"program", "mtcs test"}});
+  s.save(generation(0, 3), 0.0);
+  CHECK_FALSE(fs::exists(p.string() + ".new"));
+  CHECK(RunStore::open(p.string()).last()->population.size() == 3);
+}
