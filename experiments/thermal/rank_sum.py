@@ -31,3 +31,12 @@ p = sum(ways(n, m, k) for k in range(n * m + 1) if abs(k - centre) >= abs(u - ce
 print(f"T3 patch std, median over {n} seeds: physics (temperature_std) {statistics.median(a):.4f} K, "
       f"wall distance (uniformity) {statistics.median(b):.4f} K")
 print(f"U = {u} of {n * m} pairs have the physics run's layout more uniform; exact two-sided p = {p:.2e}")
+if "t2d_std_k" in rows[0]:
+    # How well the loop's tier ranks the best layouts as the reference does (both arms together).
+    solved = [r for r in rows if r["t2d_std_k"]]
+    a = [float(r["t2d_std_k"]) for r in solved]
+    b = [float(r["t3_std_k"]) for r in solved]
+    sign = lambda x: (x > 0) - (x < 0)
+    s = sum(sign(a[i] - a[j]) * sign(b[i] - b[j]) for i in range(len(a)) for j in range(i + 1, len(a)))
+    print(f"Kendall tau of the T2d std against the T3 std over the {len(a)} best layouts: "
+          f"{s / (len(a) * (len(a) - 1) / 2):.3f}")

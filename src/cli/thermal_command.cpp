@@ -49,7 +49,7 @@ Command add_thermal_command(CLI::App& app) {
   sub->add_option("--elements", opt->elements, "line-sink elements per bore (default: the spec's)")->check(CLI::Range(1, 64));
   sub->add_option("--samples", opt->samples, "CSV of points (columns x,y,z, mm): their temperatures go to --out");
   sub->add_option("--out", opt->out, "field.vtp, field.ply, field.png, or with --samples a CSV");
-  sub->add_flag("--json", opt->json, "one JSON object on stdout: {tier, mean, std, max, hottest, heat_in, heat_to_bores, heat_to_faces, seconds}");
+  sub->add_flag("--json", opt->json, "one JSON object on stdout: {tier, mean, std, max, hottest, surface, samples, heat_in, heat_to_bores, heat_to_faces, seconds}");
   return {sub, [opt] {
             const std::string ext = extension(opt->out);
             if (!opt->out.empty() && opt->samples.empty() && ext != ".vtp" && ext != ".ply" && ext != ".png") {

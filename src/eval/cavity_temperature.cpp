@@ -44,6 +44,7 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
   const std::vector<thermal::Channel> channels = thermal_channels(layout, scene.spec());
   CavityTemperature out;
   out.tier = mold::to_string(query.tier);
+  out.surface = mold::to_string(scene.spec().thermal.objective_surface);
   if (field_edge > 0) out.field = {mesh::refine(heated_surface(setting), field_edge), {}, "temperature", "degC"};
 
   // Every point where a temperature is wanted, in one set: the samples, the extra points, the

@@ -9,7 +9,7 @@ void write_cavity_temperature_text(std::ostream& out, const CavityTemperature& r
   const std::size_t samples = r.at_samples.size();
   const auto& s = r.summary;
   out << std::fixed << std::setprecision(3) << "cavity temperature (tier " << r.tier << ", " << samples
-      << " samples, area-weighted)\n"
+      << " samples of the " << r.surface << " surface, area-weighted)\n"
       << "  mean " << s.mean << " degC, std " << s.std << " K, max " << s.max << " degC at ("
       << std::setprecision(1) << r.hottest.x() << ", " << r.hottest.y() << ", " << r.hottest.z() << ") mm\n"
       << std::setprecision(3) << "heat balance\n  in " << r.balance.in << " W = bores "
@@ -24,6 +24,7 @@ void write_cavity_temperature_json(std::ostream& out, const CavityTemperature& r
                                  {"std", r.summary.std},
                                  {"max", r.summary.max},
                                  {"hottest", {r.hottest.x(), r.hottest.y(), r.hottest.z()}},
+                                 {"surface", r.surface},
                                  {"samples", r.at_samples.size()},
                                  {"heat_in", r.balance.in},
                                  {"heat_to_bores", r.balance.to_channels},

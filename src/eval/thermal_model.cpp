@@ -127,15 +127,22 @@ std::vector<thermal::Channel> thermal_channels(const mold::Layout& layout, const
   return channels;
 }
 
+double cavity_flux_at(const mold::MoldSpec& spec, const Vec3& p) {
+  return flux_at(p, cavity_heat_flux(spec), spec.thermal.regions);
+}
+
 thermal::Samples thermal_samples(const mold::Scene& scene) {
-  if (!scene.spec().cavity) throw std::invalid_argument("the thermal samples need a cavity");
-  const SurfaceSamples s = sample_cavity(*scene.spec().cavity);
-  thermal::Samples out;
+  const mold::MoldSpec& spec = scene.spec();
+  if (!spec.cavity) throw std::invalid_argument("the thermal samples need a cavity");
+  const SurfaceSamples s = sample_cavity(*spec.cavity);
+  thermal::Samples all, heated;
   for (std::size_t i = 0; i < s.size(); ++i) {
-    out.points.emplace_back(s.x[i], s.y[i], s.z[i]);
-    out.weights.push_back(s.weight[i]);
+    const Vec3 p(s.x[i], s.y[i], s.z[i]);
+    all.points.push_back(p), all.weights.push_back(s.weight[i]);
+    if (cavity_flux_at(spec, p) > 0) heated.points.push_back(p), heated.weights.push_back(s.weight[i]);
   }
-  return out;
+  const bool use_heated = spec.thermal.objective_surface == mold::ObjectiveSurface::Heated && heated.size() > 0;
+  return use_heated ? heated : all;
 }
 
 }  // namespace mtcs::eval

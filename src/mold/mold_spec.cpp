@@ -355,7 +355,7 @@ Objectives parse_objectives(const YamlReader& r, const YAML::Node& n) {
 // thermal: SI in the file, the thermal module's units (mm, W, degrees C) in the spec.
 ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
   r.expect_map(n, "thermal", {"steel_conductivity", "coolant", "ambient", "adiabatic_faces", "heat_flux", "regions",
-                              "polymer", "tier", "elements_per_bore", "cell_size"});
+                              "polymer", "tier", "elements_per_bore", "cell_size", "objective_surface"});
   constexpr double kPerM = 1e-3, kPerM2 = 1e-6;  // W/(m K) -> W/(mm K); W/m^2 -> W/mm^2
   constexpr double kCold = -273.15, kHot = 5000;  // degrees C
   ThermalSpec t;
@@ -428,6 +428,12 @@ ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
   }
   if (n["elements_per_bore"]) t.elements_per_bore = r.integer(n["elements_per_bore"], "thermal.elements_per_bore", 1, 1000);
   if (n["cell_size"]) t.cell_size = r.number(n["cell_size"], "thermal.cell_size", 1e-3, kHuge);
+  if (n["objective_surface"]) {
+    const std::string s = r.text(n["objective_surface"], "thermal.objective_surface");
+    if (s == "heated") t.objective_surface = ObjectiveSurface::Heated;
+    else if (s == "all") t.objective_surface = ObjectiveSurface::All;
+    else r.fail(n["objective_surface"], "thermal.objective_surface", "expected heated or all; got '" + s + "'");
+  }
   return t;
 }
 
@@ -543,6 +549,8 @@ bool is_temperature_objective(Objective o) {
   return o == Objective::TemperatureMean || o == Objective::TemperatureStd || o == Objective::TemperatureMax ||
          o == Objective::CycleTime;
 }
+
+std::string to_string(ObjectiveSurface s) { return s == ObjectiveSurface::Heated ? "heated" : "all"; }
 
 std::string to_string(ThermalTier t) {
   switch (t) {

@@ -5,9 +5,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <sstream>
+
+#include <unistd.h>
 
 #include "mtcs/eval/cavity_temperature.h"
+#include "mtcs/eval/cavity_temperature_report.h"
+#include "mtcs/eval/thermal_model.h"
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
@@ -80,4 +86,62 @@ TEST_CASE("cavity temperature: finite volumes at 2 mm against FreeFem++", "[eval
   CHECK(rms(r.at_points, reference) < 0.25);  // experiments/thermal/fv.md: 0.18 K at 2 mm
   CHECK(std::abs(r.balance.residual()) < 1e-6 * r.balance.in);
   CHECK(r.balance.to_channels == Approx(137.82).margin(0.05));  // FreeFem: 137.82 W
+}
+
+TEST_CASE("cavity temperature: the heated surface's figures are those of its samples in the whole field", "[eval][thermal]") {
+  // A box cavity whose top face (z >= 35) takes no heat: `heated` (the default) summarises the
+  // 44 samples below z = 35, `all` the 68 (68 = 2 x (4 + 6 + 24) at 10 mm, as counted in
+  // thermal_model_test). One bore along x under the cavity.
+  const std::string text = "block: {box: {min: [0, 0, 0], max: [100, 100, 50]}}\n"
+                           "cavity: {box: {min: [20, 20, 30], max: [80, 60, 36]}, sample_spacing: 10}\n"
+                           "objectives: {use: [temperature_std, temperature_mean]}\n"
+                           "thermal:\n  heat_flux: 20000\n"
+                           "  regions: [{box: {min: [0, 0, 35], max: [100, 100, 50]}, heat_flux: 0}]\n";
+  const auto dir = std::filesystem::temp_directory_path() / ("cavity_temperature_test." + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  auto scene_of = [&](const std::string& name, const std::string& extra) {
+    std::ofstream(dir / name) << text << extra;
+    return mold::Scene(mold::load_mold_spec((dir / name).string()));
+  };
+  const mold::Scene heated = scene_of("heated.yaml", ""), all = scene_of("all.yaml", "  objective_surface: all\n");
+  const mold::Layout layout = mold::decode(heated, mold::Genome{{{{{0, 40, 20}, {100, 40, 20}}, 8}}});
+  const thermal::Samples every = eval::thermal_samples(all);
+  REQUIRE(every.size() == 68);
+
+  for (const auto tier : {mold::ThermalTier::T2d, mold::ThermalTier::Fd}) {
+    eval::ThermalQuery q;
+    q.tier = tier;
+    q.cell = 5;
+    const auto h = eval::cavity_temperature(heated, layout, q), a = eval::cavity_temperature(all, layout, q);
+    CHECK(h.surface == "heated");
+    CHECK(a.surface == "all");
+    REQUIRE(h.at_samples.size() == 44);
+    REQUIRE(a.at_samples.size() == 68);
+    // The heated samples' area-weighted mean and std, straight from the whole field.
+    double w = 0, mean = 0, var = 0, top = 0;
+    for (std::size_t i = 0; i < 68; ++i)
+      if (every.points[i].z() < 35) w += every.weights[i], mean += every.weights[i] * a.at_samples[i];
+    mean /= w;
+    for (std::size_t i = 0; i < 68; ++i)
+      if (every.points[i].z() < 35) var += every.weights[i] * (a.at_samples[i] - mean) * (a.at_samples[i] - mean);
+      else top = std::max(top, std::abs(a.at_samples[i] - mean));
+    const double tolerance = tier == mold::ThermalTier::Fd ? 1e-9 : 1e-4;  // t2d: float columns
+    CHECK(w == Approx(60 * 40 + 2 * (40 + 60) * 6).epsilon(1e-12));
+    CHECK(h.summary.mean == Approx(mean).margin(tolerance));
+    CHECK(h.summary.std == Approx(std::sqrt(var / w)).margin(tolerance));
+    CHECK(top > 0);  // the top face differs: leaving it out matters
+    CHECK(std::abs(h.summary.std - a.summary.std) > 10 * tolerance);
+    if (tier == mold::ThermalTier::T2d) {
+      // The optimiser's objectives cover the same surface.
+      const auto e = eval::Pipeline(heated).evaluate(layout);
+      CHECK(e.objectives[0] == Approx(h.summary.std).epsilon(1e-9));
+      CHECK(e.objectives[1] == Approx(h.summary.mean).epsilon(1e-9));
+    }
+  }
+  // `mtcs thermal --json` says which surface its figures cover.
+  std::ostringstream json;
+  eval::write_cavity_temperature_json(json, eval::cavity_temperature(heated, layout, eval::thermal_query(heated.spec())));
+  CHECK(json.str().find("\"surface\": \"heated\"") != std::string::npos);
+  CHECK(json.str().find("\"samples\": 44") != std::string::npos);
+  std::filesystem::remove_all(dir);
 }

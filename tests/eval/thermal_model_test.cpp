@@ -137,6 +137,39 @@ TEST_CASE("thermal model: a box cavity is a void heated from inside", "[eval][th
   CHECK(s.faces[std::size_t(thermal::BlockFace::PosZ)].film == Approx(1e-5));
 }
 
+TEST_CASE("thermal model: the heated surface is the samples where heat enters", "[eval][thermal]") {
+  // A 60 x 40 x 6 mm box cavity sampled every 10 mm: per face x = 20, 80: 4 (y) x 1 (z); y = 20,
+  // 60: 1 (z) x 6 (x); z = 30, 36: 6 (x) x 4 (y). 68 samples. No flux into the top face (z >= 35)
+  // nor the -x face (x <= 20): 24 + 4 left out, 40 heated, of area 60 x 40 + 40 x 6 + 2 x 60 x 6.
+  const std::string cavity = "block: {box: {min: [0, 0, 0], max: [100, 100, 50]}}\n"
+                             "cavity: {box: {min: [20, 20, 30], max: [80, 60, 36]}, sample_spacing: 10}\n";
+  const std::string regions = "  regions: [{box: {min: [0, 0, 35], max: [100, 100, 50]}, heat_flux: 0},\n"
+                              "            {box: {min: [0, 0, 0], max: [20, 100, 50]}, heat_flux: 0}]\n";
+  auto samples = [&](const std::string& name, const std::string& thermal) {
+    return eval::thermal_samples(mold::Scene(mold::load_mold_spec(write(name, cavity + thermal).string())));
+  };
+  auto total = [](const thermal::Samples& s) {
+    double a = 0;
+    for (double w : s.weights) a += w;
+    return a;
+  };
+  const thermal::Samples heated = samples("heated.yaml", "thermal:\n  heat_flux: 20000\n" + regions);
+  REQUIRE(heated.size() == 40);
+  CHECK(total(heated) == Approx(60 * 40 + 40 * 6 + 2 * 60 * 6).epsilon(1e-12));
+  int lower = 0;
+  for (const Vec3& p : heated.points) {
+    CHECK(p.z() < 35);
+    CHECK(p.x() > 20);
+    lower += p.z() == 30;
+  }
+  CHECK(lower == 24);
+  // `all`: every sample; no heated sample at all: every sample too.
+  const thermal::Samples all = samples("all.yaml", "thermal:\n  heat_flux: 20000\n  objective_surface: all\n" + regions);
+  CHECK(all.size() == 68);
+  CHECK(total(all) == Approx(2 * (60 * 40 + 40 * 6 + 60 * 6)).epsilon(1e-12));
+  CHECK(samples("cold.yaml", "thermal:\n  heat_flux: 0\n").size() == 68);
+}
+
 TEST_CASE("thermal model: a mesh cavity's triangles face the melt inside the part", "[eval][thermal]") {
   write("tet.off", "OFF\n4 4 0\n0 0 0\n10 0 0\n0 10 0\n0 0 10\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
   const mold::Scene scene(mold::load_mold_spec(

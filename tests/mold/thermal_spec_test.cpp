@@ -63,6 +63,7 @@ TEST_CASE("thermal spec: defaults in the thermal module's units", "[mold][therma
   CHECK(t.polymer.diffusivity == Approx(0.2 / (1050 * 2000.0) * 1e6).epsilon(0.01));
   CHECK(t.tier == mold::ThermalTier::T2d);
   CHECK(t.elements_per_bore == 4);
+  CHECK(t.objective_surface == mold::ObjectiveSurface::Heated);
 }
 
 TEST_CASE("thermal spec: SI values are converted to mm, W and degrees C", "[mold][thermal]") {
@@ -94,6 +95,8 @@ TEST_CASE("thermal spec: SI values are converted to mm, W and degrees C", "[mold
   CHECK(t.elements_per_bore == 8);
   CHECK(t.cell_size == 1);
   CHECK(*load(kBlock + "thermal: {coolant: {flow_rate: 8}}\n").thermal.flow_rate == 8);
+  CHECK(load(kBlock + "thermal: {objective_surface: all}\n").thermal.objective_surface == mold::ObjectiveSurface::All);
+  CHECK(load(kBlock + "thermal: {objective_surface: heated}\n").thermal.objective_surface == mold::ObjectiveSurface::Heated);
 }
 
 TEST_CASE("thermal spec: the temperature objectives and their scales", "[mold][thermal]") {
@@ -142,6 +145,13 @@ TEST_CASE("thermal spec: bad input names file, line, column and field", "[mold][
     const auto e = error_of(kBlock + "thermal: {tier: t0}\n");
     CHECK(e.field() == "thermal.tier");
     CHECK(mentions(e, "uniformity"));
+  }
+  SECTION("an unknown objective surface") {
+    const auto e = error_of(kBlock + "thermal:\n  tier: t2\n  objective_surface: lower\n");
+    CHECK(e.field() == "thermal.objective_surface");
+    CHECK(e.line() == 4);
+    CHECK(e.column() == 22);
+    CHECK(mentions(e, "heated or all"));
   }
   SECTION("an unknown tier") { CHECK(error_of(kBlock + "thermal: {tier: t9}\n").field() == "thermal.tier"); }
   SECTION("eject above melt") {

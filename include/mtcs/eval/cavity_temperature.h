@@ -29,7 +29,8 @@ struct HeatBalance {
 
 struct CavityTemperature {
   std::string tier;                  // t1, t2, t2d, fd
-  thermal::Summary summary;          // area-weighted over the cavity samples
+  std::string surface;               // thermal.objective_surface: heated or all
+  thermal::Summary summary;          // area-weighted over the cavity samples (of that surface)
   geometry::Vec3 hottest;            // where the maximum is
   std::vector<double> at_samples;    // degrees C, at thermal_samples(scene)
   std::vector<double> at_points;     // degrees C, at the extra points asked for

@@ -1,6 +1,6 @@
 #pragma once
 // A cavity temperature as `mtcs thermal` prints it: the summary and heat balance as text or as one
-// JSON object {tier, mean, std, max, hottest, samples, heat_in, heat_to_bores, heat_to_faces,
+// JSON object {tier, mean, std, max, hottest, surface, samples, heat_in, heat_to_bores, heat_to_faces,
 // seconds}; temperatures at a user's points as CSV x,y,z,T (17 digits).
 
 #include <ostream>

@@ -29,7 +29,14 @@ thermal::Setting thermal_setting(const mold::Scene& scene);
 // of the spec's flow rate through that bore's diameter (Gnielinski).
 std::vector<thermal::Channel> thermal_channels(const mold::Layout& layout, const mold::MoldSpec& spec);
 
-// The cavity-surface samples with their areas (the same points the tier-0 objectives use).
+// The heat flux (W/mm^2) into the steel at a point of the cavity surface: thermal.heat_flux (or
+// the default), or that of the last region holding the point.
+double cavity_flux_at(const mold::MoldSpec& spec, const geometry::Vec3& p);
+
+// The cavity-surface samples with their areas over which the temperature objectives are taken:
+// those of the tier-0 objectives (every sample) when thermal.objective_surface is `all`; with
+// `heated` (the default) only those where heat enters (cavity_flux_at > 0), or every one when
+// no sample is heated.
 thermal::Samples thermal_samples(const mold::Scene& scene);
 
 }  // namespace mtcs::eval

@@ -141,6 +141,12 @@ struct Objectives {
 enum class ThermalTier { T1, T2, T2d, Fd };
 std::string to_string(ThermalTier t);
 
+// Which cavity samples the temperature objectives (and every summary of them: `mtcs thermal`,
+// finite-volume re-scores) cover: Heated, those where heat enters (flux > 0: the faces this mold
+// half cools; a face whose part gives its heat to the other half is left out); All, every one.
+enum class ObjectiveSurface { Heated, All };
+std::string to_string(ObjectiveSurface s);
+
 // Cavity surface inside `box` takes `flux` instead of the default (later regions win).
 struct HeatRegion {
   Box box;
@@ -172,6 +178,7 @@ struct ThermalSpec {
   ThermalTier tier = ThermalTier::T2d;
   int elements_per_bore = 4;               // M of T2/T2d
   double cell_size = 2;                    // mm, T3 (fd)
+  ObjectiveSurface objective_surface = ObjectiveSurface::Heated;
 };
 
 enum class PenaltyVariant { ConstrainedDomination, StaticLinear, StaticQuadratic, Death };
