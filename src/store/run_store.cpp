@@ -324,6 +324,22 @@ void RunStore::save_islands(const std::vector<opt::Generation>& islands, const o
                              e.what());
   }
 }
+namespace {
+
+// The members a query of (genotype, steps, objectives, violation, feasible, value, violations)
+// returns, in its order, into `out`.
+void read_members(Statement& q, opt::Generation& out) {
+  while (q.step()) {
+    opt::Individual ind;
+    ind.x = q.doubles(0);
+    ind.steps = q.doubles(1);
+    ind.score = {q.doubles(2), q.real(3), q.integer(4) != 0, q.real(5), q.text(6)};
+    out.population.push_back(std::move(ind));
+  }
+}
+
+}  // namespace
+
 
 std::optional<opt::Generation> RunStore::island_generation(int island, int index) const {
   return reading(path_, [&]() -> std::optional<opt::Generation> {
@@ -338,13 +354,7 @@ std::optional<opt::Generation> RunStore::island_generation(int island, int index
                 "SELECT genotype, steps, objectives, violation, feasible, value, violations FROM island_individual"
                 " WHERE island = ? AND generation = ? ORDER BY rank");
     q.bind(1, island).bind(2, index);
-    while (q.step()) {
-      opt::Individual ind;
-      ind.x = q.doubles(0);
-      ind.steps = q.doubles(1);
-      ind.score = {q.doubles(2), q.real(3), q.integer(4) != 0, q.real(5), q.text(6)};
-      out.population.push_back(std::move(ind));
-    }
+    read_members(q, out);
     return out;
   });
 }
@@ -374,13 +384,7 @@ std::optional<opt::Generation> RunStore::generation(int index) const {
                 "SELECT genotype, steps, objectives, violation, feasible, value, violations FROM individual"
                 " WHERE generation = ? ORDER BY rank");
     q.bind(1, index);
-    while (q.step()) {
-      opt::Individual ind;
-      ind.x = q.doubles(0);
-      ind.steps = q.doubles(1);
-      ind.score = {q.doubles(2), q.real(3), q.integer(4) != 0, q.real(5), q.text(6)};
-      out.population.push_back(std::move(ind));
-    }
+    read_members(q, out);
     return out;
   });
 }

@@ -20,6 +20,7 @@
 
 #include "mtcs/store/run_store.h"
 #include "run_mtcs.h"
+#include "stored_run.h"
 
 using mtcs::store::RunStore;
 using namespace mtcs_test;
@@ -73,22 +74,7 @@ std::vector<std::string> fresh_run(const fs::path& dir) {
 
 std::vector<std::string> resume_run(const fs::path& dir) { return {"optimize", "--resume", dir.string(), "--quiet"}; }
 
-// Every stored row: per generation its summary (but the wall time) and each individual's genotype,
-// steps and objectives, as exact doubles.
-std::vector<std::vector<double>> rows(const fs::path& dir) {
-  const RunStore db = RunStore::open((dir / "run.sqlite").string());
-  std::vector<std::vector<double>> out;
-  for (const auto& s : db.summaries()) {
-    out.push_back({double(s.index), double(s.evaluations), s.best, s.feasible_share});
-    const auto g = db.generation(s.index);
-    for (const auto& ind : g->population) {
-      out.push_back(ind.x);
-      out.push_back(ind.steps);
-      out.push_back(ind.score.objectives);
-    }
-  }
-  return out;
-}
+std::vector<std::vector<double>> rows(const fs::path& dir) { return mtcs_test::stored_rows(dir); }
 
 nlohmann::json summary_without_time(const fs::path& dir) {
   std::ifstream in(dir / "summary.json");

@@ -20,6 +20,7 @@
 
 #include "mtcs/store/run_store.h"
 #include "run_mtcs.h"
+#include "stored_run.h"
 
 using mtcs::store::RunStore;
 using namespace mtcs_test;
@@ -29,22 +30,7 @@ namespace {
 const std::string kMold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";
 const std::string kArgs = " --seed 7 --evaluations 2000 --threads 1 --quiet";
 
-// Every stored row of the run in `dir`: per generation its summary (not the wall time) and each
-// individual's genotype, steps and objectives.
-std::vector<std::vector<double>> rows(const fs::path& dir) {
-  const RunStore db = RunStore::open((dir / "run.sqlite").string());
-  std::vector<std::vector<double>> out;
-  for (const auto& s : db.summaries()) {
-    out.push_back({double(s.index), double(s.evaluations), s.best, s.feasible_share});
-    const auto g = db.generation(s.index);
-    for (const auto& ind : g->population) {
-      out.push_back(ind.x);
-      out.push_back(ind.steps);
-      out.push_back(ind.score.objectives);
-    }
-  }
-  return out;
-}
+std::vector<std::vector<double>> rows(const fs::path& dir) { return mtcs_test::stored_rows(dir); }
 
 // `mtcs optimize MOLD --out DIR ...` with every file it writes limited to `limit` bytes (the
 // disk is full for it there); SIGXFSZ ignored, so a write beyond the limit fails with EFBIG.
