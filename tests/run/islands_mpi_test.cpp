@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "mtcs/run/optimize_run.h"
+#include "../support/scratch_file.h"
 #include "mtcs/store/run_store.h"
 
 using namespace mtcs;
@@ -20,12 +21,7 @@ namespace {
 
 const std::string kMold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_islands_mpi_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir.parent_path());
-  return dir;
-}
+fs::path scratch(const std::string& name) { return mtcs_test::fresh_scratch_dir("islands_mpi", name); }
 
 int shell(const std::string& command) {
   const int status = std::system((command + " 2>/dev/null >/dev/null").c_str());

@@ -14,6 +14,7 @@
 #include "mtcs/opt/migration.h"
 #include "mtcs/opt/sms_emoa.h"
 #include "mtcs/run/optimize_run.h"
+#include "../support/scratch_file.h"
 #include "run/island_wire.h"
 
 using namespace mtcs;
@@ -23,12 +24,7 @@ namespace {
 
 const std::string kMold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_islands_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir.parent_path());
-  return dir;
-}
+fs::path scratch(const std::string& name) { return mtcs_test::fresh_scratch_dir("islands", name); }
 
 run::OptimizeRequest request(const fs::path& out, int islands, const std::string& algorithm = "es") {
   run::OptimizeRequest r;

@@ -19,4 +19,14 @@ inline std::filesystem::path write_scratch(const std::string& topic, const std::
   return p;
 }
 
+// A fresh (absent) path for a run folder in this process's scratch folder of `topic`: what an
+// earlier test case left there is removed.
+inline std::filesystem::path fresh_scratch_dir(const std::string& topic, const std::string& name) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("mtcs_" + topic + "_" + std::to_string(::getpid())) / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir.parent_path());
+  return dir;
+}
+
 }  // namespace mtcs_test
