@@ -9,7 +9,11 @@
 # (t3_std_all_k, from the same solve). Writes es_plate_physics_vs_distance.csv (rewritten after
 # every seed, so an interrupted study leaves the seeds it finished), then the rank-sum test.
 #   bash experiments/thermal/es_plate_physics_vs_distance.sh [EVALUATIONS] [CELL] [SEEDS] [JOBS]
-# OBJECTIVES="temperature_std" runs one arm only (its rows alone in the CSV).
+# OBJECTIVES="temperature_std" runs one arm only (its rows alone in the CSV). FIELDS=DIR keeps the
+# per-sample T2d and T3 fields of every best layout there, named as plate_diagnosis.py caches them.
+# VOID=plane sets thermal.cavity_void: plane (the line sinks see the cavity as an adiabatic cut;
+# experiments/thermal/void_plane.md) in both arms' specs (uniformity does not use it). LAYOUTS=DIR
+# keeps the best layouts there instead of experiments/thermal/es_plate_layouts.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 mtcs=${MTCS:-./build/mtcs}
@@ -21,9 +25,11 @@ objectives=${OBJECTIVES:-temperature_std uniformity}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 out=${OUT:-experiments/thermal/es_plate_physics_vs_distance.csv}
-mkdir -p experiments/thermal/es_plate_layouts
+layouts=${LAYOUTS:-experiments/thermal/es_plate_layouts}
+mkdir -p "$layouts"
 for objective in temperature_std uniformity; do
   sed "s/^  use: .*/  use: [$objective]/" molds/plate.yaml > "$work/$objective.yaml"
+  if [ -n "${VOID:-}" ]; then sed -i "s/^  tier: t2d$/  tier: t2d\n  cavity_void: $VOID/" "$work/$objective.yaml"; fi
 done
 # Every cavity sample (the order of mtcs's sample_box), for the std over the whole surface.
 python3 -c "
@@ -39,7 +45,8 @@ run_seed() {
     start=$(date +%s.%N)
     "$mtcs" optimize "$work/$objective.yaml" --seed "$seed" --evaluations "$budget" --threads 1 --out "$dir" --quiet
     seconds=$(echo "$(date +%s.%N) - $start" | bc)
-    t2d=$("$mtcs" thermal "$work/$objective.yaml" --layout "$dir/best.layout.yaml" --json)
+    t2d=$("$mtcs" thermal "$work/$objective.yaml" --layout "$dir/best.layout.yaml" --json \
+          --samples "$work/samples.csv" --out "$dir/t2d.csv")
     t3=$("$mtcs" thermal "$work/$objective.yaml" --layout "$dir/best.layout.yaml" --tier fd --cell "$cell" --json \
          --samples "$work/samples.csv" --out "$dir/t3.csv")
     # Straight bores: one per pair of consecutive waypoints of a circuit.
@@ -54,13 +61,18 @@ t = [float(r['T']) for r in csv.DictReader(open('$dir/t3.csv'))]
 std_all, _ = d.wstd(t, [q['w'] for q in d.samples()])
 print('$objective,$seed,$budget,%.2f,%s,%.4f,$cell,%.2f,%.4f,%.4f,%.4f,%.4f,$bores' % (
     $seconds, b['surface'], a['std'], b['seconds'], b['std'], b['mean'], b['max'], std_all))" "$t2d" "$t3" >> "$work/rows-$seed.csv"
-    cp "$dir/best.layout.yaml" "experiments/thermal/es_plate_layouts/$objective-$seed.layout.yaml"
+    cp "$dir/best.layout.yaml" "$layouts/$objective-$seed.layout.yaml"
+    if [ -n "${FIELDS:-}" ]; then
+      mkdir -p "$FIELDS"
+      cp "$dir/t2d.csv" "$FIELDS/$objective-$seed.t2d.csv"; echo "$t2d" > "$FIELDS/$objective-$seed.t2d.json"
+      cp "$dir/t3.csv" "$FIELDS/$objective-$seed.fd$cell.csv"; echo "$t3" > "$FIELDS/$objective-$seed.fd$cell.json"
+    fi
   done
   # The table so far, in seed order.
   (echo "$header"; for s in $(seq 1 "$seeds"); do [ -f "$work/rows-$s.csv" ] && cat "$work/rows-$s.csv"; done; true) > "$out.tmp.$seed"
   mv "$out.tmp.$seed" "$out"
 }
 export -f run_seed
-export mtcs budget cell seeds work out header objectives
+export mtcs budget cell seeds work out header objectives layouts
 seq 1 "$seeds" | xargs -P "$jobs" -I{} bash -c 'run_seed {}'
 python3 experiments/thermal/rank_sum.py "$out" || echo "one arm only: no test"
