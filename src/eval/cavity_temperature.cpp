@@ -6,6 +6,7 @@
 #include "mtcs/eval/thermal_model.h"
 #include "mtcs/thermal/finite_volume.h"
 #include "mtcs/thermal/line_sinks.h"
+#include "mtcs/thermal/void_plane.h"
 
 namespace mtcs::eval {
 namespace {
@@ -64,7 +65,8 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
     thermal::LineSinkOptions options;
     options.tier = line_sink_tier(query.tier);
     options.elements = query.elements;
-    const thermal::LineSinkModel model(setting, all, options);
+    const thermal::LineSinkModel model(
+        scene.spec().thermal.void_plane ? thermal::cut_at_cavity_void(setting) : setting, all, options);
     thermal::LineSinkCache cache;
     const thermal::LineSinkSolution r = model.solve(channels, cache);
     t = r.temperature;

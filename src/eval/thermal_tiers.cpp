@@ -6,6 +6,7 @@
 
 #include "mtcs/thermal/finite_volume.h"
 #include "mtcs/thermal/line_sinks.h"
+#include "mtcs/thermal/void_plane.h"
 
 namespace mtcs::eval {
 namespace {
@@ -41,7 +42,8 @@ TemperatureSolverFactory temperature_solver(mold::ThermalTier tier) {
     thermal::LineSinkOptions options;
     options.tier = line_sink_tier(tier);
     options.elements = spec.elements_per_bore;
-    auto sinks = std::make_shared<LineSinks>(setting, samples, options);
+    auto sinks = std::make_shared<LineSinks>(spec.void_plane ? thermal::cut_at_cavity_void(setting) : setting,
+                                             samples, options);
     return TemperatureSolver([sinks](const std::vector<thermal::Channel>& channels) {
       return sinks->model.temperatures(channels, sinks->caches.local());
     });

@@ -355,7 +355,8 @@ Objectives parse_objectives(const YamlReader& r, const YAML::Node& n) {
 // thermal: SI in the file, the thermal module's units (mm, W, degrees C) in the spec.
 ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
   r.expect_map(n, "thermal", {"steel_conductivity", "coolant", "ambient", "adiabatic_faces", "heat_flux", "regions",
-                              "polymer", "tier", "elements_per_bore", "cell_size", "objective_surface"});
+                              "polymer", "tier", "elements_per_bore", "cell_size", "objective_surface",
+                              "cavity_void"});
   constexpr double kPerM = 1e-3, kPerM2 = 1e-6;  // W/(m K) -> W/(mm K); W/m^2 -> W/mm^2
   constexpr double kCold = -273.15, kHot = 5000;  // degrees C
   ThermalSpec t;
@@ -433,6 +434,11 @@ ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
     if (s == "heated") t.objective_surface = ObjectiveSurface::Heated;
     else if (s == "all") t.objective_surface = ObjectiveSurface::All;
     else r.fail(n["objective_surface"], "thermal.objective_surface", "expected heated or all; got '" + s + "'");
+  }
+  if (n["cavity_void"]) {
+    const std::string s = r.text(n["cavity_void"], "thermal.cavity_void");
+    if (s == "plane") t.void_plane = true;
+    else if (s != "ignore") r.fail(n["cavity_void"], "thermal.cavity_void", "expected ignore or plane; got '" + s + "'");
   }
   return t;
 }

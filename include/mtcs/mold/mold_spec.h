@@ -179,6 +179,9 @@ struct ThermalSpec {
   int elements_per_bore = 4;               // M of T2/T2d
   double cell_size = 2;                    // mm, T3 (fd)
   ObjectiveSurface objective_surface = ObjectiveSurface::Heated;
+  // thermal.cavity_void: plane: the line-sink tiers cut the block at a box cavity's most heated
+  // face (mtcs/thermal/void_plane.h); ignore (default): they see no void.
+  bool void_plane = false;
 };
 
 enum class PenaltyVariant { ConstrainedDomination, StaticLinear, StaticQuadratic, Death };

@@ -1,0 +1,56 @@
+#include "mtcs/thermal/void_plane.h"
+
+#include <array>
+#include <cmath>
+
+namespace mtcs::thermal {
+namespace {
+
+// The cavity box's face (2 k + side, side 1 = max) holding all three corners of t, or -1.
+int face_of(const HeatedTriangle& t, const Box& box) {
+  for (int k = 0; k < 3; ++k) {
+    const double tol = 1e-9 * (1 + box.size().norm());
+    for (int side = 0; side < 2; ++side) {
+      const double plane = side ? box.max[k] : box.min[k];
+      if (std::abs(t.a[k] - plane) <= tol && std::abs(t.b[k] - plane) <= tol && std::abs(t.c[k] - plane) <= tol)
+        return 2 * k + side;
+    }
+  }
+  return -1;
+}
+
+double heat(const HeatedTriangle& t) { return t.flux * 0.5 * (t.b - t.a).cross(t.c - t.a).norm(); }
+
+}  // namespace
+
+Setting cut_at_cavity_void(const Setting& setting) {
+  if (!setting.cavity_box) return setting;
+  const Box& cavity = *setting.cavity_box;
+  std::array<double, 6> face_heat{};
+  double total = 0;
+  for (const HeatedTriangle& t : setting.heat_in) {
+    total += heat(t);
+    if (const int f = face_of(t, cavity); f >= 0) face_heat[std::size_t(f)] += heat(t);
+  }
+  int cut = 0;
+  for (int f = 1; f < 6; ++f)
+    if (face_heat[std::size_t(f)] > face_heat[std::size_t(cut)]) cut = f;
+  const int k = cut / 2, side = cut % 2;
+  // The block beyond that face from the cavity: below a lower face, above an upper one.
+  Setting out = setting;
+  if (side == 0) out.block.max[k] = cavity.min[k];
+  else out.block.min[k] = cavity.max[k];
+  if (face_heat[std::size_t(cut)] <= 0 || !(out.block.max[k] > out.block.min[k])) return setting;
+  // The cut is the new block's face towards the cavity (its +k face below a lower face).
+  out.faces[std::size_t(2 * k + (side == 0 ? 1 : 0))].film = 0;
+  // The face's triangles carry every cavity face's heat (the rim's too: the heat balance holds).
+  const double scale = total / face_heat[std::size_t(cut)];
+  out.heat_in.clear();
+  for (const HeatedTriangle& t : setting.heat_in)
+    if (face_of(t, cavity) == cut) out.heat_in.push_back({t.a, t.b, t.c, t.flux * scale});
+  out.cavity_box.reset();
+  out.cavity_mesh.reset();
+  return out;
+}
+
+}  // namespace mtcs::thermal
