@@ -65,10 +65,11 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
     thermal::LineSinkOptions options;
     options.tier = line_sink_tier(query.tier);
     options.elements = query.elements;
-    const thermal::LineSinkModel model(
-        scene.spec().thermal.void_plane ? thermal::cut_at_cavity_void(setting) : setting, all, options);
+    const thermal::CavityCut cut =
+        scene.spec().thermal.void_plane ? thermal::cut_at_cavity_void(setting) : thermal::CavityCut{setting};
+    const thermal::LineSinkModel model(cut.setting, all, options);
     thermal::LineSinkCache cache;
-    const thermal::LineSinkSolution r = model.solve(channels, cache);
+    const thermal::LineSinkSolution r = model.solve(cut.fold(channels), cache);
     t = r.temperature;
     double to_channels = 0;
     for (double q : r.channel_heat) to_channels += q;

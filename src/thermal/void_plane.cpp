@@ -23,8 +23,8 @@ double heat(const HeatedTriangle& t) { return t.flux * 0.5 * (t.b - t.a).cross(t
 
 }  // namespace
 
-Setting cut_at_cavity_void(const Setting& setting) {
-  if (!setting.cavity_box) return setting;
+CavityCut cut_at_cavity_void(const Setting& setting) {
+  if (!setting.cavity_box) return {setting};
   const Box& cavity = *setting.cavity_box;
   std::array<double, 6> face_heat{};
   double total = 0;
@@ -40,7 +40,7 @@ Setting cut_at_cavity_void(const Setting& setting) {
   Setting out = setting;
   if (side == 0) out.block.max[k] = cavity.min[k];
   else out.block.min[k] = cavity.max[k];
-  if (face_heat[std::size_t(cut)] <= 0 || !(out.block.max[k] > out.block.min[k])) return setting;
+  if (face_heat[std::size_t(cut)] <= 0 || !(out.block.max[k] > out.block.min[k])) return {setting};
   // The cut is the new block's face towards the cavity (its +k face below a lower face).
   out.faces[std::size_t(2 * k + (side == 0 ? 1 : 0))].film = 0;
   // The face's triangles carry every cavity face's heat (the rim's too: the heat balance holds).
@@ -50,6 +50,32 @@ Setting cut_at_cavity_void(const Setting& setting) {
     if (face_of(t, cavity) == cut) out.heat_in.push_back({t.a, t.b, t.c, t.flux * scale});
   out.cavity_box.reset();
   out.cavity_mesh.reset();
+  return {out, k, side == 0 ? cavity.min[k] : cavity.max[k], side == 0};
+}
+
+std::vector<Channel> CavityCut::fold(std::span<const Channel> channels) const {
+  std::vector<Channel> out;
+  if (axis < 0) return {channels.begin(), channels.end()};
+  // Signed height beyond the plane (> 0: beyond, the side cut off).
+  auto beyond = [&](const Vec3& p) { return keep_below ? p[axis] - plane : plane - p[axis]; };
+  auto mirror = [&](Vec3 p) {
+    if (beyond(p) > 0) p[axis] = 2 * plane - p[axis];
+    return p;
+  };
+  for (const Channel& ch : channels) {
+    const double h0 = beyond(ch.axis.p0), h1 = beyond(ch.axis.p1);
+    if ((h0 > 0) == (h1 > 0) || h0 == 0 || h1 == 0) {
+      Channel c = ch;
+      c.axis = {mirror(ch.axis.p0), mirror(ch.axis.p1)};
+      out.push_back(c);
+      continue;
+    }
+    const Vec3 x = ch.axis.p0 + (h0 / (h0 - h1)) * (ch.axis.p1 - ch.axis.p0);
+    Channel a = ch, b = ch;
+    a.axis = {mirror(ch.axis.p0), x};
+    b.axis = {x, mirror(ch.axis.p1)};
+    out.push_back(a), out.push_back(b);
+  }
   return out;
 }
 

@@ -94,7 +94,8 @@ double kendall(const std::vector<double>& a, const std::vector<double>& b) {
 
 TEST_CASE("void plane: the block cut at the plate cavity's floor, adiabatic, with all its heat", "[void]") {
   const Setting s = plate_setting();
-  const Setting cut = cut_at_cavity_void(s);
+  const CavityCut folded = cut_at_cavity_void(s);
+  const Setting& cut = folded.setting;
   CHECK(cut.block.min == s.block.min);
   CHECK(cut.block.max == Vec3(80, 60, 30));
   CHECK(cut.faces[int(BlockFace::PosZ)].film == 0);
@@ -106,20 +107,33 @@ TEST_CASE("void plane: the block cut at the plate cavity's floor, adiabatic, wit
   // Nothing to cut without a box cavity (a patch on a block face, a mesh cavity).
   Setting patch = s;
   patch.cavity_box.reset();
-  CHECK(cut_at_cavity_void(patch).block.max == s.block.max);
+  CHECK(cut_at_cavity_void(patch).setting.block.max == s.block.max);
+  CHECK(cut_at_cavity_void(patch).axis < 0);
+  // A bore in the frame above the cut comes back mirrored; one crossing the cut is split there.
+  Channel frame, riser;
+  frame.axis = Segment{Vec3(0, 5, 36), Vec3(80, 5, 36)};
+  riser.axis = Segment{Vec3(5, 5, 10), Vec3(5, 5, 40)};
+  const std::vector<Channel> f = folded.fold(std::vector<Channel>{frame, riser});
+  REQUIRE(f.size() == 3);
+  CHECK(f[0].axis.p0 == Vec3(0, 5, 24));
+  CHECK(f[0].axis.p1 == Vec3(80, 5, 24));
+  CHECK(f[1].axis.p0 == Vec3(5, 5, 10));
+  CHECK(f[1].axis.p1 == Vec3(5, 5, 30));
+  CHECK(f[2].axis.p1 == Vec3(5, 5, 20));
 }
 
 TEST_CASE("void plane: the line sinks see the plate as the finite volumes do", "[void]") {
-  const Setting s = plate_setting(), cut = cut_at_cavity_void(s);
+  const Setting s = plate_setting();
+  const CavityCut cut = cut_at_cavity_void(s);
   const Samples samples = floor_samples();
-  const LineSinkModel plain(s, samples), planar(cut, samples);
+  const LineSinkModel plain(s, samples), planar(cut.setting, samples);
   LineSinkCache c1, c2;
   std::vector<double> fv_std, plain_std, planar_std;
   // Shape error: each field less its mean (what a std objective sees), area-weighted.
   double plain_sq = 0, planar_sq = 0, n = 0;
   for (const auto& bores : layouts(8)) {
     const FvResult fv = solve_finite_volume({s, bores}, samples, {1.5});
-    const std::vector<double> a = plain.temperatures(bores, c1), b = planar.temperatures(bores, c2);
+    const std::vector<double> a = plain.temperatures(bores, c1), b = planar.temperatures(cut.fold(bores), c2);
     const double ma = summarize(a, samples).mean, mb = summarize(b, samples).mean,
                  mf = summarize(fv.temperature, samples).mean;
     for (std::size_t i = 0; i < samples.size(); ++i) {

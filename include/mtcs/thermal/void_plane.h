@@ -9,14 +9,30 @@
 // (experiments/thermal/void_plane.md). T3 models the void itself and needs none of this.
 //
 // Samples off the cut block (the cavity's side faces) see the mirror image of the steel below
-// the cut: the adiabatic face reflects every source with the same sign.
+// the cut: the adiabatic face reflects every source with the same sign. Channels beyond the cut
+// (bores in the frame beside the cavity, or over it) are folded back the same way: mirrored
+// across the cut plane, which keeps their effect on the rim but overstates that of a bore over
+// the cavity (in T3 the void hides it).
+
+#include <span>
+#include <vector>
 
 #include "mtcs/thermal/model.h"
 
 namespace mtcs::thermal {
 
-// The setting with the block cut at the box cavity's most heated face (above). Unchanged when
+struct CavityCut {
+  Setting setting;         // the cut block, or the setting unchanged (axis < 0)
+  int axis = -1;           // the cut plane's normal axis; -1: no cut
+  double plane = 0;        // its coordinate
+  bool keep_below = true;  // the block kept lies below the plane (a cavity's lower face)
+  // The channels with their parts beyond the plane mirrored across it (one crossing the plane
+  // is split there).
+  std::vector<Channel> fold(std::span<const Channel> channels) const;
+};
+
+// The setting with the block cut at the box cavity's most heated face (above). No cut when
 // there is no box cavity or no heat enters through one of its faces.
-Setting cut_at_cavity_void(const Setting& setting);
+CavityCut cut_at_cavity_void(const Setting& setting);
 
 }  // namespace mtcs::thermal
