@@ -66,6 +66,16 @@ TEST_CASE("thermal spec: defaults in the thermal module's units", "[mold][therma
   CHECK(t.objective_surface == mold::ObjectiveSurface::Heated);
 }
 
+TEST_CASE("thermal spec: cavity_void, ignore by default, plane on request", "[mold][thermal]") {
+  CHECK_FALSE(load(kBlock).thermal.void_plane);
+  CHECK_FALSE(load(kBlock + "thermal: {cavity_void: ignore}\n").thermal.void_plane);
+  CHECK(load(kBlock + "thermal: {cavity_void: plane}\n").thermal.void_plane);
+  const auto e = error_of(kBlock + "thermal:\n  cavity_void: mirror\n");
+  CHECK(e.field() == "thermal.cavity_void");
+  CHECK(e.line() == 3);
+  CHECK(e.column() == 16);
+}
+
 TEST_CASE("thermal spec: SI values are converted to mm, W and degrees C", "[mold][thermal]") {
   const auto t = load(kBlock +
                       "thermal:\n"
