@@ -477,6 +477,35 @@ TEST_CASE("line sinks: an incremental evaluation equals a full one, bit for bit"
   }
 }
 
+// The cache keeps several layouts' blocks (an ES child's parent is rarely the layout just
+// before it): a layout seen two evaluations ago still hits, and a cache squeezed by a tiny
+// budget (evicting on every call) still gives the cold result bit for bit.
+TEST_CASE("line sinks: the cache keeps earlier layouts and evicts without changing a result") {
+  const Reference ref = patch_reference();
+  const LineSinkModel model(block_setting(), ref.samples);
+  const auto parent = block_bores();
+  auto other = parent;
+  for (auto& b : other) b.axis.p0.y() += 2, b.axis.p1.y() += 2;
+  auto child = parent;
+  child[1].axis.p0.z() -= 1, child[1].axis.p1.z() -= 1;
+  LineSinkCache warm, squeezed(1);
+  model.solve(parent, warm);
+  model.solve(other, warm);
+  const std::size_t computed = warm.channels_computed;
+  const auto incremental = model.solve(child, warm);
+  CHECK(warm.channels_computed == computed + 1);  // the parent's two other bores were kept
+  LineSinkCache cold;
+  const auto full = model.solve(child, cold);
+  CHECK(incremental.temperature == full.temperature);
+  using Layout = std::remove_cvref_t<decltype(parent)>;
+  for (const Layout* layout : {&parent, static_cast<const Layout*>(&other), static_cast<const Layout*>(&child), &parent,
+                               static_cast<const Layout*>(&child)}) {
+    const auto a = model.solve(*layout, squeezed);
+    LineSinkCache fresh;
+    CHECK(a.temperature == model.solve(*layout, fresh).temperature);
+  }
+}
+
 TEST_CASE("line sinks: single-precision columns cost under 1e-4 K") {
   const Reference ref = patch_reference();
   LineSinkOptions o;
