@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <stdexcept>
 
@@ -77,7 +78,55 @@ VectorXd solve_dense(MatrixXd& A, VectorXd b) {
 void LineSinkCache::clear() {
   channels_.clear();
   pairs_.clear();
+  bytes_ = 0;
 }
+
+template <std::size_t N>
+std::size_t LineSinkCache::KeyHash::operator()(const std::array<double, N>& k) const {
+  std::uint64_t h = 0x9e3779b97f4a7c15ull;
+  for (const double v : k) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    h = (h ^ bits) * 0xff51afd7ed558ccdull;
+    h ^= h >> 32;
+  }
+  return std::size_t(h);
+}
+
+namespace {
+
+// What a block holds, roughly (for the cache's budget).
+std::size_t block_bytes(const LineSinkCache::ChannelBlock& b) {
+  const auto& w = b.walls;
+  return sizeof b + b.sample_cols_f.size() * sizeof(float) + b.sample_cols_d.size() * sizeof(double) +
+         w.points.size() * (sizeof(WeightedPoint) + 3 * sizeof(float)) + w.sx.size() * 4 * sizeof(float) +
+         std::size_t(b.face_means.size() + b.self.size() + b.face_rows.size() + b.far_rows.size() + b.moments.size() +
+                     b.heat_rows.size() + b.cols) * sizeof(double);
+}
+std::size_t block_bytes(const LineSinkCache::PairBlock& p) { return sizeof p + std::size_t(p.block.size()) * sizeof(double) + 64; }
+
+// Drops the entries unused for longest until the map holds at most `keep` bytes; the entries of
+// evaluation `now` stay.
+template <class Map>
+void shrink(Map& map, std::size_t& bytes, std::size_t keep, std::uint64_t now) {
+  if (bytes <= keep) return;
+  std::vector<std::uint64_t> ages;
+  ages.reserve(map.size());
+  for (const auto& [key, e] : map) ages.push_back(e.used);
+  std::sort(ages.begin(), ages.end());
+  // Drop the older half of the entries (never the current evaluation's).
+  const std::uint64_t cut = std::min(ages[ages.size() / 2], now);
+  for (auto it = map.begin(); it != map.end();) {
+    if (it->second.used < cut || (it->second.used == cut && cut < now)) {
+      bytes -= block_bytes(*it->second.block);
+      it = map.erase(it);
+    } else {
+      ++it;
+    }
+  }
+}
+
+}  // namespace
 
 LineSinkModel::~LineSinkModel() = default;
 LineSinkModel::LineSinkModel(LineSinkModel&&) noexcept = default;
@@ -103,41 +152,43 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
   channels = inside;
   // Look up or build every channel's and pair's blocks.
   using Key = LineSinkCache::Key;
+  const std::uint64_t now = ++cache.evaluation_;
   std::vector<Key> keys(nc);
   std::vector<std::shared_ptr<LineSinkCache::ChannelBlock>> blocks(nc);
-  std::map<Key, std::shared_ptr<LineSinkCache::ChannelBlock>> used;
   for (std::size_t c = 0; c < nc; ++c) {
     const Channel& ch = channels[c];
     if (!((ch.axis.p1 - ch.axis.p0).norm() > 0) || !(ch.radius > 0))
       throw std::invalid_argument("line sinks: a channel needs a positive length and radius");
     keys[c] = {ch.axis.p0.x(), ch.axis.p0.y(), ch.axis.p0.z(), ch.axis.p1.x(), ch.axis.p1.y(),
                ch.axis.p1.z(), ch.radius};
-    auto it = cache.channels_.find(keys[c]);
-    if (it != cache.channels_.end()) {
-      blocks[c] = it->second;
+    auto& entry = cache.channels_[keys[c]];
+    if (entry.block) {
       ++cache.channels_reused;
     } else {
-      blocks[c] = m.build_channel(ch);
+      entry.block = m.build_channel(ch);
+      cache.bytes_ += block_bytes(*entry.block);
       ++cache.channels_computed;
     }
-    used[keys[c]] = blocks[c];
+    entry.used = now;
+    blocks[c] = entry.block;
   }
-  std::map<std::pair<Key, Key>, std::shared_ptr<LineSinkCache::PairBlock>> used_pairs;
-  auto pair = [&](std::size_t r, std::size_t c) -> const MatrixXd& {
-    const auto k = std::make_pair(keys[r], keys[c]);
-    auto found = used_pairs.find(k);
-    if (found != used_pairs.end()) return found->second->block;
-    auto it = cache.pairs_.find(k);
-    std::shared_ptr<LineSinkCache::PairBlock> p;
-    if (it != cache.pairs_.end()) {
-      p = it->second;
-    } else {
-      p = std::make_shared<LineSinkCache::PairBlock>();
-      p->block = m.channel_at_rows(*blocks[r], blocks[c]->axis);
+  // Every ordered pair's block (rows of r, columns of c), looked up once.
+  std::vector<std::shared_ptr<LineSinkCache::PairBlock>> pairs(nc * nc);
+  for (std::size_t r = 0; r < nc; ++r)
+    for (std::size_t c = 0; c < nc; ++c) {
+      if (r == c) continue;
+      LineSinkCache::PairKey k;
+      std::copy(keys[r].begin(), keys[r].end(), k.begin());
+      std::copy(keys[c].begin(), keys[c].end(), k.begin() + 7);
+      auto& entry = cache.pairs_[k];
+      if (!entry.block) {
+        entry.block = std::make_shared<LineSinkCache::PairBlock>();
+        entry.block->block = m.channel_at_rows(*blocks[r], blocks[c]->axis);
+        cache.bytes_ += block_bytes(*entry.block);
+      }
+      entry.used = now;
+      pairs[r * nc + c] = entry.block;
     }
-    used_pairs[k] = p;
-    return p->block;
-  };
 
   // Unknowns: the channels' columns, the faces' losses, the free constant.
   std::vector<int> offset(nc + 1, 0);
@@ -165,7 +216,7 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
       const double wr = mean_row ? w1 : -beta;  // weight of the field's functional in this row
       const Eigen::RowVector4d far = b.far_rows.row(r);
       for (std::size_t d = 0; d < nc; ++d) {
-        const MatrixXd& blk = d == c ? b.self : pair(c, d);
+        const MatrixXd& blk = d == c ? b.self : pairs[c * nc + d]->block;
         A.block(row, offset[d], 1, blk.cols()) = wr * (blk.row(r) + far * blocks[d]->moments);
       }
       for (int f = 0; f < nf; ++f) A(row, n_ch + f) = wr * (b.face_rows(r, f) + far.dot(m.face_moments[f]));
@@ -250,8 +301,11 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
   for (int f = 0; f < nf; ++f) out.face_heat += x[n_ch + f] * m.faces[f].area;
   out.temperature.assign(T.data(), T.data() + ns);
 
-  cache.channels_ = std::move(used);
-  cache.pairs_ = std::move(used_pairs);
+  // Over budget: the blocks unused for longest go (the pairs first: cheaper to rebuild).
+  if (cache.bytes_ > cache.budget_) {
+    shrink(cache.pairs_, cache.bytes_, cache.budget_ / 2, now);
+    shrink(cache.channels_, cache.bytes_, cache.budget_ / 2, now);
+  }
   return out;
 }
 

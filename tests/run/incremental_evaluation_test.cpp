@@ -86,3 +86,32 @@ TEST_CASE("A child scored after its parent equals a cold score, for every mutati
     }
   }
 }
+
+// The same with physics objectives (molds/plate.yaml: T2d line sinks): the line-sink cache keeps
+// the blocks of several layouts, so a child scored after other parents' children still reuses its
+// parent's bores; its score must equal a cold one bit for bit.
+TEST_CASE("A child scored after other parents' children equals a cold score with physics objectives", "[run][incremental]") {
+  const run::Session session(MTCS_SOURCE_DIR "/molds/plate.yaml");
+  const mold::Scene& scene = session.scene();
+  const eval::Pipeline& warm = session.pipeline();
+  const eval::Pipeline cold(scene);
+  const run::MoldProblem problem(warm, {}, session.config().mutation);
+  opt::Rng rng(11);
+  std::vector<opt::Genotype> parents;
+  for (int i = 0; i < 3; ++i) {
+    parents.push_back(problem.sample(rng));
+    warm.evaluate(mold::decode(scene, problem.genome(parents.back())));
+  }
+  int shared = 0;
+  for (int i = 0; i < 6; ++i) {  // children of the parents in turn: the last layout is never the parent
+    const opt::Genotype& parent = parents[std::size_t(i % 3)];
+    opt::Genotype child = parent;
+    problem.mutate(child, problem.initial_steps(child), rng);
+    const mold::Layout p = mold::decode(scene, problem.genome(parent)), c = mold::decode(scene, problem.genome(child));
+    INFO("child " << i);
+    const eval::Evaluation a = warm.evaluate(c), b = cold.evaluate(c);
+    require_identical(a, b);
+    shared += shared_bores(p, c);
+  }
+  CHECK(shared > 0);
+}

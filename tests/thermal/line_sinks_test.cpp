@@ -477,6 +477,35 @@ TEST_CASE("line sinks: an incremental evaluation equals a full one, bit for bit"
   }
 }
 
+// The cache keeps several layouts' blocks (an ES child's parent is rarely the layout just
+// before it): a layout seen two evaluations ago still hits, and a cache squeezed by a tiny
+// budget (evicting on every call) still gives the cold result bit for bit.
+TEST_CASE("line sinks: the cache keeps earlier layouts and evicts without changing a result") {
+  const Reference ref = patch_reference();
+  const LineSinkModel model(block_setting(), ref.samples);
+  const auto parent = block_bores();
+  auto other = parent;
+  for (auto& b : other) b.axis.p0.y() += 2, b.axis.p1.y() += 2;
+  auto child = parent;
+  child[1].axis.p0.z() -= 1, child[1].axis.p1.z() -= 1;
+  LineSinkCache warm, squeezed(1);
+  model.solve(parent, warm);
+  model.solve(other, warm);
+  const std::size_t computed = warm.channels_computed;
+  const auto incremental = model.solve(child, warm);
+  CHECK(warm.channels_computed == computed + 1);  // the parent's two other bores were kept
+  LineSinkCache cold;
+  const auto full = model.solve(child, cold);
+  CHECK(incremental.temperature == full.temperature);
+  using Layout = std::remove_cvref_t<decltype(parent)>;
+  for (const Layout* layout : {&parent, static_cast<const Layout*>(&other), static_cast<const Layout*>(&child), &parent,
+                               static_cast<const Layout*>(&child)}) {
+    const auto a = model.solve(*layout, squeezed);
+    LineSinkCache fresh;
+    CHECK(a.temperature == model.solve(*layout, fresh).temperature);
+  }
+}
+
 TEST_CASE("line sinks: single-precision columns cost under 1e-4 K") {
   const Reference ref = patch_reference();
   LineSinkOptions o;
@@ -654,8 +683,6 @@ TEST_CASE("line sinks: best time per evaluation, default options", "[.bench]") {
   moved[1].axis.p0.y() += 0.5, moved[1].axis.p1.y() += 0.5;
   moved[2].axis.p0.z() -= 0.5, moved[2].axis.p1.z() -= 0.5;
   using clock = std::chrono::steady_clock;
-  auto one = bores;
-  one[1].axis.p0.y() += 0.5, one[1].axis.p1.y() += 0.5;
   double full = 1e9, incremental = 1e9, reused = 1e9, single = 1e9;
   LineSinkCache cache, cache1;
   for (int i = 0; i < 2000; ++i) {
@@ -663,14 +690,18 @@ TEST_CASE("line sinks: best time per evaluation, default options", "[.bench]") {
     auto t0 = clock::now();
     model.solve(bores, cold);
     full = std::min(full, std::chrono::duration<double, std::milli>(clock::now() - t0).count());
+    auto two = moved;  // two bores at new positions every time (earlier layouts stay cached)
+    two[1].axis.p0.x() += 1e-6 * i, two[2].axis.p0.x() += 1e-6 * i;
     t0 = clock::now();
-    model.solve((i % 2) ? bores : moved, cache);
+    model.solve(two, cache);
     incremental = std::min(incremental, std::chrono::duration<double, std::milli>(clock::now() - t0).count());
     t0 = clock::now();
-    model.solve((i % 2) ? bores : moved, cache);  // the same layout again: only the solve
+    model.solve(two, cache);  // the same layout again: only the solve
     reused = std::min(reused, std::chrono::duration<double, std::milli>(clock::now() - t0).count());
+    auto fresh = bores;  // a new position every time: earlier layouts stay cached
+    fresh[1].axis.p0.y() += 0.5 + 1e-6 * i, fresh[1].axis.p1.y() += 0.5 + 1e-6 * i;
     t0 = clock::now();
-    model.solve((i % 2) ? bores : one, cache1);  // one bore moved
+    model.solve(fresh, cache1);  // one bore moved
     single = std::min(single, std::chrono::duration<double, std::milli>(clock::now() - t0).count());
   }
   const auto b0 = clock::now();
@@ -685,13 +716,14 @@ TEST_CASE("line sinks: one bore moved, in a loop", "[.bench]") {
   const Reference ref = patch_reference();
   const LineSinkModel model(block_setting(), ref.samples);
   const auto bores = block_bores();
-  auto one = bores;
-  one[1].axis.p0.y() += 0.5, one[1].axis.p1.y() += 0.5;
   LineSinkCache cache;
   std::vector<double> times;
   for (int i = 0; i < 20000; ++i) {
     const auto t0 = std::chrono::steady_clock::now();
-    model.solve((i % 2) ? bores : one, cache);
+    // A new position every time: the cache keeps earlier layouts, so going back would be a hit.
+    auto fresh = bores;
+    fresh[1].axis.p0.y() += 0.5 + 1e-6 * i, fresh[1].axis.p1.y() += 0.5 + 1e-6 * i;
+    model.solve(fresh, cache);
     times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   }
   std::sort(times.begin(), times.end());

@@ -24,6 +24,8 @@
 // per full evaluation, 0.135 ms with one bore changed (experiments/thermal/line_sinks.md).
 
 #include <array>
+#include <cstdint>
+#include <unordered_map>
 #include <map>
 #include <memory>
 #include <span>
@@ -50,22 +52,39 @@ struct LineSinkOptions {
                                  // a large block: a coarser grid, this one around the heat
 };
 
-// The per-channel and per-pair influence blocks of the last evaluation(s), keyed by the exact
+// The per-channel and per-pair influence blocks of recent evaluations, keyed by the exact
 // geometry (axis ends, radius); coolant and film are applied at assembly, so changing them costs
-// nothing. Belongs to one LineSinkModel; entries unused by an evaluation are dropped after it.
+// nothing. Belongs to one LineSinkModel. It keeps the blocks of several layouts (an ES child's
+// parent is rarely the layout evaluated just before it on this thread) up to a memory budget;
+// past it, the blocks unused for longest are dropped. What is cached never changes a result:
+// a block is a function of its key alone.
 class LineSinkCache {
  public:
+  explicit LineSinkCache(std::size_t budget_bytes = std::size_t(64) << 20) : budget_(budget_bytes) {}
   std::size_t channels_computed = 0;  // columns computed (misses), over the cache's life
   std::size_t channels_reused = 0;    // hits
   void clear();
+  struct ChannelBlock;  // defined inside the module (src/thermal/line_sink_model.h)
+  struct PairBlock;
 
  private:
   friend class LineSinkModel;
   using Key = std::array<double, 7>;
-  struct ChannelBlock;
-  struct PairBlock;
-  std::map<Key, std::shared_ptr<ChannelBlock>> channels_;
-  std::map<std::pair<Key, Key>, std::shared_ptr<PairBlock>> pairs_;
+  using PairKey = std::array<double, 14>;
+  struct KeyHash {
+    template <std::size_t N>
+    std::size_t operator()(const std::array<double, N>& k) const;
+  };
+  template <class Block>
+  struct Entry {
+    std::shared_ptr<Block> block;
+    std::uint64_t used = 0;  // the evaluation that last used it
+  };
+  std::unordered_map<Key, Entry<ChannelBlock>, KeyHash> channels_;
+  std::unordered_map<PairKey, Entry<PairBlock>, KeyHash> pairs_;
+  std::size_t budget_;
+  std::size_t bytes_ = 0;  // held by the channels' and pairs' blocks
+  std::uint64_t evaluation_ = 0;
   const void* owner_ = nullptr;
 };
 
