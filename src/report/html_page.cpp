@@ -53,7 +53,8 @@ std::string import_map() {
   const std::string module = replace_all(assets::text("three/three.module.min.js"), "\"./three.core.min.js\"", "\"three/core\"");
   return "{\"imports\": {\"three\": \"" + data_module(module) + "\",\n\"three/core\": \"" +
          data_module(assets::text("three/three.core.min.js")) + "\",\n\"three/addons/controls/OrbitControls.js\": \"" +
-         data_module(assets::text("three/OrbitControls.js")) + "\"}}";
+         data_module(assets::text("three/OrbitControls.js")) + "\",\n\"mtcs/page\": \"" +
+         data_module(assets::text("page.js")) + "\"}}";
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
+#include <mutex>
 #include <numbers>
 #include <stdexcept>
 
@@ -48,6 +50,45 @@ bool in_triangle(const Vec3& p, const HeatedTriangle& t, int axis) {
   };
   const double c0 = cross(t.a, t.b, p), c1 = cross(t.b, t.c, p), c2 = cross(t.c, t.a, p);
   return (c0 >= 0 && c1 >= 0 && c2 >= 0) || (c0 <= 0 && c1 <= 0 && c2 <= 0);
+}
+
+// The tabulated heat input and far lattice depend on the setting and the options, not on the
+// samples, and cost seconds on a large cavity (~8 s of CPU on the physics plate): models of one
+// setting built in one process (a report's pipeline and its temperature field, a run's
+// screening pipeline) share one build, copied. The last few builds are kept.
+struct Tables {
+  FieldGrid far_grid, heat_grid, heat_fine;
+  Box heat_fine_box = Box::empty(), heat_near = Box::empty();
+  std::vector<Image> near_heat_images, far_heat_images;
+};
+
+// Every number the tables depend on, in order: equal keys, equal tables.
+std::vector<double> tables_key(const Setting& setting, const LineSinkOptions& options) {
+  std::vector<double> key{double(options.images), double(options.far_images), options.heat_grid, setting.conductivity};
+  for (const Vec3& v : {setting.block.min, setting.block.max}) key.insert(key.end(), v.data(), v.data() + 3);
+  for (const FaceCondition& f : setting.faces) key.push_back(f.film), key.push_back(f.ambient);
+  for (const HeatedTriangle& t : setting.heat_in) {
+    for (const Vec3& v : {t.a, t.b, t.c}) key.insert(key.end(), v.data(), v.data() + 3);
+    key.push_back(t.flux);
+  }
+  return key;
+}
+
+std::mutex tables_mutex;
+std::deque<std::pair<std::vector<double>, std::shared_ptr<const Tables>>> tables_kept;  // newest first
+
+std::shared_ptr<const Tables> kept_tables(const std::vector<double>& key) {
+  const std::lock_guard lock(tables_mutex);
+  for (const auto& [k, t] : tables_kept)
+    if (k == key) return t;
+  return nullptr;
+}
+
+void keep_tables(std::vector<double> key, Tables tables) {
+  auto t = std::make_shared<const Tables>(std::move(tables));
+  const std::lock_guard lock(tables_mutex);
+  tables_kept.emplace_front(std::move(key), std::move(t));
+  if (tables_kept.size() > 4) tables_kept.pop_back();
 }
 
 }  // namespace
@@ -238,7 +279,14 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
       (far ? m.far_heat_images : m.near_heat_images).push_back(im);
     }
   };
-  if (!m.far_images.empty() && grids) {
+  const std::vector<double> key = grids ? tables_key(setting, options) : std::vector<double>{};
+  const std::shared_ptr<const Tables> kept = grids ? kept_tables(key) : nullptr;
+  if (kept) {
+    m.far_grid = kept->far_grid, m.heat_grid = kept->heat_grid, m.heat_fine = kept->heat_fine;
+    m.heat_fine_box = kept->heat_fine_box, m.heat_near = kept->heat_near;
+    m.near_heat_images = kept->near_heat_images, m.far_heat_images = kept->far_heat_images;
+  }
+  if (!m.far_images.empty() && grids && !kept) {
     FieldGrid& g = m.far_grid;
     grid_over(g, box, 4, kCoarseCells);
     std::size_t n = 0;
@@ -249,7 +297,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
           for (int c = 0; c < 4; ++c) g.values[n++] = v[c];
         }
   }
-  if (!setting.heat_in.empty() && grids) {
+  if (!setting.heat_in.empty() && grids && !kept) {
     Box bounds = Box::empty();
     for (const HeatedTriangle& t : setting.heat_in)
       for (const Vec3& v : {t.a, t.b, t.c}) bounds.min = bounds.min.cwiseMin(v), bounds.max = bounds.max.cwiseMax(v);
@@ -272,6 +320,8 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     fill_heat(g);
     if (!m.heat_fine.values.empty()) fill_heat(m.heat_fine);
   }
+  if (grids && !kept)
+    keep_tables(key, {m.far_grid, m.heat_grid, m.heat_fine, m.heat_fine_box, m.heat_near, m.near_heat_images, m.far_heat_images});
   m.heat_samples.resize(m.n_samples);
   m.face_samples.resize(m.n_samples, nf);
   for (std::size_t s = 0; s < m.n_samples; ++s) {

@@ -77,10 +77,12 @@ try {
     parsed: performance.getEntriesByName('mtcs-data')[0]?.startTime,
     scene: performance.getEntriesByName('mtcs-scene')[0]?.startTime,
     frames: window.mtcsReport.frames(),
+    programs: window.mtcsReport.programs ? window.mtcsReport.programs() : null,
   }));
   console.log(`loaded and drawn in ${seconds.toFixed(2)} s (page clock ${(timing.ready / 1000).toFixed(2)} s: ` +
     `scripts parsed at ${(timing.start / 1000).toFixed(2)} s, page built at ${(timing.built / 1000).toFixed(2)} s, ` +
-    `first frame ${((timing.ready - timing.built) / 1000).toFixed(2)} s; ${timing.frames} frames)`);
+    `first frame ${((timing.ready - timing.built) / 1000).toFixed(2)} s; ${timing.frames} frames` +
+    (timing.programs !== null ? `, ${timing.programs} shader programs)` : ')'));
   if (timing.scene !== undefined)
     console.log(`page clock parts: data parsed ${((timing.parsed - timing.start) / 1000).toFixed(3)} s, ` +
       `static scene ${((timing.scene - timing.parsed) / 1000).toFixed(3)} s, layout, front and charts ${((timing.built - timing.scene) / 1000).toFixed(3)} s`);

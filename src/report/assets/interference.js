@@ -4,22 +4,12 @@
 // them. The data is the JSON src/report/interference_page.cpp writes; lengths in the meshes' units.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { decode, el, openRenderer, addLights, fitToCanvas } from 'mtcs/page';
 
 const data = JSON.parse(document.getElementById('report-data').textContent);
 const check = data.check;
 const $ = (id) => document.getElementById(id);
-const decode = (b64, Type) => new Type(Uint8Array.from(atob(b64), (c) => c.charCodeAt(0)).buffer);
 const fmt = (v) => (Math.abs(v) >= 1e4 || (v !== 0 && Math.abs(v) < 1e-3) ? v.toExponential(3) : String(Number(v.toPrecision(4))));
-function el(tag, attrs = {}, children = []) {
-  const e = document.createElement(tag);
-  for (const [k, v] of Object.entries(attrs)) {
-    if (k === 'text') e.textContent = v;
-    else if (k === 'class') e.className = v;
-    else e.setAttribute(k, v);
-  }
-  for (const c of children) e.append(c);
-  return e;
-}
 
 // ---------------------------------------------------------------- header and tables
 $('title').textContent = data.title;
@@ -63,22 +53,14 @@ table('pairs-table', ['triangle A', 'solid/face A', 'triangle B', 'solid/face B'
   (i) => flyTo([listed[i]]));
 
 // ---------------------------------------------------------------- 3-D view
-const canvas = $('view3d');
-let renderer = null;
-try {
-  renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
-} catch (e) {
-  $('webgl-error').hidden = false;
-}
+const renderer = openRenderer($('view3d'));
+if (!renderer) $('webgl-error').hidden = false;
+const canvas = renderer ? renderer.domElement : $('view3d');
 const scene = new THREE.Scene();
-scene.background = new THREE.Color(0xeef1f6);
+addLights(scene);
 const camera = new THREE.PerspectiveCamera(35, 1, 0.1, 1e6);
 camera.up.set(0, 0, 1);
 const controls = renderer ? new OrbitControls(camera, canvas) : null;
-scene.add(new THREE.HemisphereLight(0xffffff, 0x8a8f99, 2.2));
-const sun = new THREE.DirectionalLight(0xffffff, 1.6);
-sun.position.set(1, -1.5, 2.5);
-scene.add(sun);
 
 function geometry(m, only = null) {
   const g = new THREE.BufferGeometry();
@@ -92,7 +74,8 @@ function geometry(m, only = null) {
   g.computeVertexNormals();
   return g;
 }
-const surface = (color, opacity) => new THREE.MeshStandardMaterial({ color, roughness: 0.6, metalness: 0.05, transparent: opacity < 1, opacity, depthWrite: opacity >= 1, side: THREE.DoubleSide });
+// Lambert: its shaders compile several times faster than the standard material's in software WebGL.
+const surface = (color, opacity) => new THREE.MeshLambertMaterial({ color, transparent: opacity < 1, opacity, depthWrite: opacity >= 1, side: THREE.DoubleSide });
 const hits = (which, penetrating) => [...new Set(check.pairs.filter((p) => p.penetrating === penetrating).map((p) => p[which]))];
 const layers = {};
 function layer(key, label, objects) {
@@ -145,14 +128,7 @@ function render() {
   frames += 1;
 }
 function resize() {
-  if (!renderer) return;
-  const w = canvas.clientWidth, h = canvas.clientHeight;
-  if (!w || !h) return;
-  renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
-  renderer.setSize(w, h, false);
-  camera.aspect = w / h;
-  camera.updateProjectionMatrix();
-  render();
+  if (renderer && fitToCanvas(renderer, camera)) render();
 }
 if (controls) {
   controls.addEventListener('change', render);

@@ -3,6 +3,7 @@
 // src/report/run_report.cpp writes into #report-data; lengths are in mm.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { decode, el, openRenderer, addLights, fitToCanvas } from 'mtcs/page';
 
 performance.mark('mtcs-start');  // three.js is loaded and parsed
 const data = JSON.parse(document.getElementById('report-data').textContent);
@@ -12,12 +13,6 @@ const CIRCUIT_COLORS = ['#1f77b4', '#2ca02c', '#9467bd', '#ff7f0e', '#17becf', '
 const circuitColor = (c) => CIRCUIT_COLORS[c % CIRCUIT_COLORS.length];
 
 // ---------------------------------------------------------------- numbers and formats
-function decode(base64, Type) {
-  const text = atob(base64);
-  const bytes = new Uint8Array(text.length);  // a plain loop: Uint8Array.from(text, fn) is ~5x slower
-  for (let i = 0; i < text.length; ++i) bytes[i] = text.charCodeAt(i);
-  return new Type(bytes.buffer);
-}
 const numberFormat = new Intl.NumberFormat('en-US', { maximumFractionDigits: 4 });  // toLocaleString builds one per call
 function fmt(v, digits = 3) {
   if (v === null || v === undefined || Number.isNaN(v)) return '\u2013';
@@ -28,16 +23,6 @@ function fmt(v, digits = 3) {
 }
 const withUnit = (v, unit) => (unit ? `${fmt(v)} ${unit}` : fmt(v));
 const objectiveLabel = (o) => (o.unit ? `${o.name.replace(/_/g, ' ')} (${o.unit})` : o.name.replace(/_/g, ' '));
-function el(tag, attrs = {}, children = []) {
-  const e = document.createElement(tag);
-  for (const [k, v] of Object.entries(attrs)) {
-    if (k === 'text') e.textContent = v;
-    else if (k === 'class') e.className = v;
-    else e.setAttribute(k, v);
-  }
-  for (const c of children) e.append(c);
-  return e;
-}
 // Shortfall colour: amount 0 (at the clearance) yellow, 1 (touching or crossing) red.
 function shortfallColor(amount) {
   const t = Math.max(0, Math.min(1, amount));
@@ -66,37 +51,53 @@ document.title = data.title;
 }
 
 // ---------------------------------------------------------------- 3-D view
-const canvas = $('view3d');
-let renderer = null;
-try {
-  renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
-} catch (e) {
-  $('webgl-error').hidden = false;
-}
+const renderer = openRenderer($('view3d'));
+if (!renderer) $('webgl-error').hidden = false;
+const canvas = renderer ? renderer.domElement : $('view3d');
 const scene3 = new THREE.Scene();
-scene3.background = new THREE.Color(0xeef1f6);
+addLights(scene3);
 const camera = new THREE.PerspectiveCamera(35, 1, 0.1, 1e6);
 camera.up.set(0, 0, 1);  // molds stand on z
 const controls = renderer ? new OrbitControls(camera, canvas) : null;
-scene3.add(new THREE.HemisphereLight(0xffffff, 0x8a8f99, 2.2));
-const sun = new THREE.DirectionalLight(0xffffff, 1.6);
-sun.position.set(1, -1.5, 2.5);
-scene3.add(sun);
 
-// Every material has the section plane from the start and keeps it: moving or switching the
-// plane changes its numbers only, never a shader (a recompile costs ~0.1 s with software WebGL).
-// "Off" is a plane that cuts nothing.
+// The section plane cuts everything (the renderer's global plane) from the start and keeps it:
+// moving or switching the plane changes its numbers only, never a shader. "Off" is a plane that
+// cuts nothing. A first render of an empty scene sets the renderer's clipping state, so that
+// the shaders compiled ahead (warmUp) are the ones the first frame uses.
 const sectionPlane = new THREE.Plane(new THREE.Vector3(0, 0, 1), 1e12);
-if (renderer) renderer.localClippingEnabled = true;
+if (renderer) {
+  renderer.clippingPlanes = [sectionPlane];
+  renderer.render(new THREE.Scene(), camera);
+}
+// Few shader programs: compiling them is most of the first frame in software WebGL
+// (experiments/report/README.md). Lambert, not the physically based standard material (its
+// shaders compile several times slower); every solid double-sided (one program), every
+// see-through surface drawn in one pass (one more program).
 function material(params) {
-  // Lambert, not the physically based standard material: its shaders compile several times
-  // faster in software WebGL, the bulk of the first frame (experiments/report/README.md).
-  const m = new THREE.MeshLambertMaterial({ clippingPlanes: [sectionPlane], ...params });
-  return m;
+  return new THREE.MeshLambertMaterial({ side: THREE.DoubleSide, ...params });
+}
+function seeThrough(params) {
+  return material({ transparent: true, depthWrite: false, forceSinglePass: true, ...params });
 }
 function lineMaterial(params) {
-  const m = new THREE.LineBasicMaterial({ clippingPlanes: [sectionPlane], ...params });
-  return m;
+  return new THREE.LineBasicMaterial(params);
+}
+// Those programs compiled ahead, on stand-ins: the browser's GPU process compiles them while this
+// script decodes and builds the meshes, and the first frame finds them ready (flush sends the
+// work now; three.js checks a program only when it first draws with it). Kept until then.
+const warmUp = new THREE.Scene();
+if (renderer) {
+  const tiny = new THREE.BufferGeometry();
+  tiny.setAttribute('position', new THREE.Float32BufferAttribute([0, 0, 0, 1, 0, 0, 0, 1, 0], 3));
+  tiny.setAttribute('normal', new THREE.Float32BufferAttribute([0, 0, 1, 0, 0, 1, 0, 0, 1], 3));
+  const materials = [material({}), seeThrough({}), ...(data.temperature ? [material({ vertexColors: true })] : [])];
+  for (const m of materials) warmUp.add(new THREE.Mesh(tiny, m));
+  const line = new THREE.BufferGeometry();  // lines have no normals (a normal changes the program)
+  line.setAttribute('position', tiny.getAttribute('position'));
+  warmUp.add(new THREE.LineSegments(line, lineMaterial({})));
+  warmUp.add(new THREE.Sprite(new THREE.SpriteMaterial({ map: new THREE.CanvasTexture(document.createElement('canvas')), depthTest: false })));
+  renderer.compile(warmUp, camera, scene3);
+  renderer.getContext().flush();
 }
 
 function v3(a) { return new THREE.Vector3(a[0], a[1], a[2]); }
@@ -180,7 +181,7 @@ function label(text, at, height, color = '#1d2330') {
   ctx.fillText(text, px * 0.3, c.height / 2);
   const texture = new THREE.CanvasTexture(c);
   texture.colorSpace = THREE.SRGBColorSpace;
-  const sm = new THREE.SpriteMaterial({ map: texture, depthTest: false, clippingPlanes: [sectionPlane] });
+  const sm = new THREE.SpriteMaterial({ map: texture, depthTest: false });
   const s = new THREE.Sprite(sm);
   s.scale.set(height * c.width / c.height, height, 1);
   s.position.copy(v3(at));
@@ -243,7 +244,7 @@ const temperatureLayer = addLayer('temperature', 'cavity temperature', !!data.te
 {
   const b = data.scene.block;
   const g = b.box ? boxGeometry(b.box) : meshGeometry(b.mesh);
-  const faces = new THREE.Mesh(g, material({ color: 0x9fb3c8, transparent: true, opacity: 0.12, depthWrite: false, side: THREE.DoubleSide }));
+  const faces = new THREE.Mesh(g, seeThrough({ color: 0x9fb3c8, opacity: 0.12 }));
   faces.renderOrder = 5;
   blockLayer.add(faces);
   blockLayer.add(new THREE.LineSegments(edgesOf(g, b.box), lineMaterial({ color: 0x5b6b80 })));
@@ -252,7 +253,7 @@ const temperatureLayer = addLayer('temperature', 'cavity temperature', !!data.te
 if (data.scene.cavity) {
   const c = data.scene.cavity;
   const g = c.box ? boxGeometry(c.box) : meshGeometry(c.mesh);
-  partLayer.add(new THREE.Mesh(g, material({ color: 0xd9a441, side: THREE.DoubleSide })));
+  partLayer.add(new THREE.Mesh(g, material({ color: 0xd9a441 })));
   partLayer.add(new THREE.LineSegments(edgesOf(g, c.box), lineMaterial({ color: 0x8a6410 })));
 } else {
   setLayerAvailable('part', false, 'this mold has no part');
@@ -260,7 +261,7 @@ if (data.scene.cavity) {
 // Keep-outs, with their clearance as a faint sleeve.
 {
   const solid = material({ color: 0x6b7280 });
-  const sleeve = material({ color: 0x6b7280, transparent: true, opacity: 0.15, depthWrite: false });
+  const sleeve = seeThrough({ color: 0x6b7280, opacity: 0.15 });
   for (const k of data.scene.keep_outs) {
     if (k.cylinder) {
       keepOutLayer.add(cylinder(k.cylinder.p0, k.cylinder.p1, k.cylinder.radius, solid));
@@ -282,7 +283,7 @@ if (data.temperature) {
   const colors = new Float32Array(values.length * 3);
   values.forEach((v, i) => colors.set(Number.isFinite(v) ? rampColor((v - temperatureMin) / (temperatureMax - temperatureMin)) : [0.6, 0.6, 0.6], 3 * i));
   g.setAttribute('color', new THREE.BufferAttribute(colors, 3));
-  const m = new THREE.Mesh(g, material({ vertexColors: true, polygonOffset: true, polygonOffsetFactor: -1, side: THREE.DoubleSide }));
+  const m = new THREE.Mesh(g, material({ vertexColors: true, polygonOffset: true, polygonOffsetFactor: -1 }));
   temperatureLayer.add(m);
 } else {
   setLayerAvailable('temperature', false, 'no temperature in this report');
@@ -316,7 +317,7 @@ function showLayout(member) {
   for (const v of drawn) {
     const color = shortfallColor(v.amount);
     const [a, b] = v.closest;
-    const dm = material({ color, emissive: color, emissiveIntensity: 0.6, depthTest: false, transparent: true, opacity: 0.95 });
+    const dm = seeThrough({ color, emissive: color, emissiveIntensity: 0.6, depthTest: false, depthWrite: true, opacity: 0.95 });
     const parts = [sphere(a, markSize * 0.4, dm), sphere(b, markSize * 0.4, dm)];
     if (v3(a).distanceTo(v3(b)) > 1e-6) parts.push(cylinder(a, b, markSize * 0.12, dm, 10));
     if (drawn.length <= 24)
@@ -365,15 +366,9 @@ function render() {
   renderer.render(scene3, camera);
   frames += 1;
 }
+// (The resize observer's first call, right after the first frame, finds the size unchanged.)
 function resize() {
-  if (!renderer) return;
-  const w = canvas.clientWidth, h = canvas.clientHeight;
-  if (!w || !h) return;
-  renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
-  renderer.setSize(w, h, false);
-  camera.aspect = w / h;
-  camera.updateProjectionMatrix();
-  render();
+  if (renderer && fitToCanvas(renderer, camera)) render();
 }
 if (controls) {
   controls.addEventListener('change', render);
@@ -671,7 +666,8 @@ updateSection();
 starting = false;
 performance.mark('mtcs-built');  // the page and the scene are built; the first frame follows
 render();
+dispose(warmUp);
 // For tests and scripts: the page is drawn.
-window.mtcsReport = { select, frames: () => frames, data };
+window.mtcsReport = { select, frames: () => frames, programs: () => (renderer ? renderer.info.programs.length : 0), data };
 performance.mark('mtcs-drawn');
 document.body.dataset.ready = '1';
