@@ -43,7 +43,8 @@ int run_replay(const Options& o) {
   std::ostringstream plot_log;
   bool plotted = false;
   const run::ReplayResult r = run::write_replay(session, db, o.dir, o.choice, [&](const fs::path& folder) {
-    if (o.plots) plotted = render_plot("plot_fronts.py", {(folder / "frames.json").string()}, plot_log);
+    if (o.plots) plotted = render_plot("plot_fronts.py", {(folder / "frames.json").string()}, plot_log) &&
+                           render_plot("plot_anytime.py", {(folder / "anytime.csv").string()}, plot_log);
   });
   const fs::path& out = r.folder;
   spdlog::info("re-evaluated {} individuals: {} objective mismatch(es); {} generation(s) replayed, fronts in {}/{}",
@@ -71,7 +72,9 @@ Command add_replay_command(CLI::App& app) {
       "--all) write the feasible non-dominated front (DIR/replay/front_G.csv and .json), its plot (front_000G.png, numbered by\n"
       "generation, the same axes in every plot: an animation; when /usr/bin/python3 has matplotlib)\n"
       "and the last front's layouts (front_G_rankR.layout.yaml, .bores.csv, .bores.stl: every bore\n"
-      "a closed cylinder mesh). DIR/replay is replaced whole at the end (never half-written).\n"
+      "a closed cylinder mesh); anytime.csv and anytime.png: best feasible objective and front hypervolume\n"
+      "against evaluations and wall time over every stored generation.\n"
+      "DIR/replay is replaced whole at the end (never half-written).\n"
       "--verify: exit 1 unless every re-evaluated objective equals the stored one bit for bit.\n"
       "Example: mtcs replay runs/demo-plate --verify");
   sub->add_option("dir", o->dir, "run folder (with run.sqlite)")->required();

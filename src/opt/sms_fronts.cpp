@@ -63,6 +63,7 @@ void SteadyStateFronts::push(const Score& raw, const Score& ranked) {
     pushes_back = pushes_back || rel < 0;
   }
   rank_.push_back(r);
+  if (kept_.valid()) kept_.append(f_, r == 0);
   if (!pushes_back) return;
   // Members it dominates, and theirs in turn, may move to later fronts. A member's dominators
   // all had smaller ranks, so visiting the old members by rank settles each one's dominators
@@ -81,6 +82,13 @@ void SteadyStateFronts::push(const Score& raw, const Score& ranked) {
     for (const std::size_t c : changed_)
       if (new_rank_[c] + 1 > nr && dominates(c, q)) nr = new_rank_[c] + 1;
     if (nr != rank_[q]) new_rank_[q] = nr, changed_.push_back(q);
+  }
+  if (kept_.valid()) {  // members pushed out of the first front leave it; many: start over when needed
+    const auto leaving = std::count_if(changed_.begin() + 1, changed_.end(), [&](std::size_t q) { return rank_[q] == 0; });
+    if (leaving > 8) kept_.invalidate();
+    else
+      for (auto q = changed_.begin() + 1; q != changed_.end(); ++q)
+        if (rank_[*q] == 0) kept_.leave(f_, *q);
   }
   rank_.assign(new_rank_.begin(), new_rank_.end());
 }
@@ -181,7 +189,12 @@ std::size_t SteadyStateFronts::worst(bool domcount_then_hv, const Point& ref) {
     if (count_[w] == most) tied_.push_back(w);
   std::size_t w = tied_.front();
   if (tied_.size() > 1) {
+    const bool kept = first && m_ == 3 && ref.size() == 3;
+    std::size_t least = 0;
+    if (kept && kept_.valid_for(ref) && kept_.least(least)) return ++kept_picks_, least;
     contributions_of_worst(ref);
+    if (kept && kept_.valid_for(ref)) kept_.refresh(worst_, contribution_);
+    else if (kept) kept_.rebuild(f_, n, worst_, contribution_, ref);
     for (const std::size_t t : tied_)
       if (contribution_[t] < contribution_[w]) w = t;
   }
@@ -190,6 +203,7 @@ std::size_t SteadyStateFronts::worst(bool domcount_then_hv, const Point& ref) {
 
 void SteadyStateFronts::erase(std::size_t i) {
   // A member of the worst front dominates nobody: the others keep their fronts.
+  if (kept_.valid()) kept_.erase(f_, i);
   const auto row = [&](std::vector<double>& v) { v.erase(v.begin() + long(i * m_), v.begin() + long((i + 1) * m_)); };
   row(raw_f_);
   row(f_);

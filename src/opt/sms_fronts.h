@@ -10,6 +10,7 @@
 
 #include "mtcs/opt/hypervolume.h"
 #include "mtcs/opt/population.h"
+#include "kept_contributions3d.h"
 
 namespace mtcs::opt::detail {
 
@@ -30,6 +31,9 @@ class SteadyStateFronts {
   std::size_t worst(bool domcount_then_hv, const Point& ref);
   // Removes the member worst() named (a member of the worst front: nobody's front changes).
   void erase(std::size_t i);
+  // The kept 3-D contributions of the first front (the tests check they are used).
+  const KeptContributions3& kept() const { return kept_; }
+  long kept_picks() const { return kept_picks_; }  // removals the kept contributions decided
 
  private:
   bool dominates(std::size_t a, std::size_t b) const;
@@ -45,6 +49,9 @@ class SteadyStateFronts {
   std::vector<double> f_, violation_;  // ranked: n x m row-major, n
   std::vector<unsigned char> feasible_;
   std::vector<int> rank_;              // 0: first front
+  // 3 objectives: the first front's contributions, updated point by point (kept_contributions3d.h).
+  KeptContributions3 kept_;
+  long kept_picks_ = 0;
   // Scratch, kept for its capacity.
   std::vector<int> new_rank_, key_;
   std::vector<std::size_t> changed_, order_, fronts_, front_start_, worst_, tied_;

@@ -15,6 +15,7 @@
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/opt/sms_emoa.h"
+#include "mtcs/run/anytime_trace.h"
 #include "mtcs/run/shop_layout.h"
 
 namespace mtcs::run {
@@ -134,15 +135,22 @@ ReplayResult write_replay(const Session& session, const store::RunStore& db, con
   const std::vector<std::string>& names = session.objective_names();
   const MoldProblem& problem = session.problem();
   std::vector<int> stored;
-  for (const auto& s : db.summaries()) stored.push_back(s.index);
+  const std::vector<store::GenerationSummary> summaries = db.summaries();
+  for (const auto& s : summaries) stored.push_back(s.index);
+  // Anytime behaviour over every stored generation (a --generation replay: that one only).
+  const MoldOptimizer optimizer(problem, session.scene(), session.config());
+  AnytimeTrace anytime(optimizer);
   const std::vector<int> indices = replayed_generations(stored, choice, db_path);
 
   ReplayResult result;
   result.folder = fs::path(dir) / "replay";
   std::vector<opt::Generation> kept;
   // Every stored generation is re-evaluated (or the one asked for); the sample is kept for files.
-  for (const int index : choice.generation ? indices : stored) {
+  for (std::size_t i = 0; i < stored.size(); ++i) {
+    const int index = stored[i];
+    if (choice.generation && index != *choice.generation) continue;
     opt::Generation g = *db.generation(index);
+    anytime.add(g, summaries[i]);
     for (const auto& ind : g.population) {
       const opt::Score again = problem.evaluate(ind.x);
       ++result.checked;
@@ -179,6 +187,8 @@ ReplayResult write_replay(const Session& session, const store::RunStore& db, con
     mold::save_bores_csv((out / (stem + ".bores.csv")).string(), layout);
     mold::save_bores_stl((out / (stem + ".bores.stl")).string(), layout);
   }
+  anytime.write_csv((out / "anytime.csv").string());
+  frames["anytime"] = "anytime.csv";  // for the plots and the report
   io::AtomicFile frames_file((out / "frames.json").string());
   frames_file.stream() << frames.dump(1) << '\n';
   frames_file.commit();

@@ -8,6 +8,7 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <random>
 
@@ -204,4 +205,86 @@ TEST_CASE("SMS-EMOA with lambda offspring per step: same result whatever the thr
   CHECK(a.population.size() == 20);
   const Generation b = with_threads(2);
   for (std::size_t i = 0; i < a.population.size(); ++i) CHECK(a.population[i].x == b.population[i].x);
+}
+
+namespace {
+
+// Mutually non-dominated 3-D points in bulk (on the unit sphere's octant), some on a coarse grid
+// of angles (shared coordinates, duplicates), a few dominated ones, outside the box or infinite.
+Score front_score(std::mt19937_64& gen, int grid) {
+  std::uniform_real_distribution<double> u(0, 1);
+  const auto angle = [&] { return grid > 0 ? double(std::uniform_int_distribution<int>(0, grid)(gen)) / grid : u(gen); };
+  const double a = angle() * 1.5707963267948966, b = angle() * 1.5707963267948966;
+  Score s;
+  s.objectives = {std::cos(a) * std::cos(b), std::cos(a) * std::sin(b), std::sin(a)};
+  const double r = u(gen);
+  if (r < 0.08) for (auto& v : s.objectives) v *= 1.05;  // behind the front
+  else if (r < 0.1) s.objectives[1] = 1.15;              // outside the box
+  else if (r < 0.11) s.objectives[2] = std::numeric_limits<double>::infinity();
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("SMS fronts: the kept 3-D contributions drop what the full sort drops", "[opt][sms-emoa][fronts]") {
+  std::mt19937_64 gen(777);
+  const Point ref(3, 1.1);
+  for (const int grid : {0, 6, 40}) {
+    for (const int lambda : {1, 3}) {
+      std::vector<Score> pop;
+      detail::SteadyStateFronts fronts;
+      for (int i = 0; i < 40; ++i) {
+        pop.push_back(front_score(gen, grid));
+        fronts.push(pop.back(), pop.back());
+      }
+      for (int step = 0; step < 400; ++step) {
+        for (int k = 0; k < lambda; ++k) {
+          pop.push_back(front_score(gen, grid));
+          fronts.push(pop.back(), pop.back());
+        }
+        for (int k = 0; k < lambda; ++k) {
+          const std::size_t expected = reference_drop(pop, true, ref);
+          const std::size_t got = fronts.worst(true, ref);
+          REQUIRE(got == expected);
+          pop.erase(pop.begin() + long(expected));
+          fronts.erase(got);
+        }
+      }
+      // The kept path decided most removals (ties on the grids go to the full sweep).
+      CHECK(fronts.kept_picks() > (grid == 6 ? 50 : 200));
+      CHECK(fronts.kept().recomputed() > 0);
+    }
+  }
+}
+
+TEST_CASE("SMS fronts: kept 3-D contributions equal the full computation's within rounding", "[opt][sms-emoa][fronts]") {
+  std::mt19937_64 gen(99);
+  const Point ref(3, 1.1);
+  std::vector<Score> pop;
+  detail::SteadyStateFronts fronts;
+  for (int i = 0; i < 60; ++i) {
+    pop.push_back(front_score(gen, 0));
+    fronts.push(pop.back(), pop.back());
+  }
+  for (int step = 0; step < 200; ++step) {
+    pop.push_back(front_score(gen, 0));
+    fronts.push(pop.back(), pop.back());
+    const std::size_t drop = fronts.worst(true, ref);
+    pop.erase(pop.begin() + long(drop));
+    fronts.erase(drop);
+    if (!fronts.kept().valid()) continue;
+    // The first front's contributions by the general routine, member by member.
+    std::vector<std::size_t> first;
+    for (std::size_t i = 0; i < pop.size(); ++i) {
+      bool dominated = false;
+      for (std::size_t j = 0; j < pop.size() && !dominated; ++j) dominated = j != i && dominates(pop[j], pop[i]);
+      if (!dominated) first.push_back(i);
+    }
+    std::vector<Point> pts;
+    for (const std::size_t i : first) pts.push_back(pop[i].objectives);
+    const std::vector<double> c = contributions(pts, ref);
+    for (std::size_t k = 0; k < first.size(); ++k)
+      REQUIRE(fronts.kept().value(first[k]) == Approx(c[k]).epsilon(1e-12).margin(1e-300));
+  }
+  CHECK(fronts.kept().valid());
 }

@@ -6,11 +6,15 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <cmath>
+#include <limits>
 #include <numeric>
+#include <sstream>
 
 #include <unistd.h>
 
 #include "mtcs/io/input_error.h"
+#include "mtcs/opt/hypervolume.h"
 #include "mtcs/run/replay.h"
 #include "mtcs/run/stored_run.h"
 
@@ -110,5 +114,72 @@ TEST_CASE("issue 16: replay writes DIR/replay whole or not at all", "[run][repla
   CHECK_FALSE(fs::exists(dir / "replay" / "front_20.csv"));
   CHECK(fs::exists(dir / "replay" / "front_100.csv"));
   CHECK(hidden_entries(dir).empty());
+  fs::remove_all(dir);
+}
+
+TEST_CASE("issue 14: replay writes the run's anytime trace (best and hypervolume against evaluations and time)", "[run][replay][anytime]") {
+  const fs::path dir = fs::temp_directory_path() / ("mtcs_replay_anytime_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  run::RunOverrides o;
+  o.algorithm = "sms-emoa";
+  o.seed = 5;
+  o.evaluations = 400;
+  const run::Session session(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml", o);
+  const run::MoldOptimizer optimizer(session.problem(), session.scene(), session.config());
+  store::RunStore db = store::RunStore::create((dir / "run.sqlite").string(), {{"mold", "plate"}});
+  run::run_stored(optimizer, session.problem(), db, {});
+  run::write_replay(session, db, dir.string(), every(10));  // the trace covers every stored generation anyway
+
+  std::ifstream in(dir / "replay" / "anytime.csv");
+  std::string line;
+  std::getline(in, line);
+  CHECK(line == "generation,evaluations,seconds,best_feasible,best_so_far,hypervolume,hypervolume_so_far");
+  const auto summaries = db.summaries();
+  double best = std::numeric_limits<double>::infinity(), most = 0;
+  std::size_t k = 0;
+  for (; std::getline(in, line); ++k) {
+    REQUIRE(k < summaries.size());
+    std::vector<double> v;
+    std::stringstream s(line);
+    for (std::string cell; std::getline(s, cell, ',');) v.push_back(std::stod(cell));
+    REQUIRE(v.size() == 7);
+    CHECK(int(v[0]) == summaries[k].index);
+    CHECK(long(v[1]) == summaries[k].evaluations);
+    CHECK(v[2] == Approx(summaries[k].seconds).epsilon(1e-8));
+    // By hand from the stored population: the best feasible value, the front's hypervolume in
+    // scaled objectives against the run's reference point.
+    const opt::Generation g = *db.generation(summaries[k].index);
+    double here = std::numeric_limits<double>::infinity();
+    std::vector<opt::Point> front;
+    for (std::size_t i = 0; i < g.population.size(); ++i) {
+      const auto& a = g.population[i].score;
+      if (!a.feasible) continue;
+      here = std::min(here, a.value);
+      bool dominated = false;
+      for (const auto& other : g.population) {
+        const auto& b = other.score;
+        bool no_worse = b.feasible, better = false;
+        for (std::size_t j = 0; j < a.objectives.size() && no_worse; ++j)
+          no_worse = b.objectives[j] <= a.objectives[j], better = better || b.objectives[j] < a.objectives[j];
+        dominated = dominated || (no_worse && better);
+      }
+      if (dominated) continue;
+      opt::Point p = a.objectives;
+      for (std::size_t j = 0; j < p.size(); ++j) p[j] /= optimizer.scales()[j];
+      front.push_back(p);
+    }
+    const double hv = opt::hypervolume(front, optimizer.scaled_reference());
+    best = std::min(best, here);
+    most = std::max(most, hv);
+    if (std::isinf(here)) CHECK(std::isinf(v[3]));
+    else CHECK(v[3] == Approx(here).epsilon(1e-9));
+    if (!std::isinf(best)) CHECK(v[4] == Approx(best).epsilon(1e-9));
+    CHECK(v[5] == Approx(hv).epsilon(1e-8).margin(1e-12));
+    CHECK(v[6] == Approx(most).epsilon(1e-8).margin(1e-12));
+  }
+  CHECK(k == summaries.size());
+  CHECK(most > 0);
+  CHECK(nlohmann::json::parse(read_text(dir / "replay" / "frames.json"))["anytime"] == "anytime.csv");
   fs::remove_all(dir);
 }
