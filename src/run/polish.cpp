@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "holes.h"
 #include "mtcs/io/crash_point.h"
@@ -46,12 +47,32 @@ std::vector<Variable> variables_of(const mold::Genome& g, const mold::Scene& sce
   return vars;
 }
 
+// Why COBYLA found nothing better, in the designer's words.
+std::string why_not_improved(nlopt::result result, const std::string& stopped, const Polished& best, std::size_t coordinates,
+                             double first_step, int budget) {
+  const std::string moved = std::to_string(coordinates) + " hole coordinates moved by up to " +
+                            std::to_string(int(std::lround(first_step))) + " mm";
+  if (!best.score.feasible) return "the start violates a constraint and no point COBYLA tried satisfies them all (" + moved + ")";
+  if (!stopped.empty()) return "COBYLA stopped: " + stopped + " (" + moved + ")";
+  if (result == nlopt::MAXEVAL_REACHED)
+    return "the budget of " + std::to_string(budget) + " evaluations ended before a better point (" + moved +
+           "); a larger --polish may help";
+  return "the layout is a local optimum for its circuits: " + moved + " made it no better (COBYLA converged to 0.001 mm)";
+}
+
 }  // namespace
 
 Polished polish(const MoldProblem& problem, const mold::Scene& scene, const mold::Genome& start, int max_evaluations) {
   const auto vars = variables_of(start, scene);
-  Polished best{start, problem.evaluate(problem.encode(start)), 1, false};
-  if (vars.empty() || max_evaluations < 2) return best;
+  Polished best{start, problem.evaluate(problem.encode(start)), 1, false, ""};
+  if (vars.empty()) {
+    best.why_not = "no coordinate can move: every hole is held on its face by a port";
+    return best;
+  }
+  if (max_evaluations < 2) {
+    best.why_not = "a budget of " + std::to_string(max_evaluations) + " evaluation is too small (at least 2)";
+    return best;
+  }
   std::vector<double> x, lo, hi;
   for (const auto& v : vars) {
     x.push_back(start.circuits[v.circuit].waypoints[v.points.front()][v.axis]);
@@ -95,11 +116,14 @@ Polished polish(const MoldProblem& problem, const mold::Scene& scene, const mold
   solver.set_xtol_abs(1e-3);
   solver.set_maxeval(max_evaluations);
   double f = 0;
+  nlopt::result result = nlopt::FAILURE;
+  std::string stopped;
   try {
-    solver.optimize(x, f);
-  } catch (const std::exception&) {
-    // Round-off or budget: the best point seen is kept either way.
+    result = solver.optimize(x, f);
+  } catch (const std::exception& e) {
+    stopped = e.what();  // round-off or a failure: the best point seen is kept either way
   }
+  if (!best.improved) best.why_not = why_not_improved(result, stopped, best, vars.size(), smallest / 2, max_evaluations);
   return best;
 }
 
