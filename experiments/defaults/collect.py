@@ -22,7 +22,8 @@ for s in range(1, seeds + 1):
     front = ""
     if algo == "sms-emoa" and os.path.exists(os.path.join(d, "front.csv")):
         rows = open(os.path.join(d, "front.csv")).read().strip().splitlines()[1:]
-        front = str(len(set(rows)))
+        # distinct designs: objective vectors that differ after rounding to 0.01 (mm, K, cost units)
+        front = str(len({tuple(round(float(v), 2) for v in r.split(",")) for r in rows}))
     cpu = open(d + ".cpu").read().strip().splitlines()[-1]
     warnings = " | ".join(j.get("warnings", []))
     print(f"{os.path.basename(mold)},{algo},{s},{int(j['feasible'])},{circuits},{bores},"

@@ -459,6 +459,11 @@ Penalty parse_penalty(const YamlReader& r, const YAML::Node& n) {
 
 }  // namespace
 
+int default_min_circuits(const Box& part) {
+  const double longest = part.size().maxCoeff();
+  return std::clamp(int(std::ceil(longest / kPartLengthPerCircuit - 1e-9)), 1, 3);
+}
+
 MoldSpec load_mold_spec(const std::string& path) {
   const YamlReader r(path);
   const YAML::Node root = r.load();
@@ -492,6 +497,8 @@ MoldSpec load_mold_spec(const std::string& path) {
     r.fail(root["drilling"]["access_map"], "drilling.access_map", "accessibility maps need a cavity mesh");
   if (root["clearances"]) s.clearances = parse_clearances(r, root["clearances"]);
   if (root["circuits"]) s.circuits = parse_circuits(r, root["circuits"]);
+  if (!(root["circuits"] && root["circuits"]["min"]) && s.cavity)
+    s.circuits.min = std::min(s.circuits.max, default_min_circuits(s.cavity->bounds()));
   if (root["objectives"]) s.objectives = parse_objectives(r, root["objectives"]);
   if (root["thermal"]) s.thermal = parse_thermal(r, root["thermal"]);
   if (root["penalty"]) s.penalty = parse_penalty(r, root["penalty"]);

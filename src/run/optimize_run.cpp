@@ -134,11 +134,14 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
   if (polish_budget > 0 && !stored.interrupted) {
     outcome.polished = polish(problem, scene, outcome.genome, polish_budget);
     if (outcome.polished->improved) outcome.genome = outcome.polished->genome, outcome.best = outcome.polished->score;
-    spdlog::info("polish (COBYLA, {} evaluations): objective {:.6g}{}", outcome.polished->evaluations, outcome.best.value,
-                 outcome.polished->improved ? "" : " (no improvement)");
+    if (outcome.polished->improved)
+      spdlog::info("polish (COBYLA, {} evaluations): objective {:.6g}", outcome.polished->evaluations, outcome.best.value);
+    else
+      spdlog::warn("polish (COBYLA, {} evaluations) found nothing better than {:.6g}: {}", outcome.polished->evaluations,
+                   outcome.best.value, outcome.polished->why_not);
   }
   // What is written is rounded to the tolerance and tidied, and scored as written.
-  outcome.genome = shop_layout(scene, outcome.genome);
+  outcome.genome = shop_layout(problem, scene, outcome.genome);
   outcome.best = problem.evaluate(problem.encode(outcome.genome));
   const mold::Layout layout = write_run_outputs(out_dir, scene, optimizer, names, config.es.seed, outcome);
   spdlog::info("{} best layout: {} bores in {} circuits, objective {:.6g}, {} evaluations in {:.6g} s",

@@ -180,7 +180,7 @@ ReplayResult write_replay(const Session& session, const store::RunStore& db, con
   const opt::Generation& last = kept.back();
   for (const auto& m : front) {
     const int r = m["rank"];
-    const mold::Genome genome = shop_layout(session.scene(), problem.genome(last.population[std::size_t(r)].x));
+    const mold::Genome genome = shop_layout(problem, session.scene(), problem.genome(last.population[std::size_t(r)].x));
     const mold::Layout layout = shop_plan(mold::decode(session.scene(), genome));
     const std::string stem = "front_" + std::to_string(last.index) + "_rank" + std::to_string(r);
     mold::save_layout((out / (stem + ".layout.yaml")).string(), genome);

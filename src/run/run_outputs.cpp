@@ -87,6 +87,7 @@ mold::Layout write_run_outputs(const std::string& out_dir, const mold::Scene& sc
   if (o.polished)
     summary["polish"] = {{"evaluations", o.polished->evaluations}, {"improved", o.polished->improved},
                          {"before", o.before_polish}, {"after", o.polished->score.value}};
+  if (o.polished && !o.polished->improved) summary["polish"]["why_not"] = o.polished->why_not;
   io::AtomicFile file((fs::path(out_dir) / "summary.json").string());
   file.stream() << summary.dump(2) << "\n";
   file.commit();

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "holes.h"
 #include "mtcs/io/number_text.h"
 #include "mtcs/mold/decoder.h"
 
@@ -65,6 +66,40 @@ mold::Genome shop_layout(const mold::Scene& scene, const mold::Genome& genome, d
         ++i;
       }
     }
+  }
+  return g;
+}
+
+mold::Genome shop_layout(const MoldProblem& problem, const mold::Scene& scene, const mold::Genome& genome,
+                         double tolerance) {
+  mold::Genome g = shop_layout(scene, genome, tolerance);
+  opt::Score score = problem.evaluate(problem.encode(g));
+  if (score.feasible || !problem.evaluate(problem.encode(genome)).feasible) return g;
+  const geometry::Box& box = scene.block_bounds();
+  for (int pass = 0; pass < 4 && !score.feasible; ++pass) {
+    bool moved = false;
+    for (auto& c : g.circuits)
+      for (int k = 0; k < 3 && !score.feasible; ++k)
+        for (const auto& [first, last] : aligned_runs(c.waypoints, k)) {
+          // Ports keep their faces.
+          bool on_face = false;
+          for (std::size_t m = first; m < last; ++m)
+            on_face = on_face || std::abs(c.waypoints[m][k] - box.min[k]) <= 1e-9 ||
+                      std::abs(c.waypoints[m][k] - box.max[k]) <= 1e-9;
+          if (on_face) continue;
+          for (const double step : {tolerance, -tolerance}) {
+            const mold::Circuit before = c;
+            for (std::size_t m = first; m < last; ++m) c.waypoints[m][k] = io::round_to(c.waypoints[m][k] + step, tolerance);
+            const opt::Score shifted = problem.evaluate(problem.encode(g));
+            if (shifted.violation < score.violation) {
+              score = shifted, moved = true;
+              break;
+            }
+            c = before;
+          }
+          if (score.feasible) break;
+        }
+    if (!moved) break;
   }
   return g;
 }

@@ -190,3 +190,33 @@ TEST_CASE("mtcs compare-penalties refuses a non-empty --out and an --out it cann
   CHECK(zero.code == 2);
   CHECK_THAT(zero.err, Catch::Contains("--evaluations: must be a whole number from 1 to 2000000000, got 0"));
 }
+
+TEST_CASE("issue 16: compare-penalties with its default reference point gives every variant hypervolume > 0 on a new part",
+          "[cli][compare-penalties][issue16]") {
+  // The first-mold part (docs/first-mold.md): the old fixed reference point of 4 per scaled
+  // objective lies inside its objectives' range, and gave hypervolume 0 on most runs.
+  const std::string part = MTCS_SOURCE_DIR "/docs/first-mold/part.yaml";
+  const std::string base = "compare-penalties " + part + " --seeds 2 --evaluations 2000 --quiet --out ";
+  const fs::path dir = scratch("new_part"), fixed = scratch("new_part_ref4");
+  fs::remove_all(dir);
+  fs::remove_all(fixed);
+  REQUIRE(run_mtcs(base + dir.string() + " --variants constrained_domination,static_linear,static_quadratic") == 0);
+  const auto runs = read_csv(dir / "runs.csv");
+  REQUIRE(runs.size() == 6);
+  // Every run that ends with a feasible front has hypervolume > 0 (at 2 000 evaluations a
+  // static penalty may end without one: that is the budget, not the reference point).
+  int fronts = 0;
+  for (const Row& r : runs) {
+    INFO(r.at("variant") << " seed " << r.at("seed"));
+    if (std::stoi(r.at("front_size")) == 0) continue;
+    ++fronts;
+    CHECK(std::stod(r.at("hypervolume")) > 0);
+  }
+  CHECK(fronts >= 4);
+  // The old default, given by hand: the constrained-domination runs, with fronts of 10, score 0.
+  REQUIRE(run_mtcs(base + fixed.string() + " --variants constrained_domination --ref 4,4,4") == 0);
+  for (const Row& r : read_csv(fixed / "runs.csv")) {
+    CHECK(std::stoi(r.at("front_size")) > 0);
+    CHECK(std::stod(r.at("hypervolume")) == 0);
+  }
+}

@@ -113,6 +113,32 @@ TEST_CASE("mtcs optimize --polish refines with COBYLA and stays feasible", "[cli
   CHECK(j["polish"]["evaluations"].get<int>() <= 801);
 }
 
+TEST_CASE("issue 16: --polish improves or says why it could not (it used to improve none of 3 runs, silently)",
+          "[cli][optimize][issue16]") {
+  // The same run twice: polished with a budget too small to move, and with a real one.
+  for (const int budget : {1, 300}) {
+    INFO(budget);
+    const fs::path dir = scratch("polish_why" + std::to_string(budget));
+    fs::remove_all(dir);
+    const fs::path err = scratch("polish_why.err");
+    REQUIRE(run_mtcs("optimize " + kMold + " --out " + dir.string() + " --seed 3 --evaluations 2000 --polish " +
+                         std::to_string(budget), err) == 0);
+    std::ifstream in(dir / "summary.json");
+    const auto p = nlohmann::json::parse(in)["polish"];
+    if (p["improved"].get<bool>()) {
+      CHECK(p["after"].get<double>() < p["before"].get<double>());
+      CHECK_FALSE(p.contains("why_not"));
+    } else {
+      // The reason, in summary.json and in the warning on stderr.
+      const std::string why = p["why_not"].get<std::string>();
+      CHECK_FALSE(why.empty());
+      CHECK_THAT(mtcs_test::read_text(err), Catch::Contains("found nothing better") && Catch::Contains(why));
+      CHECK(p["after"].get<double>() == p["before"].get<double>());
+    }
+    if (budget == 1) CHECK(p["why_not"].get<std::string>() == "a budget of 1 evaluation is too small (at least 2)");
+  }
+}
+
 TEST_CASE("mtcs optimize --algorithm sms-emoa on a mold writes its front and hypervolume", "[cli][optimize]") {
   const fs::path dir = scratch("sms");
   fs::remove_all(dir);

@@ -127,3 +127,23 @@ TEST_CASE("mold spec: a closed tetrahedron loads and is translated", "[mold]") {
   CHECK(spec.cavity->mesh->mesh.bounds().min == geometry::Vec3(10, 20, 30));
   CHECK(spec.cavity->mesh->mesh.signed_volume() == Approx(1.0 / 6));
 }
+
+TEST_CASE("issue 16: without circuits.min a part gets one circuit per 40 mm of its longest side (the ES stopped at 2)",
+          "[mold][issue16]") {
+  // The first-mold part: 96.6 x 104.9 x 53.6 mm, ceil(104.9 / 40) = 3 circuits at least, of 4.
+  const mold::MoldSpec part = mold::load_mold_spec(MTCS_SOURCE_DIR "/docs/first-mold/part.yaml");
+  CHECK(part.circuits.min == 3);
+  CHECK(part.circuits.max == 4);
+  auto limits = [](const std::string& cavity, const std::string& circuits) {
+    const std::string block = "block: {box: {min: [0, 0, 0], max: [300, 300, 100]}}\n";
+    return mold::load_mold_spec(write("c.yaml", block + cavity + circuits).string()).circuits;
+  };
+  // 40 mm or less: 1; 40.5 mm: 2; 200 mm: capped at 3; a max below that caps it.
+  CHECK(limits("cavity: {box: {min: [100, 100, 40], max: [140, 110, 50]}}\n", "").min == 1);
+  CHECK(limits("cavity: {box: {min: [100, 100, 40], max: [140.5, 110, 50]}}\n", "").min == 2);
+  CHECK(limits("cavity: {box: {min: [50, 50, 40], max: [250, 110, 50]}}\n", "").min == 3);
+  CHECK(limits("cavity: {box: {min: [50, 50, 40], max: [250, 110, 50]}}\n", "circuits: {max: 2}\n").min == 2);
+  // What the spec says is kept, and the bundled molds say it.
+  CHECK(limits("cavity: {box: {min: [50, 50, 40], max: [250, 110, 50]}}\n", "circuits: {min: 1}\n").min == 1);
+  CHECK(mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml").circuits.min == 1);
+}

@@ -179,3 +179,27 @@ TEST_CASE("scene check: scale and rotate are refused beside a box or cylinder, a
         "cavity.rotate.axis");
   CHECK(error_of(kBlock + "cavity: {mesh: part.off, scale: -1}\n").field() == "cavity.scale");
 }
+
+TEST_CASE("scene check: a NaN vertex, a bad face index and a vertex at 1e300 in the part are refused at their line",
+          "[mold][scene]") {
+  // Used to be a generic "cannot read mesh" without a line (NaN, bad index) and, for 1e300,
+  // "oriented inwards". Line 10 of the box's OFF is vertex 7, line 11 its first face.
+  auto with_line = [](std::string text, int line, const std::string& replacement) {
+    std::size_t at = 0;
+    for (int l = 1; l < line; ++l) at = text.find('\n', at) + 1;
+    return text.replace(at, text.find('\n', at) - at, replacement);
+  };
+  const std::string box = boxes_off({{50, 50, 40, 110, 90, 60}});
+  write("nan.off", with_line(box, 10, "110 90 nan"));
+  write("far.off", with_line(box, 10, "110 90 1e300"));
+  write("index.off", with_line(box, 11, "3 0 2 9"));
+  for (const auto& [file, where] : {std::pair{"nan.off", "nan.off:10:8: vertex 7: coordinate z is 'nan'"},
+                                    std::pair{"far.off", "far.off:10:8: vertex 7: coordinate z is '1e300'"},
+                                    std::pair{"index.off", "index.off:11: face 0 refers to vertex 9"}}) {
+    INFO(file);
+    const io::InputError e = error_of(kBlock + "cavity: {mesh: " + file + "}\n");
+    CHECK(e.field() == "cavity.mesh");
+    CHECK_THAT(std::string(e.what()), Catch::Contains(where));
+    CHECK_THAT(std::string(e.what()), !Catch::Contains("oriented") && !Catch::Contains("cannot read mesh"));
+  }
+}

@@ -95,7 +95,7 @@ struct Clearances {
 };
 
 struct CircuitLimits {
-  int min = 1, max = 4;
+  int min = 1, max = 4;  // without circuits.min in the spec: default_min_circuits of the part
   int min_waypoints = 2, max_waypoints = 12;
   std::vector<Face> inlet_faces{Face::NegY}, outlet_faces{Face::NegY};
 };
@@ -209,6 +209,12 @@ struct MoldSpec {
   ThermalSpec thermal;
   Penalty penalty;
 };
+
+// circuits.min when the spec does not give it: one circuit per 40 mm of the part's longest side,
+// 1 to 3 (experiments/defaults/README.md: on a 105 mm part the default ES stopped at 1-2 circuits
+// on 10 of 11 seeds with min 1, leaving a lobe of the part 50 mm and more from any bore).
+inline constexpr double kPartLengthPerCircuit = 40;  // mm
+int default_min_circuits(const Box& part);
 
 // Reads, validates and loads a mold spec with its meshes. Every problem throws io::InputError
 // with the file, line and column, and the field's path (e.g. "keep_outs[2].clearance").

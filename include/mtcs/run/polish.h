@@ -8,6 +8,8 @@
 // share a coordinate move as one (a hole shifts across its axis), so refining keeps holes
 // aligned; ports keep the coordinate that puts them on their face.
 
+#include <string>
+
 #include "mtcs/run/mold_problem.h"
 #include "mtcs/mold/scene.h"
 
@@ -18,6 +20,7 @@ struct Polished {
   opt::Score score;
   int evaluations = 0;
   bool improved = false;
+  std::string why_not;  // when not improved: the reason, for the log and summary.json
 };
 
 Polished polish(const MoldProblem& problem, const mold::Scene& scene, const mold::Genome& start, int max_evaluations);
