@@ -151,7 +151,8 @@ auto reading(const std::string& path, F&& read) {
 }  // namespace
 
 RunStore::RunStore(sqlite3* db, std::string path, int lock_fd) : db_(db), path_(std::move(path)), lock_fd_(lock_fd) {}
-RunStore::RunStore(RunStore&& o) noexcept : db_(o.db_), path_(std::move(o.path_)), lock_fd_(o.lock_fd_) {
+RunStore::RunStore(RunStore&& o) noexcept
+    : db_(o.db_), path_(std::move(o.path_)), lock_fd_(o.lock_fd_), island_tables_(o.island_tables_) {
   o.db_ = nullptr;
   o.lock_fd_ = -1;
 }
@@ -159,6 +160,7 @@ RunStore& RunStore::operator=(RunStore&& o) noexcept {
   std::swap(db_, o.db_);
   std::swap(path_, o.path_);
   std::swap(lock_fd_, o.lock_fd_);
+  std::swap(island_tables_, o.island_tables_);
   return *this;
 }
 RunStore::~RunStore() {
@@ -334,7 +336,8 @@ void RunStore::save_islands(const std::vector<IslandsGeneration>& batch) {
   errno = 0;
   try {
     exec(db_, "BEGIN IMMEDIATE;");
-    exec(db_,
+    if (!island_tables_)
+      exec(db_,
          "CREATE TABLE IF NOT EXISTS island_generation(island INTEGER, idx INTEGER, evaluations INTEGER, best REAL,"
          "  feasible_share REAL, seconds REAL, PRIMARY KEY(island, idx));"
          "CREATE TABLE IF NOT EXISTS island_individual(island INTEGER, generation INTEGER, rank INTEGER, genotype BLOB,"
@@ -342,6 +345,7 @@ void RunStore::save_islands(const std::vector<IslandsGeneration>& batch) {
          "  PRIMARY KEY(island, generation, rank));");
     for (const IslandsGeneration& gen : batch) insert_islands(db_, gen);
     exec(db_, "COMMIT;");
+    island_tables_ = true;
   } catch (const std::exception& e) {
     const int os_error = errno;
     const bool disk = os_error == ENOSPC || os_error == EFBIG || os_error == EDQUOT || os_error == EIO || os_error == EROFS;

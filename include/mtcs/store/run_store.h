@@ -78,6 +78,7 @@ class RunStore {
   sqlite3* db_ = nullptr;
   std::string path_;
   int lock_fd_ = -1;  // the advisory lock of a writing store
+  bool island_tables_ = false;  // made (by this connection's save_islands): no DDL per commit
 };
 
 }  // namespace mtcs::store
