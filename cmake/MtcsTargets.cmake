@@ -7,9 +7,9 @@ function(mtcs_target_defaults target)
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)
   endif()
   if(MTCS_FUZZ)  # coverage for libFuzzer; the fuzz targets link the fuzzer itself
-    target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer
+    target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link,${MTCS_FUZZ_SANITIZERS} -fno-omit-frame-pointer
                                              -Wno-unknown-warning-option)
-    target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+    target_link_options(${target} PRIVATE -fsanitize=${MTCS_FUZZ_SANITIZERS})
   endif()
 endfunction()
 

@@ -1,13 +1,18 @@
 #include "mtcs/run/islands.h"
 
+#include <spdlog/spdlog.h>
 #include <tbb/parallel_for.h>
+#include <time.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <optional>
 #include <sstream>
 
+#include "island_writer.h"
 #include "mtcs/io/input_error.h"
 #include "mtcs/run/progress_line.h"
 
@@ -95,6 +100,7 @@ class ThreadTransport final : public IslandTransport {
   bool broadcast(bool value) override { return value; }
   std::string broadcast(const std::string& value) override { return value; }
   bool all(bool value) override { return value; }
+  std::vector<std::string> gather_text(const std::string& local) override { return {local}; }
 };
 
 }  // namespace
@@ -152,11 +158,58 @@ std::string island_progress_line(const MoldOptimizer& base, const opt::Generatio
          each;
 }
 
+namespace {
+
+double cpu_seconds(clockid_t clock) {
+  timespec t{};
+  ::clock_gettime(clock, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+double process_cpu_seconds() { return cpu_seconds(CLOCK_PROCESS_CPUTIME_ID); }
+double thread_cpu_seconds() { return cpu_seconds(CLOCK_THREAD_CPUTIME_ID); }
+
+// Where a process's wall time goes in run_islands, for the speed study (the --verbose log).
+// Also the CPU seconds of this thread in each stored generation (its work: with one thread a
+// rank, what the rank would take on a core of its own), for experiments/islands/speedup.py.
+struct Phases {
+  double evaluate = 0, migrate = 0, gather = 0, store = 0, stop = 0;
+  std::vector<double> work;
+  double work_start = thread_cpu_seconds(), waiting_cpu = 0;
+  void generation_stored() {
+    const double now = thread_cpu_seconds();
+    work.push_back(now - work_start - waiting_cpu);
+    work_start = now, waiting_cpu = 0;
+  }
+  // A call to the other processes: its wall time into `into`, its CPU (polls) out of the work.
+  template <class F>
+  auto waited(double& into, F&& f) {
+    struct Add {
+      double& cpu;
+      double t0 = thread_cpu_seconds();
+      ~Add() { cpu += thread_cpu_seconds() - t0; }
+    } add{waiting_cpu};
+    return timed(into, std::forward<F>(f));
+  }
+  template <class F>
+  static auto timed(double& into, F&& f) {
+    const auto t0 = std::chrono::steady_clock::now();
+    struct Add {
+      double& into;
+      std::chrono::steady_clock::time_point t0;
+      ~Add() { into += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
+    } add{into, t0};
+    return f();
+  }
+};
+
+}  // namespace
+
 StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, const IslandSettings& s,
                       IslandTransport& transport, store::RunStore* db,
                       const std::function<void(const opt::Generation&, const std::string&)>& on_line,
                       const std::function<bool()>& stop) {
   const auto t0 = std::chrono::steady_clock::now();
+  const double cpu0 = process_cpu_seconds();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   const int P = s.islands;
   const std::vector<int> mine = transport.local(P);
@@ -182,41 +235,85 @@ StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, con
   }
   const bool resuming = transport.broadcast(!all.empty());
   std::vector<opt::Generation> gens(islands.size());
+  Phases phases;
   if (resuming) {
     gens = transport.scatter(all, P);
   } else {
-    tbb::parallel_for(std::size_t(0), islands.size(), [&](std::size_t k) { gens[k] = islands[k].initial(); });
+    Phases::timed(phases.evaluate, [&] {
+      tbb::parallel_for(std::size_t(0), islands.size(), [&](std::size_t k) { gens[k] = islands[k].initial(); });
+    });
   }
+  long local_evals_before = 0;
+  if (resuming)
+    for (const auto& g : gens) local_evals_before += g.evaluations;
 
+  // The writer's store, written from a thread of its own while the islands go on.
+  std::optional<IslandWriter> writing;
+  if (db) writing.emplace(*db);
   StoredRun r;
   // Stores one generation of every island (the writer), and tells the live line.
   auto store = [&] {
-    const std::vector<opt::Generation> every = transport.gather(gens, P);
-    if (!transport.writer()) return;
-    r.last = merge(base, problem, every);
-    const double sec = elapsed();
-    if (db) db->save_islands(every, r.last, seconds_before + sec);
-    if (on_line) on_line(r.last, island_progress_line(base, r.last, every, sec, r.last.evaluations - evals_before));
+    std::vector<opt::Generation> every = phases.waited(phases.gather, [&] { return transport.gather(gens, P); });
+    if (transport.writer()) {
+      Phases::timed(phases.store, [&] {
+        r.last = merge(base, problem, every);
+        const double sec = elapsed();
+        if (on_line) on_line(r.last, island_progress_line(base, r.last, every, sec, r.last.evaluations - evals_before));
+        if (writing) writing->push({std::move(every), r.last, seconds_before + sec});
+      });
+    }
+    phases.generation_stored();
   };
   if (!resuming) store();
   else if (transport.writer()) r.last = merge(base, problem, transport.gather(gens, P));
   else transport.gather(gens, P);
 
-  while (!islands.front().done(gens.front()) && !transport.broadcast(stop && stop())) {
-    tbb::parallel_for(std::size_t(0), islands.size(), [&](std::size_t k) { gens[k] = islands[k].advance(gens[k]); });
+  while (!islands.front().done(gens.front()) &&
+         !phases.waited(phases.stop, [&] { return transport.broadcast(stop && stop()); })) {
+    Phases::timed(phases.evaluate, [&] {
+      tbb::parallel_for(std::size_t(0), islands.size(), [&](std::size_t k) { gens[k] = islands[k].advance(gens[k]); });
+    });
     if (islands.front().migrates_after(gens.front(), s.migration_every) && P > 1) {
-      std::vector<std::vector<opt::Individual>> out;
-      for (std::size_t k = 0; k < islands.size(); ++k) out.push_back(islands[k].emigrants(gens[k], s.migrants));
-      const auto arrivals = transport.migrate(out, P, s.topology);
-      for (std::size_t k = 0; k < islands.size(); ++k) gens[k] = islands[k].immigrate(gens[k], arrivals[k]);
+      phases.waited(phases.migrate, [&] {
+        std::vector<std::vector<opt::Individual>> out;
+        for (std::size_t k = 0; k < islands.size(); ++k) out.push_back(islands[k].emigrants(gens[k], s.migrants));
+        const auto arrivals = transport.migrate(out, P, s.topology);
+        for (std::size_t k = 0; k < islands.size(); ++k) gens[k] = islands[k].immigrate(gens[k], arrivals[k]);
+      });
     }
     store();
   }
+  if (writing) Phases::timed(phases.store, [&] { writing->finish(); });
   r.interrupted = !islands.front().done(gens.front());
   if (base.pareto() && transport.writer())
     std::stable_sort(r.last.population.begin(), r.last.population.end(),
                      [&](const opt::Individual& a, const opt::Individual& b) { return problem.better(a.score, b.score); });
   r.seconds = seconds_before + elapsed();
+
+  // Every process's phases at the writer's log (--verbose): experiments/islands/speed.sh reads them.
+  long local_evals = -local_evals_before;
+  for (const auto& g : gens) local_evals += g.evaluations;
+  char line[400];
+  std::snprintf(line, sizeof line,
+                "islands %s: evaluations %ld wall %.4f cpu %.4f evaluate %.4f migrate %.4f gather %.4f store %.4f"
+                " stop %.4f",
+                (std::to_string(mine.front()) + (mine.size() > 1 ? "-" + std::to_string(mine.back()) : "")).c_str(), local_evals, elapsed(), process_cpu_seconds() - cpu0,
+                phases.evaluate, phases.migrate, phases.gather, phases.store, phases.stop);
+  std::string mine_line = line;
+  if (writing) {
+    const IslandWriter::Times w = writing->times();
+    std::snprintf(line, sizeof line, " commit_wall %.4f commit_cpu %.4f transactions %ld", w.wall, w.cpu, w.transactions);
+    mine_line += line;
+  }
+  for (const std::string& each : transport.gather_text(mine_line)) spdlog::debug("timing: {}", each);
+  // Each stored generation's work of every process, one line a process, when asked for.
+  std::string works;
+  for (const double w : phases.work) works += std::to_string(w) + " ";
+  const std::vector<std::string> every_work = transport.gather_text(works);
+  if (const char* path = std::getenv("MTCS_ISLANDS_WORK_FILE"); path && transport.writer()) {
+    std::ofstream out(path);
+    for (const std::string& each : every_work) out << each << "\n";
+  }
   return r;
 }
 

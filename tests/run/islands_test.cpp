@@ -7,6 +7,8 @@
 #include <tbb/global_control.h>
 
 #include <cmath>
+#include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <unistd.h>
@@ -137,6 +139,30 @@ TEST_CASE("islands: an interrupted archipelago resumed ends as the uninterrupted
     CHECK_FALSE(resumed.interrupted);
     CHECK(resumed.last_generation == done.last_generation);
     CHECK(rows(parts, 4) == rows(whole, 4));
+  }
+}
+
+TEST_CASE("islands: kill -9 while the store thread writes; every resume ends as the uninterrupted run",
+          "[run][islands][kill]") {
+  // The mtcs binary with MTCS_CRASH_AT=store-island-row:N (SIGKILL at the N-th island row, in the
+  // writer thread), then --resume: the rows, bit for bit, of the run never killed.
+  const std::string args = " optimize " + kMold + " --islands 4 --migration-every 2 --migrants 2 --seed 7"
+                           " --evaluations 1200 --threads 2 --quiet --out ";
+  const fs::path whole = scratch("kill_whole");
+  REQUIRE(std::system((std::string(MTCS_BINARY) + args + whole.string() + " 2>/dev/null").c_str()) == 0);
+  const auto expected = rows(whole, 4);
+  for (const int n : {1, 17, 95, 203, 311}) {  // of 320 island rows
+    INFO("killed at island row " << n);
+    const fs::path dir = scratch("kill_" + std::to_string(n));
+    const int killed = std::system(
+        ("MTCS_CRASH_AT=store-island-row:" + std::to_string(n) + " " + MTCS_BINARY + args + dir.string() + " 2>/dev/null")
+            .c_str());
+    CHECK(WEXITSTATUS(killed) == 128 + SIGKILL);  // sh reports its child's SIGKILL as 137
+    if (!fs::exists(dir / "run.sqlite")) continue;
+    CHECK(rows(dir, 4).size() < expected.size());
+    REQUIRE(std::system((std::string(MTCS_BINARY) + " optimize --resume " + dir.string() + " --quiet 2>/dev/null").c_str()) ==
+            0);
+    CHECK(rows(dir, 4) == expected);
   }
 }
 

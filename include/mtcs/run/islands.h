@@ -6,8 +6,10 @@
 // neighbours (ring or fully connected), chosen from the populations before any arrival: the same
 // seed and P give the same run, bit for bit, whatever the threads or processes. The islands run
 // in this process's threads, or one per MPI rank (IslandTransport); rank 0 stores every island's
-// generation and the archipelago's (all members) in the run store, one transaction per
-// generation: a resumed run continues exactly from the last stored one.
+// generation and the archipelago's (all members) in the run store, from a thread of its own
+// (the islands go on meanwhile), one transaction per generation or per few whole generations
+// when it falls behind: a resumed run continues exactly from the last stored one. Waiting ranks
+// sleep between polls (MPI's own waits would spin on the cores the others need).
 
 #include <functional>
 #include <memory>
@@ -55,6 +57,8 @@ class IslandTransport {
   virtual std::string broadcast(const std::string& value) = 0;
   // True everywhere when it is true everywhere.
   virtual bool all(bool value) = 0;
+  // Every process's text at the writer (in rank order); elsewhere empty.
+  virtual std::vector<std::string> gather_text(const std::string& local) = 0;
 };
 
 // All islands in this process, stepped in parallel (TBB) or one after another.

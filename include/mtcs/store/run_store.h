@@ -2,9 +2,11 @@
 // The run store (SQLite): what a run was (the run record of run/run_record.h: resolved config,
 // the mold spec's path, text and hash, its meshes' hashes, seed, program version) and every
 // generation's population — genotype, strategy parameters, objectives, total violation, the
-// violated constraints in words, feasibility — with a summary. One transaction per generation,
-// so a run killed at any moment (kill -9 included) keeps every complete generation and resumes
-// from the last. Numbers are stored as their exact bits: a resumed run continues bit for bit.
+// violated constraints in words, feasibility — with a summary. One transaction per generation
+// (or per batch of whole generations), so a run killed at any moment (kill -9 included) keeps
+// every committed generation and resumes from the last. Commits reach the system's page cache,
+// not the disk (WAL, synchronous=NORMAL): a power loss may lose the last commits, never the
+// store's consistency. Numbers are stored as their exact bits: a resumed run continues bit for bit.
 // A store that is not one (truncated, corrupted, another program's file) is bad input:
 // io::InputError naming the file, and nothing is written to it. A writing store (create,
 // resume) holds an advisory lock (flock on "<store>.lock") for its life, so a second writer is
@@ -21,6 +23,13 @@
 struct sqlite3;
 
 namespace mtcs::store {
+
+// One stored generation of an island run: every island's and the archipelago's (all members).
+struct IslandsGeneration {
+  std::vector<opt::Generation> islands;
+  opt::Generation merged;
+  double seconds = 0;
+};
 
 struct GenerationSummary {
   int index = 0;
@@ -57,6 +66,9 @@ class RunStore {
   // transaction holds every island's generation and the archipelago's (`merged`: all islands'
   // members), which the readers of whole runs (replay, report, resume's checks) see as usual.
   void save_islands(const std::vector<opt::Generation>& islands, const opt::Generation& merged, double seconds);
+  // Several whole generations in one transaction (a writer that fell behind catches up): a
+  // failure keeps none of them, the store ends at the last generation of an earlier one.
+  void save_islands(const std::vector<IslandsGeneration>& batch);
   std::optional<opt::Generation> island_generation(int island, int index) const;
   // Summaries of one island's stored generations, in order (empty: none).
   std::vector<GenerationSummary> island_summaries(int island) const;
@@ -66,6 +78,7 @@ class RunStore {
   sqlite3* db_ = nullptr;
   std::string path_;
   int lock_fd_ = -1;  // the advisory lock of a writing store
+  bool island_tables_ = false;  // made (by this connection's save_islands): no DDL per commit
 };
 
 }  // namespace mtcs::store

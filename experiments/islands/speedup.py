@@ -1,0 +1,66 @@
+#!/usr/bin/env python3
+"""Reads the runs speedup.sh made (DIR/MODE-P-REP: summary.json, .err with the --verbose timing
+lines, .work with each process's CPU seconds per stored generation, .time, .load) and prints a
+CSV row per run, then the speed-up against P = 1 per mode.
+
+Measured: evaluations / the run's own seconds (summary.json), best of the repetitions.
+Idle estimate (what a machine with CORES free cores would give): each stored generation takes
+the longest process's work (CPU seconds of its one thread between two generations; every
+process waits for the others there), or the whole generation's CPU (all processes and the
+writer's commits) spread over the cores when that is more:
+    T = sum_g max(max_r w[r][g], (sum_r w[r][g] + commit_cpu / G) / CORES)
+Messages between ranks on one machine take microseconds and are left out. For threads (one
+process) every island's work is in one line: T = sum_g max(w[g] / min(P, CORES), ...) is not
+separable, so the estimate is process CPU / min(P, CORES) (a lower bound)."""
+import glob, json, os, re, sys
+
+root, cores = sys.argv[1], int(sys.argv[2])
+rows = []
+for run in sorted(p for p in glob.glob(os.path.join(root, "*-*-*")) if os.path.isdir(p)):
+    mode, P, rep = os.path.basename(run).split("-")
+    P = int(P)
+    s = json.load(open(os.path.join(run, "summary.json")))
+    evals, wall = s["evaluations"], s["seconds"]
+    user, sys_ = map(float, open(run + ".time").read().split()[:2])
+    load = float(open(run + ".load").read())
+    timing = [dict(zip(t[::2], map(float, t[1::2]))) for t in
+              (re.search(r"timing: islands \S+: (.*)", l).group(1).split()
+               for l in open(run + ".err") if "timing: islands" in l)]
+    work = [list(map(float, l.split())) for l in open(run + ".work") if l.strip()]
+    commit_cpu = sum(t.get("commit_cpu", 0) for t in timing)
+    commit_wall = sum(t.get("commit_wall", 0) for t in timing)
+    run_cpu = sum(t["cpu"] for t in timing)  # the run loops' CPU, every process
+    G = max(len(w) for w in work)
+    if mode == "mpi":
+        idle = sum(max(max(w[g] for w in work), (sum(w[g] for w in work) + commit_cpu / G) / cores) for g in range(G))
+    else:
+        idle = run_cpu / min(P, cores)
+    waits = [(t["gather"] + t["stop"] + t["migrate"]) / t["wall"] for t in timing]
+    rows.append(dict(mode=mode, P=P, rep=int(rep), load=load, evaluations=evals, wall=wall, evals_per_s=evals / wall,
+                     cpu_us_per_eval=1e6 * run_cpu / evals, evals_per_cpu_s_per_rank=evals / run_cpu,
+                     wait_fraction=max(waits), commit_wall_fraction=commit_wall / wall,
+                     commit_cpu_fraction=commit_cpu / run_cpu, idle_seconds=idle, idle_evals_per_s=evals / idle,
+                     command_cpu=user + sys_))
+keys = list(rows[0].keys())
+print(",".join(keys))
+for r in rows:
+    print(",".join(f"{r[k]:.4g}" if isinstance(r[k], float) else str(r[k]) for k in keys))
+print()
+for mode in sorted({r["mode"] for r in rows}):
+    best = {}
+    for r in rows:
+        if r["mode"] != mode:
+            continue
+        b = best.setdefault(r["P"], dict(evals_per_s=0, idle_evals_per_s=0, loads=[], cpu=[]))
+        b["evals_per_s"] = max(b["evals_per_s"], r["evals_per_s"])
+        b["idle_evals_per_s"] = max(b["idle_evals_per_s"], r["idle_evals_per_s"])
+        b["loads"].append(r["load"])
+        b["cpu"].append(r["cpu_us_per_eval"])
+    if 1 not in best:
+        continue
+    for P in sorted(best):
+        b, one = best[P], best[1]
+        print(f"{mode} P={P}: measured {b['evals_per_s']:.0f} evals/s, ratio {b['evals_per_s'] / one['evals_per_s']:.2f}"
+              f" (load {min(b['loads']):.1f}-{max(b['loads']):.1f}); idle estimate {b['idle_evals_per_s']:.0f} evals/s,"
+              f" ratio {b['idle_evals_per_s'] / one['idle_evals_per_s']:.2f}; CPU {min(b['cpu']):.0f}-{max(b['cpu']):.0f}"
+              f" us/eval")

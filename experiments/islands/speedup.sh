@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# The islands' speed-up on this machine in one command: P = 1 and 2 MPI ranks (and 4: set
+# PS="1 2 4"), and the same archipelagos in threads, REPS runs each (best kept), the ES on
+# molds/cup.yaml, EVALS evaluations per island. Prints one CSV row per run, then the ratios of
+# evaluations/s against P = 1: measured (best wall) and "idle" (a load-independent estimate from
+# each rank's CPU seconds per generation, experiments/islands/speedup.py), with the load.
+#   experiments/islands/speedup.sh            # build/mtcs, REPS=3, EVALS=12000, PS="1 2"
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+MTCS=${MTCS:-build/mtcs}
+MOLD=${MOLD:-molds/cup.yaml}
+REPS=${REPS:-3}
+EVALS=${EVALS:-12000}
+PS=${PS:-1 2}
+MODES=${MODES:-mpi threads}
+MPIRUN=${MPIRUN:-mpirun --allow-run-as-root --oversubscribe}
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+echo "uptime before: $(uptime)" >&2
+for rep in $(seq 1 "$REPS"); do
+  for P in $PS; do
+    for mode in $MODES; do
+      run=$out/$mode-$P-$rep
+      args="optimize $MOLD --islands $P --seed 1 --evaluations $((EVALS * P)) --migration-every 5 --verbose --out $run"
+      if [ "$mode" = mpi ]; then cmd="$MPIRUN -np $P $MTCS $args --threads 1"; else cmd="$MTCS $args --threads $P"; fi
+      cut -d' ' -f1 /proc/loadavg >"$run.load"
+      MTCS_ISLANDS_WORK_FILE=$run.work /usr/bin/time -o "$run.time" -f "%U %S" $cmd >/dev/null 2>"$run.err"
+    done
+  done
+done
+echo "uptime after: $(uptime)" >&2
+python3 experiments/islands/speedup.py "$out" "$(nproc)"

@@ -1,0 +1,84 @@
+#include "island_writer.h"
+
+#include <time.h>
+
+#include <chrono>
+
+namespace mtcs::run {
+namespace {
+
+double thread_cpu_seconds() {
+  timespec t{};
+  ::clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+}  // namespace
+
+IslandWriter::IslandWriter(store::RunStore& db) : db_(db), thread_([this] { loop(); }) {}
+
+IslandWriter::~IslandWriter() {
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    closing_ = true;
+  }
+  changed_.notify_all();
+  thread_.join();
+}
+
+void IslandWriter::rethrow_failure() {
+  if (failed_) std::rethrow_exception(failed_);
+}
+
+void IslandWriter::push(store::IslandsGeneration g) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  changed_.wait(lock, [&] { return failed_ || queued_.size() < kMaxQueued; });
+  rethrow_failure();
+  queued_.push_back(std::move(g));
+  lock.unlock();
+  changed_.notify_all();
+}
+
+void IslandWriter::finish() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  changed_.wait(lock, [&] { return failed_ || (queued_.empty() && !writing_); });
+  rethrow_failure();
+}
+
+IslandWriter::Times IslandWriter::times() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return times_;
+}
+
+void IslandWriter::loop() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  for (;;) {
+    changed_.wait(lock, [&] { return closing_ || !queued_.empty(); });
+    if (queued_.empty() || failed_) return;  // closing
+    std::vector<store::IslandsGeneration> batch;
+    batch.swap(queued_);
+    writing_ = true;
+    lock.unlock();
+    changed_.notify_all();  // room in the queue
+    const auto t0 = std::chrono::steady_clock::now();
+    const double cpu0 = thread_cpu_seconds();
+    std::exception_ptr failure;
+    try {
+      db_.save_islands(batch);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double cpu = thread_cpu_seconds() - cpu0;
+    lock.lock();
+    times_.wall += wall;
+    times_.cpu += cpu;
+    ++times_.transactions;
+    writing_ = false;
+    if (failure) failed_ = failure;
+    changed_.notify_all();
+    if (failed_) return;
+  }
+}
+
+}  // namespace mtcs::run
