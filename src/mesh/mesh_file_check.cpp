@@ -243,7 +243,9 @@ void check_ply(const std::string& path, const std::string& text) {
       // dereference).
       if (!declared.insert(element + " " + n).second)
         fail(path, lineno, "property " + n + " of element " + element + " is declared twice");
-      const bool coordinate = element == "vertex" && (n == "x" || n == "y" || n == "z");
+      // CGAL reads an element named "vertices" as the vertex element too (IO/PLY.h).
+      const bool vertex_element = element == "vertex" || element == "vertices";
+      const bool coordinate = vertex_element && (n == "x" || n == "y" || n == "z");
       if (coordinate && type == "list") fail(path, lineno, "vertex property " + n + " must be float or double, not a list");
       const bool real = type == "float" || type == "double" || type == "float32" || type == "float64";
       if (coordinate && !real) fail(path, lineno, "vertex property " + n + " must be float or double, not " + type);

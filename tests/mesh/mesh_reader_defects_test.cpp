@@ -172,3 +172,15 @@ TEST_CASE("mesh reader defect: a PLY property is named by the word after its typ
                                         "property list uchar float y trailing\nproperty float z\nend_header\n0 1 0 0\n");
   CHECK_THAT(error_of(list), Catch::StartsWith(list + ":5: vertex property y must be float or double, not a list"));
 }
+
+// Fuzz crash #14 (mesh_ply, crash-2734376c, input kept as
+// tests/data/meshes/fuzz_crash_ply_vertices_int8_z.ply): "element vertices 16" with "property int8
+// z": CGAL takes an element named "vertices" for the vertex element, so the integer z met its
+// float reader (the null dereference of #5) past a check that looked at "vertex" only.
+TEST_CASE("mesh reader defect: a PLY element named vertices has its coordinates checked like vertex", "[mesh][fuzz-defect]") {
+  const std::string artifact = MTCS_TEST_DATA "/meshes/fuzz_crash_ply_vertices_int8_z.ply";
+  CHECK_THAT(error_of(artifact), Catch::Contains("vertex property z must be float or double, not int8"));
+  const auto path = write("vertices.ply", "ply\nformat ascii 1.0\nelement vertices 1\nproperty float x\n"
+                                          "property float y\nproperty short z\nend_header\n0 0 0\n");
+  CHECK_THAT(error_of(path), Catch::StartsWith(path + ":6: vertex property z must be float or double, not short"));
+}
