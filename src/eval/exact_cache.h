@@ -10,10 +10,10 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <unordered_map>
 #include <vector>
 
+#include "mtcs/geometry/exact_hash.h"
 #include "mtcs/geometry/primitives.h"
 
 namespace mtcs::eval {
@@ -22,14 +22,7 @@ namespace mtcs::eval {
 template <class Key>
 struct ExactKeyOps {
   std::size_t operator()(const Key& k) const {
-    std::uint64_t h = 0x9e3779b97f4a7c15ull ^ k.size();
-    for (const double v : k) {
-      std::uint64_t bits;
-      std::memcpy(&bits, &v, sizeof bits);
-      h = (h ^ bits) * 0xff51afd7ed558ccdull;
-      h ^= h >> 32;
-    }
-    return std::size_t(h);
+    return geometry::exact_bits_hash(k.data(), k.size(), k.size());
   }
   bool operator()(const Key& a, const Key& b) const {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;

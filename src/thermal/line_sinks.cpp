@@ -5,11 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <numbers>
 #include <stdexcept>
 
 #include "line_sink_model.h"
+#include "mtcs/geometry/exact_hash.h"
 
 namespace mtcs::thermal {
 
@@ -83,14 +83,7 @@ void LineSinkCache::clear() {
 
 template <std::size_t N>
 std::size_t LineSinkCache::KeyHash::operator()(const std::array<double, N>& k) const {
-  std::uint64_t h = 0x9e3779b97f4a7c15ull;
-  for (const double v : k) {
-    std::uint64_t bits;
-    std::memcpy(&bits, &v, sizeof bits);
-    h = (h ^ bits) * 0xff51afd7ed558ccdull;
-    h ^= h >> 32;
-  }
-  return std::size_t(h);
+  return geometry::exact_bits_hash(k.data(), N);
 }
 
 namespace {
