@@ -646,7 +646,7 @@ function drawDrillingMap(k) {
   const g = cv.getContext('2d');
   g.setTransform(ratio, 0, 0, ratio, 0, 0);
   g.fillStyle = '#fff'; g.fillRect(0, 0, W, H);
-  const m = { l: 42, r: 8, t: 8, b: 34 };
+  const m = { l: 42, r: 14, t: 8, b: 34 };
   const pw = W - m.l - m.r, ph = H - m.t - m.b;
   const cw = pw / dm.cols, ch = ph / dm.rows;
   for (let i = 0; i < dm.rows; ++i)
