@@ -46,7 +46,9 @@ DrillingMaps drilling_maps(const mold::MoldSpec& spec, const mold::Layout& layou
     EntryMap e;
     e.bore = bore.name();
     e.entry = bore.hole.p0;
-    e.direction = (bore.hole.p1 - bore.hole.p0).normalized();
+    const geometry::Vec3 axis = bore.hole.p1 - bore.hole.p0;
+    const bool has_axis = axis.norm() > 0;  // a zero-length hole has no direction to mark
+    if (has_axis) e.direction = axis.normalized();
     e.radius = bore.diameter / 2;
     e.length = bore.drilled_length;
     // Inside as voxel::part_access_map decides it: in a solid voxel, or in the mesh within one
@@ -56,8 +58,8 @@ DrillingMaps drilling_maps(const mold::MoldSpec& spec, const mold::Layout& layou
     at_entry.voxel_size = grid.voxel_size;
     at_entry.origin = e.entry - geometry::Vec3::Constant(0.5 * grid.voxel_size);
     e.pivot_inside = tree.touches_solid(e.entry) || voxel::voxelize(part, at_entry).count() > 0;
-    const auto cells = voxel::cells_of(out.sphere, e.direction);
-    e.cell = cells.front();
+    const auto cells = has_axis ? voxel::cells_of(out.sphere, e.direction) : std::vector<std::array<int, 2>>{};
+    if (!cells.empty()) e.cell = cells.front();
     if (e.pivot_inside) {
       e.cells.assign(std::size_t(options.rows) * std::size_t(options.cols), 1);
     } else {

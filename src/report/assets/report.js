@@ -668,9 +668,11 @@ function drawDrillingMap(k) {
   const phi = Math.acos(Math.max(-1, Math.min(1, dz))) * 180 / Math.PI;
   const gamma = ((Math.atan2(dy, dx) * 180 / Math.PI) + 360) % 360;
   const x = m.l + (gamma / 360) * pw, y = m.t + (phi / 180) * ph;
-  g.beginPath(); g.arc(x, y, 5, 0, 2 * Math.PI);
-  g.fillStyle = e.direction_free ? '#fff' : '#111'; g.fill();
-  g.lineWidth = 2; g.strokeStyle = '#111'; g.stroke();
+  if (dx || dy || dz) {
+    g.beginPath(); g.arc(x, y, 5, 0, 2 * Math.PI);
+    g.fillStyle = e.direction_free ? '#fff' : '#111'; g.fill();
+    g.lineWidth = 2; g.strokeStyle = '#111'; g.stroke();
+  }
   const total = dm.rows * dm.cols;
   $('drilling-info').textContent = e.inside
     ? `${e.bore}: the entry lies inside the part, no direction is free.`
@@ -680,7 +682,7 @@ function drawDrillingMap(k) {
   cv.dataset.entry = String(k);
 }
 function showDrillingEntry(k) {
-  if (!drillingMaps || k < 0) return;
+  if (!drillingMaps || k < 0 || k >= drillingMaps.entries.length) return;
   $('drilling-entry').value = String(k);
   if ($('drilling-panel').open) drawDrillingMap(k);
 }
@@ -695,7 +697,7 @@ if (drillingMaps) {
   $('drilling-entry').replaceChildren(...dm.entries.map((e, k) => el('option', { value: String(k),
     text: `${e.bore}: ${(100 * e.free / total).toFixed(1)} % free, direction ${e.direction_free ? 'free' : 'BLOCKED'}` })));
   $('drilling-entry').addEventListener('change', () => showDrillingEntry(Number($('drilling-entry').value)));
-  $('drilling-panel').addEventListener('toggle', () => { if ($('drilling-panel').open) drawDrillingMap(Number($('drilling-entry').value || 0)); });
+  $('drilling-panel').addEventListener('toggle', () => { if ($('drilling-panel').open) showDrillingEntry(Number($('drilling-entry').value || 0)); });
   // A bore of the table (of the member the maps are of) draws its map when hovered or clicked.
   const entryOfRow = (event) => {
     const row = event.target.closest('#bores-table tbody tr');
