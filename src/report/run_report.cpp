@@ -7,7 +7,10 @@
 //   convergence (convergence.h)
 //   temperature {member, tier, unit, mesh, values (base64 float32 per vertex), min, max, mean,
 //                std, hottest} or null
-//   drilling_maps: null (slot for the accessibility issue)
+//   drilling_maps {member, part, grid, voxel_size, solid_voxels, rows, cols, seconds,
+//                  entries [{bore, entry, direction, radius, length, inside, free, cell,
+//                            direction_free, map (base64 bytes, rows x cols, 1 = blocked)}]}
+//                 or null (no cavity with volume)
 
 #include "mtcs/report/run_report.h"
 
@@ -19,6 +22,7 @@
 #include "convergence.h"
 #include "layout_json.h"
 #include "base64.h"
+#include "mtcs/report/drilling_maps.h"
 #include "mtcs/eval/cavity_temperature.h"
 #include "mtcs/io/input_error.h"
 #include "mtcs/opt/sms_emoa.h"
@@ -64,6 +68,25 @@ Json temperature_json(const mold::Scene& scene, const mold::Layout& layout, int 
           {"mesh", mesh_json(t.field.surface)}, {"values", base64_floats(values)}, {"singular", singular}, {"min", lo},
           {"max", hi},               {"mean", t.summary.mean},  {"std", t.summary.std},
           {"hottest", vec_json(t.hottest)}, {"seconds", t.seconds}};
+}
+
+// The shown layout's drilling maps: phi (from +z) down the rows, gamma (about z) across.
+Json drilling_maps_json(const DrillingMaps& maps, int member) {
+  Json entries = Json::array();
+  for (const EntryMap& e : maps.entries)
+    entries.push_back({{"bore", e.bore},
+                       {"entry", vec_json(e.entry)},
+                       {"direction", vec_json(e.direction)},
+                       {"radius", e.radius},
+                       {"length", e.length},
+                       {"inside", e.pivot_inside},
+                       {"free", e.free_cells},
+                       {"cell", e.cell},
+                       {"direction_free", e.direction_free},
+                       {"map", base64(e.cells.data(), e.cells.size())}});
+  return {{"member", member},         {"part", maps.part},          {"grid", maps.grid},
+          {"voxel_size", maps.voxel_size}, {"solid_voxels", maps.solid_voxels}, {"rows", maps.sphere.rows},
+          {"cols", maps.sphere.cols}, {"seconds", maps.seconds},    {"entries", entries}};
 }
 
 }  // namespace
@@ -146,6 +169,12 @@ RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
     report.temperature = true;
   }
   data["drilling_maps"] = nullptr;
+  if (options.drilling_maps && has_drilling_part(session.spec())) {
+    const DrillingMaps maps = drilling_maps(session.spec(), shown);
+    data["drilling_maps"] = drilling_maps_json(maps, report.member);
+    report.drilling_maps = maps.entries.size();
+    report.drilling_seconds = maps.seconds;
+  }
   report.html = html_page(data["title"].get<std::string>() + " (" + run_dir + ")", data.dump());
   return report;
 }

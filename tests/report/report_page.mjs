@@ -5,7 +5,10 @@
 //     pixels off the background and the colour of circuit 0's bores among them;
 //   - clicking another point of the Pareto front loads that layout: the label and the bore
 //     count in the DOM change to the clicked member's; on overlapping points, repeated clicks
-//     step through every member of the stack and a list names them.
+//     step through every member of the stack and a list names them;
+//   - the drilling-map panel is there, drawn only once asked (not at load), and clicking a bore of
+//     the table draws that bore's map: its canvas shows free and blocked cells in the shares the
+//     data gives.
 // Usage: node report_page.mjs REPORT.html [--screenshot PAGE.png] [--width W --height H]
 // Exit 0: passed; 1: failed; 77: skipped (no chromium on this machine).
 import fs from 'node:fs';
@@ -191,6 +194,36 @@ try {
       const listed = await page.evaluate(() => [...document.querySelectorAll('#front-pick button')].map((b) => Number(b.dataset.rank)));
       check(listed.includes(closest.a) && listed.includes(closest.b), `the list under the plots names both (${listed.join(', ')})`);
     }
+  }
+  // The drilling maps: lazy (nothing drawn at load), then a bore row's click draws its map.
+  const drilling = await page.evaluate(() => {
+    const dm = window.mtcsReport.data.drilling_maps;
+    return { present: !!document.getElementById('drilling-panel'), maps: !!dm, drawnAtLoad: 'entry' in document.getElementById('drilling-map').dataset,
+      member: dm ? dm.member : null };
+  });
+  check(drilling.present && drilling.maps, 'the page has a drilling-map panel and maps (the plate\'s cavity box)');
+  check(!drilling.drawnAtLoad, 'no drilling map is drawn before it is asked for');
+  if (drilling.maps) {
+    await page.evaluate((m) => window.mtcsReport.select(m), drilling.member);
+    const row = await page.$('#bores-table tbody tr:last-child');
+    await row.click();
+    const map = await page.evaluate(() => {
+      const cv = document.getElementById('drilling-map');
+      const dm = window.mtcsReport.data.drilling_maps;
+      const k = Number(cv.dataset.entry);
+      const d = cv.getContext('2d').getImageData(0, 0, cv.width, cv.height).data;
+      let free = 0, blocked = 0;
+      const near = (i, c) => Math.abs(d[i] - c[0]) + Math.abs(d[i + 1] - c[1]) + Math.abs(d[i + 2] - c[2]) < 12;
+      for (let i = 0; i < d.length; i += 4) { if (near(i, [0xbf, 0xe3, 0xc0])) ++free; else if (near(i, [0xc8, 0x45, 0x3a])) ++blocked; }
+      const e = dm.entries[k];
+      return { open: document.getElementById('drilling-panel').open, bore: e ? e.bore : null, row: document.querySelector('#bores-table tbody tr:last-child td').textContent,
+        free, blocked, n: d.length / 4, share: e ? e.free / (dm.rows * dm.cols) : -1, info: document.getElementById('drilling-info').textContent };
+    });
+    console.log(`drilling map of ${map.bore}: ${map.free} free and ${map.blocked} blocked pixels of ${map.n} (data: ${(100 * map.share).toFixed(1)} % free); "${map.info}"`);
+    check(map.open && map.bore === map.row, 'clicking a bore of the table opens the panel on its drilling map');
+    const drawnShare = map.free / Math.max(1, map.free + map.blocked);
+    check(map.free + map.blocked > 0.3 * map.n && Math.abs(drawnShare - map.share) < 0.03,
+      `the drilling-map canvas is not blank and shows the free share of the data (${(100 * drawnShare).toFixed(1)} % drawn)`);
   }
   check(errors.length === 0, `still no console errors after the clicks${errors.length ? ': ' + errors.join(' | ') : ''}`);
   if (screenshot) {

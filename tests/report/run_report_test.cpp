@@ -11,9 +11,13 @@
 
 #include "cli/run_mtcs.h"
 #include "mtcs/io/input_error.h"
+#include "mtcs/mesh/triangle_mesh.h"
+#include "mtcs/mold/mold_spec.h"
 #include "mtcs/report/layout_export.h"
 #include "mtcs/report/run_report.h"
 #include "report/shop_member.h"
+#include "mtcs/voxel/access_map_cache.h"
+#include "mtcs/voxel/part_map.h"
 
 namespace {
 
@@ -47,6 +51,21 @@ std::vector<std::vector<std::string>> read_csv(const path& p) {
     for (std::string cell; std::getline(cells, cell, ',');) rows.back().push_back(cell);
   }
   return rows;
+}
+
+// The page's base64 back to bytes.
+std::vector<std::uint8_t> unbase64(const std::string& text) {
+  const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::vector<std::uint8_t> out;
+  unsigned bits = 0;
+  int count = 0;
+  for (const char c : text) {
+    if (c == '=') break;
+    bits = (bits << 6) | unsigned(alphabet.find(c));
+    count += 6;
+    if (count >= 8) out.push_back(std::uint8_t(bits >> (count -= 8)));
+  }
+  return out;
 }
 
 }  // namespace
@@ -129,6 +148,47 @@ TEST_CASE("report: the cavity temperature equals the thermal command's for the b
   CHECK(t["std"].get<double>() == Approx(expected["std"].get<double>()).epsilon(1e-12));
   CHECK(t["min"].get<double>() <= t["mean"].get<double>());
   CHECK(t["mean"].get<double>() <= t["max"].get<double>());
+}
+
+TEST_CASE("report: each bore entry's drilling map is the access module's map of that bore pivoting there", "[report]") {
+  mtcs::report::ReportOptions options;
+  options.temperature = false;
+  const auto r = mtcs::report::run_report(plate_run().string(), options);
+  const json data = page_data(r.html);
+  const json& dm = data["drilling_maps"];
+  REQUIRE(dm.is_object());
+  const json& bores = data["members"][dm["member"].get<std::size_t>()]["layout"]["bores"];
+  REQUIRE(dm["entries"].size() == bores.size());
+  CHECK(r.drilling_maps == bores.size());
+  // The reference: the plate's cavity box voxelised by `mtcs access-map`'s own path on the grid
+  // the page names, the bore (from the page's layout, not the maps) as its straight tool.
+  const auto spec = mtcs::mold::load_mold_spec(std::string(MTCS_SOURCE_DIR) + "/molds/plate.yaml");
+  const mtcs::mesh::TriangleMesh part = mtcs::mesh::box_mesh(*spec.cavity->box);
+  const mtcs::voxel::SphereGrid sphere{dm["rows"].get<int>(), dm["cols"].get<int>()};
+  std::size_t blocked_somewhere = 0;
+  for (std::size_t i = 0; i < bores.size(); ++i) {
+    const json& e = dm["entries"][i];
+    const json& b = bores[i];
+    CHECK(e["bore"] == b["name"]);
+    const mtcs::voxel::Vec3 p0(b["p0"][0], b["p0"][1], b["p0"][2]), p1(b["p1"][0], b["p1"][1], b["p1"][2]);
+    for (int k = 0; k < 3; ++k) CHECK(e["entry"][k].get<double>() == Approx(p0[k]).margin(1e-9));
+    CHECK(e["radius"].get<double>() == b["diameter"].get<double>() / 2);
+    const mtcs::voxel::Vec3 entry(e["entry"][0], e["entry"][1], e["entry"][2]);
+    const auto ref = mtcs::voxel::part_access_map(part, dm["grid"].get<int>(), entry,
+                                                  mtcs::voxel::bore_tool(e["radius"], e["length"]), sphere, {});
+    CHECK(ref.grid.voxel_size == dm["voxel_size"].get<double>());
+    CHECK(ref.solid_voxels == dm["solid_voxels"].get<std::size_t>());
+    REQUIRE_FALSE(ref.pivot_inside);
+    const auto cells = unbase64(e["map"]);
+    CHECK(cells == ref.map.cells);
+    CHECK(e["free"].get<long>() == long(ref.map.cells.size()) - ref.map.collisions());
+    bool free = false;
+    for (const auto& c : mtcs::voxel::cells_of(sphere, (p1 - p0).normalized())) free = free || !ref.map.collides(c[0], c[1]);
+    CHECK(e["direction_free"].get<bool>() == free);
+    blocked_somewhere += ref.map.collisions() > 0;
+  }
+  CHECK(dm["solid_voxels"].get<std::size_t>() > 0);  // the 3 mm plate did not fall between voxel centres
+  CHECK(blocked_somewhere > 0);                       // so the maps can differ at all
 }
 
 TEST_CASE("report: a missing run, generation or member is an input error naming the option", "[report]") {

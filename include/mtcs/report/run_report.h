@@ -15,6 +15,7 @@ struct ReportOptions {
   std::optional<int> member;      // its member shown first, by rank (0: the best; default)
   std::string mold;               // the run's mold at a new place (as replay --mold)
   bool temperature = true;        // the cavity temperature of the member shown first (one solve)
+  bool drilling_maps = true;      // the drilling maps of its bore entries (drilling_maps.h)
 };
 
 struct RunReport {
@@ -26,6 +27,8 @@ struct RunReport {
   std::size_t generations = 0;  // in the convergence charts
   std::size_t bores = 0;     // of the member shown first
   bool temperature = false;  // the page has a temperature field
+  std::size_t drilling_maps = 0;  // bore entries with a drilling map on the page
+  double drilling_seconds = 0;    // voxelising the part and computing those maps
   std::string note;          // what to tell the user about the mold (moved, edited)
 };
 

@@ -625,6 +625,97 @@ function drawConvergence() {
   c3.root.append(Object.assign(svg('title'), { textContent: `reference point ${cv.hv_ref.map((v) => fmt(v)).join(', ')} (objective / its scale)` }));
 }
 
+// ---------------------------------------------------------------- drilling maps (2-D canvas)
+// Each bore entry's accessibility map (data.drilling_maps, of one member's layout): the bore as a
+// straight tool pivoting at its entry, which directions miss the part. Drawn as
+// `mtcs access-map --out am.png` draws it (gamma about z across, phi from +z down), only when
+// the panel is open: the first frame does not wait for it.
+const FREE_COLOR = '#bfe3c0', BLOCKED_COLOR = '#c8453a';
+const drillingMaps = data.drilling_maps;
+const drillingCells = new Map();  // entry index -> decoded cells, on first draw
+function drillingEntry(k) {
+  if (!drillingCells.has(k)) drillingCells.set(k, decode(drillingMaps.entries[k].map, Uint8Array));
+  return drillingCells.get(k);
+}
+function drawDrillingMap(k) {
+  const dm = drillingMaps, e = dm.entries[k], cells = drillingEntry(k);
+  const cv = $('drilling-map');
+  const ratio = Math.min(window.devicePixelRatio || 1, 2);
+  const W = cv.clientWidth || 360, H = cv.clientHeight || 200;
+  cv.width = Math.round(W * ratio); cv.height = Math.round(H * ratio);
+  const g = cv.getContext('2d');
+  g.setTransform(ratio, 0, 0, ratio, 0, 0);
+  g.fillStyle = '#fff'; g.fillRect(0, 0, W, H);
+  const m = { l: 42, r: 14, t: 8, b: 34 };
+  const pw = W - m.l - m.r, ph = H - m.t - m.b;
+  const cw = pw / dm.cols, ch = ph / dm.rows;
+  for (let i = 0; i < dm.rows; ++i)
+    for (let j = 0; j < dm.cols; ++j) {
+      g.fillStyle = cells[i * dm.cols + j] ? BLOCKED_COLOR : FREE_COLOR;
+      g.fillRect(m.l + j * cw, m.t + i * ch, Math.ceil(cw), Math.ceil(ch));
+    }
+  g.strokeStyle = '#555'; g.lineWidth = 1; g.strokeRect(m.l, m.t, pw, ph);
+  g.fillStyle = '#1d2330'; g.font = '11px system-ui, sans-serif';
+  g.textAlign = 'center'; g.textBaseline = 'top';
+  for (let a = 0; a <= 360; a += 90) g.fillText(`${a}`, m.l + (a / 360) * pw, m.t + ph + 3);
+  g.fillText('\u03b3: angle about z (deg)', m.l + pw / 2, m.t + ph + 18);
+  g.textAlign = 'right'; g.textBaseline = 'middle';
+  for (let a = 0; a <= 180; a += 45) g.fillText(`${a}`, m.l - 4, m.t + (a / 180) * ph);
+  g.save(); g.translate(11, m.t + ph / 2); g.rotate(-Math.PI / 2); g.textAlign = 'center';
+  g.fillText('\u03c6: from +z (deg)', 0, 0); g.restore();
+  // The bore's own direction, at its exact angles: a ring, filled when that direction is free.
+  const [dx, dy, dz] = e.direction;
+  const phi = Math.acos(Math.max(-1, Math.min(1, dz))) * 180 / Math.PI;
+  const gamma = ((Math.atan2(dy, dx) * 180 / Math.PI) + 360) % 360;
+  const x = m.l + (gamma / 360) * pw, y = m.t + (phi / 180) * ph;
+  if (dx || dy || dz) {
+    g.beginPath(); g.arc(x, y, 5, 0, 2 * Math.PI);
+    g.fillStyle = e.direction_free ? '#fff' : '#111'; g.fill();
+    g.lineWidth = 2; g.strokeStyle = '#111'; g.stroke();
+  }
+  const total = dm.rows * dm.cols;
+  $('drilling-info').textContent = e.inside
+    ? `${e.bore}: the entry lies inside the part, no direction is free.`
+    : `${e.bore}: entry (${e.entry.map((v) => fmt(v, 5)).join(', ')}) mm, tool \u2300 ${fmt(2 * e.radius)} mm \u00d7 ${fmt(e.length, 5)} mm; ` +
+      `${e.free} of ${total} directions free (${(100 * e.free / total).toFixed(1)} %); its own direction ` +
+      `(\u03c6 ${phi.toFixed(1)}\u00b0, \u03b3 ${gamma.toFixed(1)}\u00b0) is ${e.direction_free ? 'free' : 'blocked'}.`;
+  cv.dataset.entry = String(k);
+}
+function showDrillingEntry(k) {
+  if (!drillingMaps || k < 0 || k >= drillingMaps.entries.length) return;
+  $('drilling-entry').value = String(k);
+  if ($('drilling-panel').open) drawDrillingMap(k);
+}
+if (drillingMaps) {
+  const dm = drillingMaps, total = dm.rows * dm.cols;
+  const blocked = dm.entries.filter((e) => !e.direction_free).length;
+  $('drilling-caption').textContent = `(${dm.entries.length} entries${blocked ? `, ${blocked} blocked` : ''})`;
+  $('drilling-about').replaceChildren(`Of member ${dm.member}. Each bore as a straight tool (its radius and drilled length) pivoting at its entry: ` +
+    `which directions miss the part (${dm.part}, ${dm.grid}\u00b3 voxels of ${fmt(dm.voxel_size)} mm; ${dm.rows} \u00d7 ${dm.cols} cells of ` +
+    `${fmt(180 / dm.rows)}\u00b0 \u00d7 ${fmt(360 / dm.cols)}\u00b0).`, el('br'),
+    el('span', { class: 'key free-dir' }), ' free ', el('span', { class: 'key blocked-dir' }), ' blocked \u25cb the bore\u2019s direction (filled black: blocked). Hover or click a bore in the table to draw its map.');
+  $('drilling-entry').replaceChildren(...dm.entries.map((e, k) => el('option', { value: String(k),
+    text: `${e.bore}: ${(100 * e.free / total).toFixed(1)} % free, direction ${e.direction_free ? 'free' : 'BLOCKED'}` })));
+  $('drilling-entry').addEventListener('change', () => showDrillingEntry(Number($('drilling-entry').value)));
+  $('drilling-panel').addEventListener('toggle', () => { if ($('drilling-panel').open) showDrillingEntry(Number($('drilling-entry').value || 0)); });
+  // A bore of the table (of the member the maps are of) draws its map when hovered or clicked.
+  const entryOfRow = (event) => {
+    const row = event.target.closest('#bores-table tbody tr');
+    if (!row || shown !== dm.member) return -1;
+    const name = row.cells[0].textContent;
+    return dm.entries.findIndex((e) => e.bore === name);
+  };
+  $('bores-table').addEventListener('mouseover', (event) => showDrillingEntry(entryOfRow(event)));
+  $('bores-table').addEventListener('click', (event) => {
+    const k = entryOfRow(event);
+    if (k < 0) return;
+    $('drilling-panel').open = true;
+    showDrillingEntry(k);
+  });
+} else {
+  $('drilling-caption').textContent = '(none: no cavity with volume)';
+}
+
 // ---------------------------------------------------------------- keys and start
 window.addEventListener('keydown', (e) => {
   if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement || e.ctrlKey || e.metaKey || e.altKey) return;
