@@ -51,13 +51,7 @@ DrillingMaps drilling_maps(const mold::MoldSpec& spec, const mold::Layout& layou
     if (has_axis) e.direction = axis.normalized();
     e.radius = bore.diameter / 2;
     e.length = bore.drilled_length;
-    // Inside as voxel::part_access_map decides it: in a solid voxel, or in the mesh within one
-    // voxel of the entry (which a coarse grid can miss near the surface).
-    voxel::GridSpec at_entry;
-    at_entry.size = {1, 1, 1};
-    at_entry.voxel_size = grid.voxel_size;
-    at_entry.origin = e.entry - geometry::Vec3::Constant(0.5 * grid.voxel_size);
-    e.pivot_inside = tree.touches_solid(e.entry) || voxel::voxelize(part, at_entry).count() > 0;
+    e.pivot_inside = voxel::pivot_inside(part, tree, grid, e.entry);
     const auto cells = has_axis ? voxel::cells_of(out.sphere, e.direction) : std::vector<std::array<int, 2>>{};
     if (!cells.empty()) e.cell = cells.front();
     if (e.pivot_inside) {

@@ -42,19 +42,22 @@ std::string tool_problem(const Tool& tool) {
   return "";
 }
 
+bool pivot_inside(const mesh::TriangleMesh& part, const Octree& tree, const GridSpec& grid, const Vec3& pivot) {
+  // The mesh itself: a single-voxel grid centred on the pivot (up to one rounding of its centre).
+  GridSpec at_pivot;
+  at_pivot.size = {1, 1, 1};
+  at_pivot.voxel_size = grid.voxel_size;
+  at_pivot.origin = pivot - Vec3::Constant(0.5 * at_pivot.voxel_size);
+  return tree.touches_solid(pivot) || voxelize(part, at_pivot).count() > 0;
+}
+
 PartMap part_access_map(const mesh::TriangleMesh& part, int n, const Vec3& pivot, const Tool& tool, const SphereGrid& sphere,
                         const AmOptions& options) {
   PartMap out;
   out.grid = part_grid(part, n);
   const Octree tree(voxelize(part, out.grid));
   out.solid_voxels = tree.solid_voxels();
-  // In a solid voxel, or inside the mesh itself (a single-voxel grid centred on the pivot, up to
-  // one rounding of its centre), which a coarse grid can miss near the surface.
-  GridSpec at_pivot;
-  at_pivot.size = {1, 1, 1};
-  at_pivot.voxel_size = out.grid.voxel_size;
-  at_pivot.origin = pivot - Vec3::Constant(0.5 * at_pivot.voxel_size);
-  out.pivot_inside = tree.touches_solid(pivot) || voxelize(part, at_pivot).count() > 0;
+  out.pivot_inside = pivot_inside(part, tree, out.grid, pivot);
   if (!out.pivot_inside) out.map = compute_access_map(tree, pivot, tool, sphere, options);
   return out;
 }

@@ -39,6 +39,10 @@ struct PartMap {
   bool pivot_inside = false;  // in the closed box of a solid voxel or inside the mesh: no map
 };
 
+// Whether `pivot` is inside the part: in a solid voxel of `tree` (the part on `grid`), or inside
+// the mesh itself, which a coarse grid can miss near the surface.
+bool pivot_inside(const mesh::TriangleMesh& part, const Octree& tree, const GridSpec& grid, const Vec3& pivot);
+
 // Voxelises `part` (closed, checked by the caller) on part_grid(part, n) and computes the map
 // of `tool` pivoting at `pivot` on `sphere`, unless the pivot is inside the part.
 PartMap part_access_map(const mesh::TriangleMesh& part, int n, const Vec3& pivot, const Tool& tool, const SphereGrid& sphere,
