@@ -1,6 +1,7 @@
 #include "mtcs/run/shop_layout.h"
 
 #include <cmath>
+#include <vector>
 
 #include "holes.h"
 #include "mtcs/io/number_text.h"
@@ -32,6 +33,29 @@ bool on_run(const Vec3& a, const Vec3& b, const Vec3& c, double tol) {
   if (len2 == 0) return (b - a).norm() <= tol;
   const double t = (b - a).dot(ac) / len2;
   return t >= 0 && t <= 1 && (a + t * ac - b).norm() <= tol;
+}
+
+// Waypoints of one circuit that share a coordinate and move together when rounding is undone:
+// one hole drilled along the other axes. Runs touching a block face stay put (ports keep their faces).
+struct Run {
+  std::size_t circuit;
+  int axis;
+  std::size_t first, last;
+};
+
+std::vector<Run> movable_runs(const mold::Genome& g, const geometry::Box& box) {
+  std::vector<Run> runs;
+  for (std::size_t ci = 0; ci < g.circuits.size(); ++ci) {
+    const auto& w = g.circuits[ci].waypoints;
+    for (int k = 0; k < 3; ++k)
+      for (const auto& [first, last] : aligned_runs(w, k)) {
+        bool on_face = false;
+        for (std::size_t m = first; m < last; ++m)
+          on_face = on_face || std::abs(w[m][k] - box.min[k]) <= 1e-9 || std::abs(w[m][k] - box.max[k]) <= 1e-9;
+        if (!on_face) runs.push_back({ci, k, first, last});
+      }
+  }
+  return runs;
 }
 
 }  // namespace
@@ -75,30 +99,25 @@ mold::Genome shop_layout(const MoldProblem& problem, const mold::Scene& scene, c
   mold::Genome g = shop_layout(scene, genome, tolerance);
   opt::Score score = problem.evaluate(problem.encode(g));
   if (score.feasible || !problem.evaluate(problem.encode(genome)).feasible) return g;
-  const geometry::Box& box = scene.block_bounds();
+  // Rounding pushed a hole across a clearance: step runs one rounding step at a time, keeping a
+  // step that lowers the violation, until the layout is feasible again (a few passes at most).
   for (int pass = 0; pass < 4 && !score.feasible; ++pass) {
     bool moved = false;
-    for (auto& c : g.circuits)
-      for (int k = 0; k < 3 && !score.feasible; ++k)
-        for (const auto& [first, last] : aligned_runs(c.waypoints, k)) {
-          // Ports keep their faces.
-          bool on_face = false;
-          for (std::size_t m = first; m < last; ++m)
-            on_face = on_face || std::abs(c.waypoints[m][k] - box.min[k]) <= 1e-9 ||
-                      std::abs(c.waypoints[m][k] - box.max[k]) <= 1e-9;
-          if (on_face) continue;
-          for (const double step : {tolerance, -tolerance}) {
-            const mold::Circuit before = c;
-            for (std::size_t m = first; m < last; ++m) c.waypoints[m][k] = io::round_to(c.waypoints[m][k] + step, tolerance);
-            const opt::Score shifted = problem.evaluate(problem.encode(g));
-            if (shifted.violation < score.violation) {
-              score = shifted, moved = true;
-              break;
-            }
-            c = before;
-          }
-          if (score.feasible) break;
+    for (const Run& run : movable_runs(g, scene.block_bounds())) {
+      if (score.feasible) break;
+      mold::Circuit& c = g.circuits[run.circuit];
+      for (const double step : {tolerance, -tolerance}) {
+        const mold::Circuit before = c;
+        for (std::size_t m = run.first; m < run.last; ++m)
+          c.waypoints[m][run.axis] = io::round_to(c.waypoints[m][run.axis] + step, tolerance);
+        const opt::Score shifted = problem.evaluate(problem.encode(g));
+        if (shifted.violation < score.violation) {
+          score = shifted, moved = true;
+          break;
         }
+        c = before;
+      }
+    }
     if (!moved) break;
   }
   return g;
