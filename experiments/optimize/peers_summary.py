@@ -101,7 +101,9 @@ def anytime(trace_path, png, title):
 
 def main(d):
     lines = []
-    for path in sorted(glob.glob(os.path.join(d, "results_*.csv")), key=lambda p: (int(re.search(r"_(\d+)\.csv$", p).group(1)), p)):
+    # results_MOLD_BUDGET.csv only (variants such as results_MOLD_BUDGET_blend0.5.csv: compare.py).
+    paths = [p for p in glob.glob(os.path.join(d, "results_*.csv")) if re.search(r"results_(.+)_(\d+)\.csv$", p)]
+    for path in sorted(paths, key=lambda p: (int(re.search(r"_(\d+)\.csv$", p).group(1)), p)):
         m = re.search(r"results_(.+)_(\d+)\.csv$", path)
         mold, budget = m.group(1), m.group(2)
         rows = list(csv.DictReader(open(path)))

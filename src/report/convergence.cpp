@@ -62,4 +62,21 @@ Json convergence_json(const store::RunStore& db, const mold::MoldSpec& spec, con
   return out;
 }
 
+Json anytime_json(const run::AnytimeTrace& trace, const std::vector<double>& ref) {
+  Json out{{"generation", Json::array()}, {"evaluations", Json::array()}, {"seconds", Json::array()},
+           {"best_feasible", Json::array()}, {"best_so_far", Json::array()}, {"hypervolume", Json::array()},
+           {"hypervolume_so_far", Json::array()}, {"ref", ref}};
+  const auto finite_or_null = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
+  for (const run::AnytimeRow& r : trace.rows()) {
+    out["generation"].push_back(r.generation);
+    out["evaluations"].push_back(r.evaluations);
+    out["seconds"].push_back(r.seconds);
+    out["best_feasible"].push_back(finite_or_null(r.best_feasible));
+    out["best_so_far"].push_back(finite_or_null(r.best_so_far));
+    out["hypervolume"].push_back(r.hypervolume);
+    out["hypervolume_so_far"].push_back(r.hypervolume_so_far);
+  }
+  return out;
+}
+
 }  // namespace mtcs::report

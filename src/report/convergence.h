@@ -3,6 +3,7 @@
 // and median scalarised value, the feasible share and the hypervolume of the feasible front.
 
 #include "mtcs/mold/mold_spec.h"
+#include "mtcs/run/anytime_trace.h"
 #include "mtcs/store/run_store.h"
 #include "scene_json.h"
 
@@ -12,5 +13,11 @@ namespace mtcs::report {
 // reference point for the whole run: 1.1 x the largest scaled value any stored feasible front
 // reaches (plus 1e-9), so that the curve is comparable across generations; `hv_ref` gives it.
 Json convergence_json(const store::RunStore& db, const mold::MoldSpec& spec, const std::vector<std::string>& objectives);
+
+// The anytime curves (the rows of replay's anytime.csv): per stored generation evaluations,
+// seconds, the best feasible weighted objective and the feasible front's hypervolume, each also
+// as the best so far, against the run's own reference point `ref` (summary.json's, scaled): a
+// generation without a feasible layout has best null.
+Json anytime_json(const run::AnytimeTrace& trace, const std::vector<double>& ref);
 
 }  // namespace mtcs::report

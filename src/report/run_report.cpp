@@ -5,6 +5,8 @@
 //   members [{rank, objectives, value, feasible, violation, front, layout (layout_json.h),
 //             violations}]
 //   convergence (convergence.h)
+//   anytime {generation, evaluations, seconds, best_feasible, best_so_far, hypervolume,
+//            hypervolume_so_far, ref} (convergence.h; replay's anytime.csv)
 //   temperature {member, tier, unit, mesh, values (base64 float32 per vertex), min, max, mean,
 //                std, hottest} or null
 //   drilling_maps {member, part, grid, voxel_size, solid_voxels, rows, cols, seconds,
@@ -162,6 +164,8 @@ RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
   report.members = population.size();
   report.bores = shown.bores.size();
   data["convergence"] = convergence_json(db, session.spec(), names);
+  const run::MoldOptimizer optimizer(session.problem(), scene, session.config());
+  data["anytime"] = anytime_json(run::stored_anytime(optimizer, db), optimizer.scaled_reference());
   report.generations = summaries.size();
   data["temperature"] = nullptr;
   if (options.temperature && session.spec().cavity) {

@@ -22,6 +22,12 @@ void AnytimeTrace::add(const opt::Generation& g, const store::GenerationSummary&
   rows_.push_back(row);
 }
 
+AnytimeTrace stored_anytime(const MoldOptimizer& optimizer, const store::RunStore& db) {
+  AnytimeTrace trace(optimizer);
+  for (const auto& s : db.summaries()) trace.add(*db.generation(s.index), s);
+  return trace;
+}
+
 void AnytimeTrace::write_csv(const std::string& path) const {
   io::AtomicFile csv(path);
   csv.stream() << "generation,evaluations,seconds,best_feasible,best_so_far,hypervolume,hypervolume_so_far\n";

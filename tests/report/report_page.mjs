@@ -8,7 +8,9 @@
 //     step through every member of the stack and a list names them;
 //   - the drilling-map panel is there, drawn only once asked (not at load), and clicking a bore of
 //     the table draws that bore's map: its canvas shows free and blocked cells in the shares the
-//     data gives.
+//     data gives;
+//   - the anytime panel (best objective and hypervolume against evaluations and wall time) is
+//     empty at load and draws its four curves, one vertex per stored generation, once opened.
 // Usage: node report_page.mjs REPORT.html [--screenshot PAGE.png] [--width W --height H]
 // Exit 0: passed; 1: failed; 77: skipped (no chromium on this machine).
 import fs from 'node:fs';
@@ -225,6 +227,29 @@ try {
     check(map.free + map.blocked > 0.3 * map.n && Math.abs(drawnShare - map.share) < 0.03,
       `the drilling-map canvas is not blank and shows the free share of the data (${(100 * drawnShare).toFixed(1)} % drawn)`);
   }
+  // The anytime curves: lazy, then the summary's click draws them from the page's data.
+  const anytimeAtLoad = await page.evaluate(() => ({ present: !!document.getElementById('anytime-panel'),
+    plots: document.querySelectorAll('#anytime-plots svg').length }));
+  check(anytimeAtLoad.present && anytimeAtLoad.plots === 0, 'the anytime panel is there and draws nothing at load');
+  await page.click('#anytime-panel summary');
+  // The details' toggle event is queued after the click: wait for the drawing (or give up).
+  await page.waitForFunction(() => document.querySelector('#anytime-plots').dataset.drawn === '1', { timeout: 5000 }).catch(() => {});
+  const anytime = await page.evaluate(() => {
+    const a = window.mtcsReport.data.anytime;
+    const count = (ys) => ys.filter((v) => v !== null).length;
+    const curves = [...document.querySelectorAll('#anytime-plots svg')].map((root) => {
+      const p = root.querySelector('path.so-far'), box = p.getBBox();
+      return { title: root.getAttribute('aria-label'), vertices: (p.getAttribute('d').match(/[ML]/g) || []).length, width: box.width, height: box.height };
+    });
+    return { open: document.getElementById('anytime-panel').open, curves, generations: a.evaluations.length,
+      best: count(a.best_so_far), hv: count(a.hypervolume_so_far), caption: document.getElementById('anytime-caption').textContent };
+  });
+  console.log(`anytime ${anytime.caption}: ${anytime.curves.map((c) => `${c.title} (${c.vertices} vertices, ${c.width.toFixed(0)} x ${c.height.toFixed(0)})`).join('; ')}`);
+  check(anytime.open && anytime.curves.length === 4, 'opening the anytime panel draws four charts');
+  check(anytime.hv === anytime.generations && anytime.best > 0 &&
+    anytime.curves.every((c) => c.vertices === (c.title.startsWith('best') ? anytime.best : anytime.hv)),
+    `each curve has one vertex per stored generation (${anytime.generations}; with a feasible layout: ${anytime.best})`);
+  check(anytime.curves.every((c) => c.width > 100), 'each curve spans its chart across');
   check(errors.length === 0, `still no console errors after the clicks${errors.length ? ': ' + errors.join(' | ') : ''}`);
   if (screenshot) {
     await page.screenshot({ path: screenshot, fullPage: false });

@@ -191,6 +191,42 @@ TEST_CASE("report: each bore entry's drilling map is the access module's map of 
   CHECK(blocked_somewhere > 0);                       // so the maps can differ at all
 }
 
+TEST_CASE("report: the anytime curves are the rows of replay's anytime.csv", "[report][anytime]") {
+  mtcs::report::ReportOptions options;
+  options.temperature = false;
+  options.drilling_maps = false;
+  const json data = page_data(mtcs::report::run_report(plate_run().string(), options).html);
+  const json& a = data["anytime"];
+  REQUIRE(a.is_object());
+  REQUIRE(mtcs_test::run_mtcs("replay " + plate_run().string() + " --no-plots --quiet") == 0);
+  const auto rows = read_csv(plate_run() / "replay" / "anytime.csv");
+  REQUIRE(rows.size() >= 3);
+  REQUIRE(rows[0] == std::vector<std::string>{"generation", "evaluations", "seconds", "best_feasible", "best_so_far",
+                                              "hypervolume", "hypervolume_so_far"});
+  REQUIRE(a["generation"].size() == rows.size() - 1);
+  // The CSV has 10 significant digits; inf (no feasible layout) is null on the page.
+  const auto same = [](const json& page, const std::string& csv) {
+    const double v = std::stod(csv);
+    if (std::isinf(v)) return page.is_null();
+    return !page.is_null() && page.get<double>() == Approx(v).epsilon(1e-9).margin(1e-12);
+  };
+  const char* columns[] = {"generation", "evaluations", "seconds", "best_feasible", "best_so_far", "hypervolume", "hypervolume_so_far"};
+  std::size_t feasible = 0;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    REQUIRE(rows[i].size() == 7);
+    for (std::size_t k = 0; k < 7; ++k) {
+      INFO("row " << i << ", " << columns[k] << ": csv " << rows[i][k] << ", page " << a[columns[k]][i - 1].dump());
+      CHECK(same(a[columns[k]][i - 1], rows[i][k]));
+    }
+    feasible += !a["best_feasible"][i - 1].is_null();
+  }
+  CHECK(feasible > 0);  // the curves are not empty
+  // The generations are the stored ones the convergence charts read by their own path.
+  CHECK(a["evaluations"] == data["convergence"]["evaluations"]);
+  CHECK(a["seconds"] == data["convergence"]["seconds"]);
+  CHECK(a["ref"].size() == data["objectives"].size());
+}
+
 TEST_CASE("report: a missing run, generation or member is an input error naming the option", "[report]") {
   CHECK_THROWS_AS(mtcs::report::run_report((plate_run() / "nothing").string()), mtcs::io::InputError);
   mtcs::report::ReportOptions options;

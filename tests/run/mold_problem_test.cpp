@@ -61,3 +61,68 @@ TEST_CASE("MoldProblem ranks an infeasible layout as its penalty variant says", 
   CHECK(death.feasible);
   for (const double v : death.objectives) CHECK(std::isinf(v));
 }
+
+// mutation.blend: circuits of the same shape in both parents get SBX-blended hole coordinates.
+// Against the operator's definition: holes stay aligned (each aligned run moves as one), each
+// hole takes b's side with probability 1/2, SBX (eta 10) lands inside the parents' span half
+// the time (its spread factor's median is 1), the ports stay on their faces, and the same draws
+// give the same child; circuits of different shapes fall back to the whole-circuit crossover.
+TEST_CASE("MoldProblem blends the hole coordinates of parents that share a circuit's shape", "[run][blend]") {
+  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml");
+  REQUIRE(spec.drilling.axis_parallel);
+  const mold::Scene scene(spec);
+  const eval::Pipeline pipeline(scene);
+  run::MutationRates rates;
+  rates.blend = 1;
+  const run::MoldProblem problem(pipeline, {}, rates);
+  const mold::Genome ga = through_ejector();
+  mold::Genome gb = ga;
+  gb.circuits[0].waypoints = {{70, 0, 55}, {70, 100, 55}, {140, 100, 55}, {140, 0, 55}};
+  const opt::Genotype a = problem.encode(ga), b = problem.encode(gb);
+  // The holes as variables: (waypoint, axis) of each run's first point, and a's and b's values.
+  struct Hole { std::size_t first, last; int k; double va, vb; };
+  std::vector<Hole> holes;
+  for (int k = 0; k < 3; ++k) {
+    std::size_t i = 0;
+    const auto& w = ga.circuits[0].waypoints;
+    while (i < w.size()) {
+      std::size_t j = i + 1;
+      while (j < w.size() && w[j][k] == w[i][k]) ++j;
+      holes.push_back({i, j, k, w[i][k], gb.circuits[0].waypoints[i][k]});
+      i = j;
+    }
+  }
+  int changed = 0, inside = 0, variables = 0;
+  for (std::uint64_t seed = 1; seed <= 400; ++seed) {
+    opt::Rng rng(seed), again(seed);
+    const opt::Genotype child = problem.recombine(a, b, rng);
+    REQUIRE(problem.recombine(a, b, again) == child);
+    const auto w = problem.genome(child).circuits.at(0).waypoints;
+    REQUIRE(w.size() == 4);
+    CHECK(w.front().y() == 0);  // inlet and outlet on the y = 0 face
+    CHECK(w.back().y() == 0);
+    for (const Hole& h : holes) {
+      for (std::size_t m = h.first + 1; m < h.last; ++m) CHECK(w[m][h.k] == w[h.first][h.k]);
+      if (h.va == h.vb) {
+        CHECK(w[h.first][h.k] == h.va);
+        continue;
+      }
+      ++variables;
+      const double v = w[h.first][h.k];
+      if (v == h.va) continue;
+      ++changed;
+      inside += v > std::min(h.va, h.vb) && v < std::max(h.va, h.vb);
+    }
+  }
+  CHECK(changed == Approx(0.5 * variables).epsilon(0.1));
+  CHECK(inside == Approx(0.5 * changed).epsilon(0.15));
+
+  // A different shape (an extra waypoint in b): whole circuits, a's or b's, as without blend.
+  mold::Genome gc = gb;
+  gc.circuits[0].waypoints.insert(gc.circuits[0].waypoints.begin() + 2, {70, 100, 80});
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    opt::Rng rng(seed);
+    const auto w = problem.genome(problem.recombine(a, problem.encode(gc), rng)).circuits.at(0).waypoints;
+    CHECK((w == ga.circuits[0].waypoints || w == gc.circuits[0].waypoints));
+  }
+}

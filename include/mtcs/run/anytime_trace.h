@@ -2,7 +2,7 @@
 // A run's anytime behaviour from its stored generations: the best feasible weighted objective
 // and the feasible front's hypervolume (scaled objectives, the run's reference point) against
 // evaluations and against wall time - the curve optimisers are compared by. `mtcs replay`
-// writes it as DIR/replay/anytime.csv (and anytime.png); the report may read that file.
+// writes it as DIR/replay/anytime.csv (and anytime.png); the report embeds the same rows.
 
 #include <string>
 #include <vector>
@@ -35,5 +35,8 @@ class AnytimeTrace {
   const MoldOptimizer& optimizer_;
   std::vector<AnytimeRow> rows_;
 };
+
+// Every stored generation of the run in `db`, in order (the rows replay writes).
+AnytimeTrace stored_anytime(const MoldOptimizer& optimizer, const store::RunStore& db);
 
 }  // namespace mtcs::run

@@ -27,6 +27,10 @@ struct MutationRates {
   // at least one; 0: all of them, every time. Two beat all on the gear and matched them on the
   // plate at equal budgets, and keep a child's other bores cached (experiments/evaluate).
   double moves = 2;
+  // Recombination (per offspring that has two parents): the probability that circuits of the
+  // same shape in both parents (waypoint count and, axis-parallel, which waypoints share each
+  // coordinate) get SBX-blended waypoint coordinates instead of the whole-circuit crossover.
+  double blend = 0;
 };
 
 class MoldProblem final : public opt::Problem {
@@ -71,6 +75,8 @@ class MoldProblem final : public opt::Problem {
   // shifted by sigma N(0, 1) with `probability`; returns how many moved.
   int movable_parts(const mold::Circuit& c) const;
   int move_some(mold::Circuit& c, double sigma, double probability, opt::Rng& rng) const;
+  // mutation.blend: a's circuits blended with b's of the same index and shape; false: none had one.
+  bool blend_circuits(mold::Genome& a, const mold::Genome& b, opt::Rng& rng) const;
   opt::Score score(const eval::Pipeline& pipeline, const opt::Genotype& g) const;
 
   const eval::Pipeline& pipeline_;

@@ -625,6 +625,43 @@ function drawConvergence() {
   c3.root.append(Object.assign(svg('title'), { textContent: `reference point ${cv.hv_ref.map((v) => fmt(v)).join(', ')} (objective / its scale)` }));
 }
 
+// ---------------------------------------------------------------- anytime behaviour (SVG, on demand)
+// What optimisers are compared by (replay's anytime.csv): the best feasible weighted objective and
+// the feasible front's hypervolume so far, against evaluations and against wall time; the dashed
+// lines are each generation's own. Drawn when the panel is first opened: nothing at load.
+const anytime = data.anytime;
+function drawAnytime() {
+  const box = $('anytime-plots');
+  if (box.dataset.drawn) return;
+  box.dataset.drawn = '1';
+  const line = (c, xs, ys, color, dash = '') => {
+    let d = '';
+    ys.forEach((y, k) => { if (y === null || !Number.isFinite(c.Y(y))) return; d += `${d ? 'L' : 'M'}${c.X(xs[k]).toFixed(1)},${c.Y(y).toFixed(1)}`; });
+    svg('path', { d, fill: 'none', stroke: color, 'stroke-width': dash ? 1.2 : 1.8, 'stroke-dasharray': dash, class: dash ? 'generation' : 'so-far' }, c.plot);
+  };
+  const feasible = anytime.best_so_far.some((v) => v !== null);
+  for (const [x, xLabel] of [['evaluations', 'evaluations'], ['seconds', 'wall time (s)']]) {
+    const xs = anytime[x];
+    if (feasible) {
+      const c = chart(box, { title: `best feasible objective vs ${xLabel.replace(' (s)', '')}`, xLabel, yLabel: 'weighted objective', xs, ys: [...anytime.best_so_far, ...anytime.best_feasible] });
+      line(c, xs, anytime.best_feasible, '#8ab4e8', '4 3'); line(c, xs, anytime.best_so_far, '#1f6fd1');
+    }
+    const c = chart(box, { title: `hypervolume vs ${xLabel.replace(' (s)', '')}`, xLabel, yLabel: 'hypervolume (scaled)', xs, ys: [0, ...anytime.hypervolume_so_far] });
+    line(c, xs, anytime.hypervolume, '#c5b0d5', '4 3'); line(c, xs, anytime.hypervolume_so_far, '#9467bd');
+  }
+  if (!feasible) box.append(el('p', { class: 'hint', text: 'No stored generation has a feasible layout: no best objective to draw.' }));
+}
+if (anytime && anytime.evaluations.length) {
+  const n = anytime.evaluations.length;
+  $('anytime-caption').textContent = `(${n} generations, ${anytime.evaluations[n - 1].toLocaleString('en-US')} evaluations, ${fmt(anytime.seconds[n - 1])} s)`;
+  $('anytime-about').textContent = 'Solid: the best so far; dashed: each stored generation\'s population. Hypervolume of the feasible front in scaled objectives ' +
+    `against the run's reference point ${anytime.ref.map((v) => fmt(v)).join(', ')} (summary.json's; the convergence chart above fits its own). ` +
+    'The same rows as mtcs replay\'s anytime.csv.';
+  $('anytime-panel').addEventListener('toggle', () => { if ($('anytime-panel').open) drawAnytime(); });
+} else {
+  $('anytime-panel').hidden = true;
+}
+
 // ---------------------------------------------------------------- drilling maps (2-D canvas)
 // Each bore entry's accessibility map (data.drilling_maps, of one member's layout): the bore as a
 // straight tool pivoting at its entry, which directions miss the part. Drawn as
