@@ -64,19 +64,31 @@ class Island {
 };
 
 // Every island's members in one generation (the archipelago's): ES best first (stable), SMS-EMOA
-// in island order.
-opt::Generation merge(const MoldOptimizer& base, const opt::Problem& problem, const std::vector<opt::Generation>& islands) {
+// in island order. `from` (if given) gets where each member comes from: its index among the
+// islands' members in island order (the store keeps the archipelago as these references).
+opt::Generation merge(const MoldOptimizer& base, const opt::Problem& problem, const std::vector<opt::Generation>& islands,
+                      std::vector<int>* from = nullptr) {
+  std::vector<const opt::Individual*> all;
   opt::Generation m;
   m.index = islands.front().index;
   for (const auto& g : islands) {
     m.evaluations += g.evaluations;
-    m.population.insert(m.population.end(), g.population.begin(), g.population.end());
+    for (const auto& ind : g.population) all.push_back(&ind);
   }
+  std::vector<int> order(all.size());
+  for (std::size_t j = 0; j < order.size(); ++j) order[j] = int(j);
   if (!base.pareto())
-    std::stable_sort(m.population.begin(), m.population.end(),
-                     [&](const opt::Individual& a, const opt::Individual& b) { return problem.better(a.score, b.score); });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return problem.better(all[std::size_t(a)]->score, all[std::size_t(b)]->score); });
+  m.population.reserve(all.size());
+  for (const int j : order) m.population.push_back(*all[std::size_t(j)]);
+  if (from) *from = std::move(order);
   return m;
 }
+
+// The islands meet at least this often (stored generations), migrating or not: what rank 0 holds
+// unstored, what a kill -9 loses and how long a stop waits stay small.
+constexpr std::size_t kMaxStretch = 10;
 
 class ThreadTransport final : public IslandTransport {
  public:
@@ -95,7 +107,9 @@ class ThreadTransport final : public IslandTransport {
                                         outgoing[std::size_t(s)].end());
     return arrivals;
   }
-  std::vector<opt::Generation> gather(const std::vector<opt::Generation>& local, int) override { return local; }
+  std::vector<std::vector<opt::Generation>> gather(std::vector<std::vector<opt::Generation>> local, int) override {
+    return local;
+  }
   std::vector<opt::Generation> scatter(const std::vector<opt::Generation>& all, int) override { return all; }
   bool broadcast(bool value) override { return value; }
   std::string broadcast(const std::string& value) override { return value; }
@@ -169,13 +183,13 @@ double process_cpu_seconds() { return cpu_seconds(CLOCK_PROCESS_CPUTIME_ID); }
 double thread_cpu_seconds() { return cpu_seconds(CLOCK_THREAD_CPUTIME_ID); }
 
 // Where a process's wall time goes in run_islands, for the speed study (the --verbose log).
-// Also the CPU seconds of this thread in each stored generation (its work: with one thread a
-// rank, what the rank would take on a core of its own), for experiments/islands/speedup.py.
+// Also the CPU seconds of this thread between two meetings of the islands (its work: with one
+// thread a rank, what the rank would take on a core of its own), for experiments/islands/speedup.py.
 struct Phases {
   double evaluate = 0, migrate = 0, gather = 0, store = 0, stop = 0;
   std::vector<double> work;
   double work_start = thread_cpu_seconds(), waiting_cpu = 0;
-  void generation_stored() {
+  void met() {
     const double now = thread_cpu_seconds();
     work.push_back(now - work_start - waiting_cpu);
     work_start = now, waiting_cpu = 0;
@@ -251,34 +265,81 @@ StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, con
   std::optional<IslandWriter> writing;
   if (db) writing.emplace(*db);
   StoredRun r;
-  // Stores one generation of every island (the writer), and tells the live line.
+  // Each local island's generations since the last meeting, and the seconds at which the first
+  // local island (island 0 at the writer) had each.
+  std::vector<std::vector<opt::Generation>> stretch(islands.size());
+  std::vector<double> stretch_seconds;
+  // At a meeting: the writer stores the stretch of every island, generation by generation, and
+  // tells the live line.
   auto store = [&] {
-    std::vector<opt::Generation> every = phases.waited(phases.gather, [&] { return transport.gather(gens, P); });
+    std::vector<std::vector<opt::Generation>> every =
+        phases.waited(phases.gather, [&] { return transport.gather(std::move(stretch), P); });
+    stretch.assign(islands.size(), {});
     if (transport.writer()) {
       Phases::timed(phases.store, [&] {
-        r.last = merge(base, problem, every);
-        const double sec = elapsed();
-        if (on_line) on_line(r.last, island_progress_line(base, r.last, every, sec, r.last.evaluations - evals_before));
-        if (writing) writing->push({std::move(every), r.last, seconds_before + sec});
+        const std::size_t n = every.front().size();
+        for (const auto& island : every)
+          if (island.size() != n) throw std::logic_error("islands: islands met at different generations");
+        for (std::size_t k = 0; k < n; ++k) {
+          store::IslandsGeneration gen;
+          for (auto& island : every) gen.islands.push_back(std::move(island[k]));
+          r.last = merge(base, problem, gen.islands, &gen.merged_from);
+          const double sec = stretch_seconds[k];
+          if (on_line)
+            on_line(r.last, island_progress_line(base, r.last, gen.islands, sec, r.last.evaluations - evals_before));
+          if (writing) {
+            gen.merged = r.last;
+            gen.seconds = seconds_before + sec;
+            writing->push(std::move(gen));
+          }
+        }
       });
     }
-    phases.generation_stored();
+    stretch_seconds.clear();
+    phases.met();
   };
-  if (!resuming) store();
-  else if (transport.writer()) r.last = merge(base, problem, transport.gather(gens, P));
-  else transport.gather(gens, P);
+  if (!resuming) {
+    for (std::size_t k = 0; k < islands.size(); ++k) stretch[k].push_back(gens[k]);
+    stretch_seconds.push_back(elapsed());
+    store();
+  } else {
+    for (std::size_t k = 0; k < islands.size(); ++k) stretch[k].push_back(gens[k]);
+    auto every = transport.gather(std::move(stretch), P);
+    stretch.assign(islands.size(), {});
+    if (transport.writer()) {
+      std::vector<opt::Generation> last;
+      for (auto& island : every) last.push_back(std::move(island.front()));
+      r.last = merge(base, problem, last);
+    }
+  }
 
+  // Every island runs to the next meeting on its own (a migration, the end, or kMaxStretch
+  // generations on); all islands step alike, so they meet at the same generation.
+  auto runs_on = [&](std::size_t k) {
+    const Island& island = islands[k];
+    return !island.done(gens[k]) && !island.migrates_after(gens[k], s.migration_every) &&
+           stretch[k].size() < kMaxStretch;
+  };
   while (!islands.front().done(gens.front()) &&
          !phases.waited(phases.stop, [&] { return transport.broadcast(stop && stop()); })) {
     Phases::timed(phases.evaluate, [&] {
-      tbb::parallel_for(std::size_t(0), islands.size(), [&](std::size_t k) { gens[k] = islands[k].advance(gens[k]); });
+      tbb::parallel_for(std::size_t(0), islands.size(), [&](std::size_t k) {
+        do {
+          gens[k] = islands[k].advance(gens[k]);
+          stretch[k].push_back(gens[k]);
+          if (k == 0) stretch_seconds.push_back(elapsed());
+        } while (runs_on(k));
+      });
     });
     if (islands.front().migrates_after(gens.front(), s.migration_every) && P > 1) {
       phases.waited(phases.migrate, [&] {
         std::vector<std::vector<opt::Individual>> out;
         for (std::size_t k = 0; k < islands.size(); ++k) out.push_back(islands[k].emigrants(gens[k], s.migrants));
         const auto arrivals = transport.migrate(out, P, s.topology);
-        for (std::size_t k = 0; k < islands.size(); ++k) gens[k] = islands[k].immigrate(gens[k], arrivals[k]);
+        for (std::size_t k = 0; k < islands.size(); ++k) {
+          gens[k] = islands[k].immigrate(gens[k], arrivals[k]);
+          stretch[k].back() = gens[k];
+        }
       });
     }
     store();

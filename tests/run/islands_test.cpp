@@ -127,7 +127,7 @@ TEST_CASE("islands: an interrupted archipelago resumed ends as the uninterrupted
     r.islands.topology = opt::Topology::fully_connected;
     const run::OptimizeResult done = optimize(r);
     CHECK_FALSE(done.interrupted);
-    // Stopped after 3 stored generations (a migration falls in the stretch after), then resumed.
+    // Stopped at the islands' 4th meeting (stop() is read where they meet), then resumed.
     r.out = parts.string();
     int calls = 0;
     const run::OptimizeResult stopped = optimize(r, [&] { return ++calls > 3; });
@@ -246,4 +246,15 @@ TEST_CASE("islands: messages between ranks keep every bit", "[run][islands]") {
   CHECK_FALSE(back.population[0].score.feasible);
   CHECK(back.population[1].score.value == -1);
   CHECK_THROWS(run::wire::decode_generation(run::wire::encode(g).substr(0, 30)));
+  // An island's generations between two meetings, in one message.
+  opt::Generation next = g;
+  next.index = 13, next.population.pop_back();
+  const auto both = run::wire::decode_generations(run::wire::encode(std::vector<opt::Generation>{g, next}));
+  REQUIRE(both.size() == 2);
+  CHECK(both[0].index == 12);
+  CHECK(both[0].population.size() == 2);
+  CHECK(both[1].index == 13);
+  REQUIRE(both[1].population.size() == 1);
+  CHECK(bits(both[1].population[0].x) == bits(g.population[0].x));
+  CHECK(run::wire::decode_generations(run::wire::encode(std::vector<opt::Generation>{})).empty());
 }
