@@ -11,6 +11,8 @@
 #include <fstream>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
+#include <thread>
 
 #include "island_writer.h"
 #include "mtcs/io/input_error.h"
@@ -126,6 +128,17 @@ int mpi_launch_size() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
     if (const char* v = std::getenv(name)) return std::max(1, std::atoi(v));
   return 0;
+}
+
+int threads_per_rank() {
+  if (mpi_launch_size() == 0) return 0;
+  int local = 1;  // ranks on this machine (Open MPI; MPICH: MPI_LOCALNRANKS)
+  for (const char* name : {"OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS"})
+    if (const char* v = std::getenv(name)) {
+      local = std::max(1, std::atoi(v));
+      break;
+    }
+  return std::max(1, int(std::thread::hardware_concurrency()) / local);
 }
 
 std::string IslandSettings::to_text() const {
@@ -270,11 +283,14 @@ StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, con
   std::vector<std::vector<opt::Generation>> stretch(islands.size());
   std::vector<double> stretch_seconds;
   // At a meeting: the writer stores the stretch of every island, generation by generation, and
-  // tells the live line.
-  auto store = [&] {
+  // tells the live line (resuming: takes the last generation as the run's). Returns whether to
+  // stop: the writer's stop(), told everywhere before the writer's work, which the others need
+  // not wait for.
+  auto meet = [&](bool resumed) {
     std::vector<std::vector<opt::Generation>> every =
         phases.waited(phases.gather, [&] { return transport.gather(std::move(stretch), P); });
     stretch.assign(islands.size(), {});
+    const bool stopping = phases.waited(phases.stop, [&] { return transport.broadcast(stop && stop()); });
     if (transport.writer()) {
       Phases::timed(phases.store, [&] {
         const std::size_t n = every.front().size();
@@ -284,6 +300,7 @@ StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, con
           store::IslandsGeneration gen;
           for (auto& island : every) gen.islands.push_back(std::move(island[k]));
           r.last = merge(base, problem, gen.islands, &gen.merged_from);
+          if (resumed) continue;
           const double sec = stretch_seconds[k];
           if (on_line)
             on_line(r.last, island_progress_line(base, r.last, gen.islands, sec, r.last.evaluations - evals_before));
@@ -297,21 +314,11 @@ StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, con
     }
     stretch_seconds.clear();
     phases.met();
+    return stopping;
   };
-  if (!resuming) {
-    for (std::size_t k = 0; k < islands.size(); ++k) stretch[k].push_back(gens[k]);
-    stretch_seconds.push_back(elapsed());
-    store();
-  } else {
-    for (std::size_t k = 0; k < islands.size(); ++k) stretch[k].push_back(gens[k]);
-    auto every = transport.gather(std::move(stretch), P);
-    stretch.assign(islands.size(), {});
-    if (transport.writer()) {
-      std::vector<opt::Generation> last;
-      for (auto& island : every) last.push_back(std::move(island.front()));
-      r.last = merge(base, problem, last);
-    }
-  }
+  for (std::size_t k = 0; k < islands.size(); ++k) stretch[k].push_back(gens[k]);
+  stretch_seconds.push_back(elapsed());
+  bool stopping = meet(resuming);
 
   // Every island runs to the next meeting on its own (a migration, the end, or kMaxStretch
   // generations on); all islands step alike, so they meet at the same generation.
@@ -320,8 +327,7 @@ StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, con
     return !island.done(gens[k]) && !island.migrates_after(gens[k], s.migration_every) &&
            stretch[k].size() < kMaxStretch;
   };
-  while (!islands.front().done(gens.front()) &&
-         !phases.waited(phases.stop, [&] { return transport.broadcast(stop && stop()); })) {
+  while (!islands.front().done(gens.front()) && !stopping) {
     Phases::timed(phases.evaluate, [&] {
       tbb::parallel_for(std::size_t(0), islands.size(), [&](std::size_t k) {
         do {
@@ -342,7 +348,7 @@ StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, con
         }
       });
     }
-    store();
+    stopping = meet(false);
   }
   if (writing) Phases::timed(phases.store, [&] { writing->finish(); });
   r.interrupted = !islands.front().done(gens.front());

@@ -6,11 +6,13 @@
 #include <catch2/catch.hpp>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <thread>
 #include <unistd.h>
 
 #include "mtcs/opt/migration.h"
@@ -257,4 +259,19 @@ TEST_CASE("islands: messages between ranks keep every bit", "[run][islands]") {
   REQUIRE(both[1].population.size() == 1);
   CHECK(bits(both[1].population[0].x) == bits(g.population[0].x));
   CHECK(run::wire::decode_generations(run::wire::encode(std::vector<opt::Generation>{})).empty());
+}
+
+TEST_CASE("islands: a rank's default threads share the machine's cores with the other ranks on it", "[run][islands]") {
+  const char* saved_size = std::getenv("OMPI_COMM_WORLD_SIZE");
+  const char* saved_local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+  if (saved_size || saved_local || std::getenv("PMI_SIZE")) return;  // under mpirun itself: leave it be
+  const int cores = int(std::thread::hardware_concurrency());
+  CHECK(run::threads_per_rank() == 0);  // not under mpirun: all cores
+  ::setenv("OMPI_COMM_WORLD_SIZE", "4", 1);
+  ::setenv("OMPI_COMM_WORLD_LOCAL_SIZE", "2", 1);
+  CHECK(run::threads_per_rank() == std::max(1, cores / 2));
+  ::setenv("OMPI_COMM_WORLD_LOCAL_SIZE", "4096", 1);
+  CHECK(run::threads_per_rank() == 1);
+  ::unsetenv("OMPI_COMM_WORLD_SIZE");
+  ::unsetenv("OMPI_COMM_WORLD_LOCAL_SIZE");
 }

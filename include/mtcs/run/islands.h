@@ -72,6 +72,10 @@ std::unique_ptr<IslandTransport> thread_transport();
 std::unique_ptr<IslandTransport> mpi_transport();
 // The number of ranks mpirun started, or 0 outside mpirun.
 int mpi_launch_size();
+// Worker threads a rank takes by default: the machine's cores shared by the ranks mpirun started
+// on it (at least 1); 0 outside mpirun (all cores). More threads than cores would make each
+// rank's threads wait for each other's cores.
+int threads_per_rank();
 
 // Runs the archipelago from the store's last generation (resume) or fresh populations to the
 // budget, or until stop() (the writer's) is true at a meeting of the islands. `db` is the writer's
