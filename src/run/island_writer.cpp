@@ -30,11 +30,11 @@ void IslandWriter::rethrow_failure() {
   if (failed_) std::rethrow_exception(failed_);
 }
 
-void IslandWriter::push(store::IslandsGeneration g) {
+void IslandWriter::push(std::vector<store::IslandsGeneration> generations) {
   std::unique_lock<std::mutex> lock(mutex_);
   changed_.wait(lock, [&] { return failed_ || queued_.size() < kMaxQueued; });
   rethrow_failure();
-  queued_.push_back(std::move(g));
+  for (auto& g : generations) queued_.push_back(std::move(g));
   lock.unlock();
   changed_.notify_all();
 }

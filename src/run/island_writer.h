@@ -25,9 +25,10 @@ class IslandWriter {
   IslandWriter(const IslandWriter&) = delete;
   IslandWriter& operator=(const IslandWriter&) = delete;
 
-  // Queues a generation; waits while kMaxQueued are waiting (a store slower than the islands
-  // sets the pace, the memory stays bounded). Throws the error of an earlier write.
-  void push(store::IslandsGeneration g);
+  // Queues generations (a meeting's, written in one transaction unless more are waiting); waits
+  // while kMaxQueued are waiting (a store slower than the islands sets the pace, the memory stays
+  // bounded). Throws the error of an earlier write.
+  void push(std::vector<store::IslandsGeneration> generations);
   // Returns when every queued generation is committed; throws the error of a write.
   void finish();
 

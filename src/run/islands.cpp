@@ -233,7 +233,7 @@ struct Phases {
 
 StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, const IslandSettings& s,
                       IslandTransport& transport, store::RunStore* db,
-                      const std::function<void(const opt::Generation&, const std::string&)>& on_line,
+                      const std::function<void(const opt::Generation&, const std::function<std::string()>&)>& on_line,
                       const std::function<bool()>& stop) {
   const auto t0 = std::chrono::steady_clock::now();
   const double cpu0 = process_cpu_seconds();
@@ -294,6 +294,7 @@ StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, con
     if (transport.writer()) {
       Phases::timed(phases.store, [&] {
         const std::size_t n = every.front().size();
+        std::vector<store::IslandsGeneration> stored;
         for (const auto& island : every)
           if (island.size() != n) throw std::logic_error("islands: islands met at different generations");
         for (std::size_t k = 0; k < n; ++k) {
@@ -303,13 +304,16 @@ StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, con
           if (resumed) continue;
           const double sec = stretch_seconds[k];
           if (on_line)
-            on_line(r.last, island_progress_line(base, r.last, gen.islands, sec, r.last.evaluations - evals_before));
+            on_line(r.last, [&] {
+              return island_progress_line(base, r.last, gen.islands, sec, r.last.evaluations - evals_before);
+            });
           if (writing) {
             gen.merged = r.last;
             gen.seconds = seconds_before + sec;
-            writing->push(std::move(gen));
+            stored.push_back(std::move(gen));
           }
         }
+        if (writing && !stored.empty()) writing->push(std::move(stored));
       });
     }
     stretch_seconds.clear();
