@@ -94,8 +94,9 @@ class MpiTransport final : public IslandTransport {
 
   std::vector<std::vector<opt::Generation>> gather(std::vector<std::vector<opt::Generation>> local, int) override {
     std::vector<std::vector<opt::Generation>> out;
-    for (std::string& bytes : gather_bytes(wire::encode(local.front()))) {
-      if (out.empty()) out.push_back(std::move(local.front()));  // rank 0's own, not decoded again
+    // Rank 0 keeps its own island's generations as they are (no bytes to itself).
+    for (std::string& bytes : gather_bytes(rank_ == 0 ? std::string() : wire::encode(local.front()))) {
+      if (out.empty()) out.push_back(std::move(local.front()));
       else out.push_back(wire::decode_generations(bytes));
     }
     return out;
