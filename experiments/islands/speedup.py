@@ -36,7 +36,9 @@ for run in sorted(p for p in glob.glob(os.path.join(root, "*-*-*")) if os.path.i
     commit_wall = sum(t.get("commit_wall", 0) for t in timing)
     run_cpu = sum(t["cpu"] for t in timing)  # the run loops' CPU, every process
     G = max(len(w) for w in work)
-    if mode == "mpi":
+    if mode == "serial":  # one thread; the writer beside it on another core
+        idle = run_cpu - commit_cpu
+    elif mode == "mpi":
         idle = sum(max(max(w[g] for w in work), (sum(w[g] for w in work) + commit_cpu / G) / cores) for g in range(G))
     else:
         idle = run_cpu / min(P, cores)
@@ -53,6 +55,28 @@ keys = list(rows[0].keys())
 print(",".join(keys))
 for r in rows:
     print(",".join(f"{r[k]:.4g}" if isinstance(r[k], float) else str(r[k]) for k in keys))
+print()
+# The same evaluations (P islands) on one thread against P ranks or threads: the speed-up of the same work.
+serial = {}
+for r in rows:
+    if r["mode"] == "serial":
+        b = serial.setdefault(r["P"], dict(evals_per_s=0, idle_evals_per_s=0, cpu=[]))
+        b["evals_per_s"] = max(b["evals_per_s"], r["evals_per_s"])
+        b["idle_evals_per_s"] = max(b["idle_evals_per_s"], r["idle_evals_per_s"])
+        b["cpu"].append(r["cpu_us_per_eval"])
+for r_mode in ("mpi", "threads"):
+    for P in sorted(serial):
+        if P == 1:
+            continue
+        runs = [r for r in rows if r["mode"] == r_mode and r["P"] == P]
+        if not runs:
+            continue
+        s = serial[P]
+        m = max(r["evals_per_s"] for r in runs)
+        i = max(r["idle_evals_per_s"] for r in runs)
+        print(f"{r_mode} P={P} against the same {P} islands in one thread: measured {m / s['evals_per_s']:.2f},"
+              f" idle estimate {i / s['idle_evals_per_s']:.2f}; one thread's CPU {min(s['cpu']):.0f}-{max(s['cpu']):.0f}"
+              f" us/eval")
 print()
 for mode in sorted({r["mode"] for r in rows}):
     best = {}
