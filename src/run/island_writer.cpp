@@ -19,7 +19,8 @@ double thread_cpu_seconds() {
 
 }  // namespace
 
-IslandWriter::IslandWriter(store::RunStore& db) : db_(db), thread_([this] { loop(); }) {}
+IslandWriter::IslandWriter(store::RunStore& db, std::function<void(store::IslandsGeneration&)> complete)
+    : db_(db), complete_(std::move(complete)), thread_([this] { loop(); }) {}
 
 IslandWriter::~IslandWriter() {
   {
@@ -74,6 +75,8 @@ void IslandWriter::loop() {
     const double cpu0 = thread_cpu_seconds();
     std::exception_ptr failure;
     try {
+      if (complete_)
+        for (auto& g : batch) complete_(g);
       db_.save_islands(batch);
     } catch (...) {
       failure = std::current_exception();

@@ -8,6 +8,7 @@
 
 #include <condition_variable>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -18,7 +19,9 @@ namespace mtcs::run {
 
 class IslandWriter {
  public:
-  explicit IslandWriter(store::RunStore& db);
+  // `complete` fills in what the islands' generations leave to the writer (the archipelago's),
+  // in the writer's thread, before they are saved.
+  IslandWriter(store::RunStore& db, std::function<void(store::IslandsGeneration&)> complete);
   // Stops the thread after what is queued; an error not reported yet is dropped (the run is
   // ending through another exception then).
   ~IslandWriter();
@@ -45,6 +48,7 @@ class IslandWriter {
   void rethrow_failure();
 
   store::RunStore& db_;
+  std::function<void(store::IslandsGeneration&)> complete_;
   mutable std::mutex mutex_;
   std::condition_variable changed_;
   std::vector<store::IslandsGeneration> queued_;

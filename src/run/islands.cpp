@@ -233,7 +233,7 @@ struct Phases {
 
 StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, const IslandSettings& s,
                       IslandTransport& transport, store::RunStore* db,
-                      const std::function<void(const opt::Generation&, const std::function<std::string()>&)>& on_line,
+                      const std::function<void(int, const std::function<std::string()>&)>& on_line,
                       const std::function<bool()>& stop) {
   const auto t0 = std::chrono::steady_clock::now();
   const double cpu0 = process_cpu_seconds();
@@ -275,8 +275,11 @@ StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, con
     for (const auto& g : gens) local_evals_before += g.evaluations;
 
   // The writer's store, written from a thread of its own while the islands go on.
+  // The archipelago's generation (all members, merged) is made there too, off the islands' path.
   std::optional<IslandWriter> writing;
-  if (db) writing.emplace(*db);
+  if (db)
+    writing.emplace(*db, [&](store::IslandsGeneration& g) { g.merged = merge(base, problem, g.islands, &g.merged_from); });
+  std::vector<opt::Generation> last;  // every island's last generation (the writer's)
   StoredRun r;
   // Each local island's generations since the last meeting, and the seconds at which the first
   // local island (island 0 at the writer) had each.
@@ -300,15 +303,15 @@ StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, con
         for (std::size_t k = 0; k < n; ++k) {
           store::IslandsGeneration gen;
           for (auto& island : every) gen.islands.push_back(std::move(island[k]));
-          r.last = merge(base, problem, gen.islands, &gen.merged_from);
+          if (k + 1 == n) last = gen.islands;
           if (resumed) continue;
           const double sec = stretch_seconds[k];
           if (on_line)
-            on_line(r.last, [&] {
-              return island_progress_line(base, r.last, gen.islands, sec, r.last.evaluations - evals_before);
+            on_line(gen.islands.front().index, [&] {
+              const opt::Generation merged = merge(base, problem, gen.islands);
+              return island_progress_line(base, merged, gen.islands, sec, merged.evaluations - evals_before);
             });
           if (writing) {
-            gen.merged = r.last;
             gen.seconds = seconds_before + sec;
             stored.push_back(std::move(gen));
           }
@@ -356,6 +359,7 @@ StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, con
   }
   if (writing) Phases::timed(phases.store, [&] { writing->finish(); });
   r.interrupted = !islands.front().done(gens.front());
+  if (transport.writer()) r.last = merge(base, problem, last);
   if (base.pareto() && transport.writer())
     std::stable_sort(r.last.population.begin(), r.last.population.end(),
                      [&](const opt::Individual& a, const opt::Individual& b) { return problem.better(a.score, b.score); });

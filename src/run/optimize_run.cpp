@@ -117,8 +117,8 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
   if (transport) {
     const ProgressPrinter printer(optimizer, config.log_every);
     stored = run_islands(optimizer, problem, islands, *transport, db ? &*db : nullptr,
-                         [&](const opt::Generation& g, const std::function<std::string()>& line) {
-                           const int generation = optimizer.pareto() ? g.index / optimizer.mu() : g.index;
+                         [&](int index, const std::function<std::string()>& line) {
+                           const int generation = optimizer.pareto() ? index / optimizer.mu() : index;
                            if (printer.prints(generation)) printer.print(generation, line());
                          },
                          stop);

@@ -79,12 +79,12 @@ int threads_per_rank();
 
 // Runs the archipelago from the store's last generation (resume) or fresh populations to the
 // budget, or until stop() (the writer's) is true at a meeting of the islands. `db` is the writer's
-// store (nullptr elsewhere); `on_line` gets each stored generation and its live line, made when
-// asked for (the writer; most lines are not printed, and making them costs the writer's island).
+// store (nullptr elsewhere); `on_line` gets each stored generation's index and its live line,
+// made when asked for (the writer; most lines are not printed, and making them costs the writer's
+// island).
 StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, const IslandSettings& settings,
                       IslandTransport& transport, store::RunStore* db,
-                      const std::function<void(const opt::Generation& merged, const std::function<std::string()>& line)>&
-                          on_line,
+                      const std::function<void(int generation, const std::function<std::string()>& line)>& on_line,
                       const std::function<bool()>& stop = {});
 
 // The live line: the archipelago's progress (all islands' members) and each island's best (ES)
