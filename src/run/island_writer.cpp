@@ -37,7 +37,9 @@ void IslandWriter::rethrow_failure() {
 
 void IslandWriter::push(std::vector<store::IslandsGeneration> generations) {
   std::unique_lock<std::mutex> lock(mutex_);
-  changed_.wait(lock, [&] { return failed_ || queued_.size() < kMaxQueued; });
+  changed_.wait(lock, [&] {
+    return failed_ || queued_.empty() || queued_.size() * queued_.front().islands.size() < kMaxQueued;
+  });
   rethrow_failure();
   for (auto& g : generations) queued_.push_back(std::move(g));
   lock.unlock();

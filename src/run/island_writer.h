@@ -29,8 +29,8 @@ class IslandWriter {
   IslandWriter& operator=(const IslandWriter&) = delete;
 
   // Queues generations (a meeting's, written in one transaction unless more are waiting); waits
-  // while kMaxQueued are waiting (a store slower than the islands sets the pace, the memory stays
-  // bounded). Throws the error of an earlier write.
+  // while kMaxQueued island generations are waiting (a store slower than the islands sets the
+  // pace, the memory stays bounded). Throws the error of an earlier write.
   void push(std::vector<store::IslandsGeneration> generations);
   // Returns when every queued generation is committed; throws the error of a write.
   void finish();
@@ -43,7 +43,9 @@ class IslandWriter {
   Times times() const;
 
  private:
-  static constexpr std::size_t kMaxQueued = 16;
+  // Island generations (a generation of P islands counts P): room for many meetings of a few
+  // islands, so that a writer at its lower priority lags without holding an island up.
+  static constexpr std::size_t kMaxQueued = 512;
   void loop();
   void rethrow_failure();
 
