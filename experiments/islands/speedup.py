@@ -1,13 +1,18 @@
 #!/usr/bin/env python3
 """Reads the runs speedup.sh made (DIR/MODE-P-REP: summary.json, .err with the --verbose timing
-lines, .work with each process's CPU seconds per stored generation, .time, .load) and prints a
+lines, .work with each process's CPU seconds per stretch between meetings, .time, .load) and prints a
 CSV row per run, then the speed-up against P = 1 per mode.
 
 Measured: evaluations / the run's own seconds (summary.json), best of the repetitions.
-Idle estimate (what a machine with CORES free cores would give): each stored generation takes
-the longest process's work (CPU seconds of its one thread between two generations; every
-process waits for the others there), or the whole generation's CPU (all processes and the
-writer's commits) spread over the cores when that is more:
+Per run also: writer_cpu (the store thread's CPU seconds in its transactions), rank_cpu,
+rank_work_us_per_eval and rank_wait (each process's CPU seconds; its run loop's CPU without the
+waits, per evaluation of its island (MPI; threads: the main thread only); wall seconds blocked in gather,
+stop and migrate).
+Idle estimate (what a machine with CORES free cores would give): the islands meet (every stored
+generation before 2026-11-25, every migration since) and each stretch between two meetings takes
+the longest process's work w[r][g] (CPU seconds of its one thread; every process waits for the
+others there), or the stretch's whole CPU (all processes and the writer's commits) spread over
+the cores when that is more:
     T = sum_g max(max_r w[r][g], (sum_r w[r][g] + commit_cpu / G) / CORES)
 Messages between ranks on one machine take microseconds and are left out. For threads (one
 process) every island's work is in one line: T = sum_g max(w[g] / min(P, CORES), ...) is not
@@ -31,7 +36,9 @@ for run in sorted(p for p in glob.glob(os.path.join(root, "*-*-*")) if os.path.i
     commit_wall = sum(t.get("commit_wall", 0) for t in timing)
     run_cpu = sum(t["cpu"] for t in timing)  # the run loops' CPU, every process
     G = max(len(w) for w in work)
-    if mode == "mpi":
+    if mode == "serial":  # one thread; the writer beside it on another core
+        idle = run_cpu - commit_cpu
+    elif mode == "mpi":
         idle = sum(max(max(w[g] for w in work), (sum(w[g] for w in work) + commit_cpu / G) / cores) for g in range(G))
     else:
         idle = run_cpu / min(P, cores)
@@ -40,11 +47,36 @@ for run in sorted(p for p in glob.glob(os.path.join(root, "*-*-*")) if os.path.i
                      cpu_us_per_eval=1e6 * run_cpu / evals, evals_per_cpu_s_per_rank=evals / run_cpu,
                      wait_fraction=max(waits), commit_wall_fraction=commit_wall / wall,
                      commit_cpu_fraction=commit_cpu / run_cpu, idle_seconds=idle, idle_evals_per_s=evals / idle,
-                     command_cpu=user + sys_))
+                     command_cpu=user + sys_, writer_cpu=commit_cpu,
+                     rank_cpu=";".join(f"{t['cpu']:.3f}" for t in timing),
+                     rank_work_us_per_eval=";".join(f"{1e6 * sum(w) / (evals / P):.1f}" for w in work),
+                     rank_wait=";".join(f"{t['gather'] + t['stop'] + t['migrate']:.3f}" for t in timing)))
 keys = list(rows[0].keys())
 print(",".join(keys))
 for r in rows:
     print(",".join(f"{r[k]:.4g}" if isinstance(r[k], float) else str(r[k]) for k in keys))
+print()
+# The same evaluations (P islands) on one thread against P ranks or threads: the speed-up of the same work.
+serial = {}
+for r in rows:
+    if r["mode"] == "serial":
+        b = serial.setdefault(r["P"], dict(evals_per_s=0, idle_evals_per_s=0, cpu=[]))
+        b["evals_per_s"] = max(b["evals_per_s"], r["evals_per_s"])
+        b["idle_evals_per_s"] = max(b["idle_evals_per_s"], r["idle_evals_per_s"])
+        b["cpu"].append(r["cpu_us_per_eval"])
+for r_mode in ("mpi", "threads"):
+    for P in sorted(serial):
+        if P == 1:
+            continue
+        runs = [r for r in rows if r["mode"] == r_mode and r["P"] == P]
+        if not runs:
+            continue
+        s = serial[P]
+        m = max(r["evals_per_s"] for r in runs)
+        i = max(r["idle_evals_per_s"] for r in runs)
+        print(f"{r_mode} P={P} against the same {P} islands in one thread: measured {m / s['evals_per_s']:.2f},"
+              f" idle estimate {i / s['idle_evals_per_s']:.2f}; one thread's CPU {min(s['cpu']):.0f}-{max(s['cpu']):.0f}"
+              f" us/eval")
 print()
 for mode in sorted({r["mode"] for r in rows}):
     best = {}

@@ -4,6 +4,9 @@
 # molds/cup.yaml, EVALS evaluations per island. Prints one CSV row per run, then the ratios of
 # evaluations/s against P = 1: measured (best wall) and "idle" (a load-independent estimate from
 # each rank's CPU seconds per generation, experiments/islands/speedup.py), with the load.
+# MODES="mpi threads serial": serial runs the same P islands in one thread, so the very same
+# evaluations as P ranks: its ratio is the speed-up of the same work (P islands' layouts cost
+# more to evaluate than one island's: speedup.py prints both).
 #   experiments/islands/speedup.sh            # build/mtcs, REPS=3, EVALS=12000, PS="1 2"
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -22,7 +25,9 @@ for rep in $(seq 1 "$REPS"); do
     for mode in $MODES; do
       run=$out/$mode-$P-$rep
       args="optimize $MOLD --islands $P --seed 1 --evaluations $((EVALS * P)) --migration-every 5 --verbose --out $run"
-      if [ "$mode" = mpi ]; then cmd="$MPIRUN -np $P $MTCS $args --threads 1"; else cmd="$MTCS $args --threads $P"; fi
+      if [ "$mode" = mpi ]; then cmd="$MPIRUN -np $P $MTCS $args --threads 1"
+      elif [ "$mode" = serial ]; then cmd="$MTCS $args --threads 1"  # the same islands, one thread
+      else cmd="$MTCS $args --threads $P"; fi
       cut -d' ' -f1 /proc/loadavg >"$run.load"
       MTCS_ISLANDS_WORK_FILE=$run.work /usr/bin/time -o "$run.time" -f "%U %S" $cmd >/dev/null 2>"$run.err"
     done

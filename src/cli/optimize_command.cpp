@@ -17,6 +17,7 @@
 #include "mtcs/io/input_error.h"
 #include "mtcs/opt/benchmark_problems.h"
 #include "mtcs/run/interruption.h"
+#include "mtcs/run/islands.h"
 #include "mtcs/run/optimize_run.h"
 #include "mtcs/run/progress_line.h"
 #include "mtcs/run/test_problem_run.h"
@@ -66,7 +67,8 @@ int run_test_problem(const Options& o) {
 
 int run_optimize(const Options& o) {
   std::optional<tbb::global_control> limit;
-  if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
+  if (const int threads = o.threads > 0 ? o.threads : run::threads_per_rank(); threads > 0)
+    limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
   run::OptimizeRequest request{o.mold, o.resume, o.out,
                                {o.config, o.algorithm == "es" ? "" : o.algorithm, o.ref, o.seed, o.evaluations}, o.polish,
                                [](const std::string& dir) { make_output_folder(dir); }, o.islands};
@@ -105,7 +107,9 @@ Command add_optimize_command(CLI::App& app) {
   sub->add_option("--seed", o->seed, "random seed (overrides the config)")->check(whole_number(0, 9007199254740992));
   sub->add_option("--evaluations", o->evaluations, "evaluation budget (overrides the config)")
       ->check(whole_number(1, 2000000000));
-  sub->add_option("--threads", o->threads, "worker threads (default: all cores); results do not depend on it")
+  sub->add_option("--threads", o->threads,
+                  "worker threads (default: all cores; under mpirun the cores / ranks on the machine); results do"
+                  " not depend on it")
       ->check(CLI::Range(0, 1024));
   add_log_flags(sub);
   sub->add_option("--resume", o->resume, "continue the run stored in this folder");

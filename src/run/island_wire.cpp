@@ -80,19 +80,45 @@ std::string encode(const std::vector<opt::Individual>& individuals) {
 
 std::vector<opt::Individual> decode_individuals(const std::string& bytes) { return Reader(bytes).population(); }
 
-std::string encode(const opt::Generation& g) {
-  Writer w;
+namespace {
+
+void put(Writer& w, const opt::Generation& g) {
   w.put(std::int64_t(g.index)), w.put(std::int64_t(g.evaluations)), w.put(g.population);
-  return w.out;
 }
 
-opt::Generation decode_generation(const std::string& bytes) {
-  Reader r(bytes);
+opt::Generation get(Reader& r) {
   opt::Generation g;
   g.index = int(r.get<std::int64_t>());
   g.evaluations = long(r.get<std::int64_t>());
   g.population = r.population();
   return g;
+}
+
+}  // namespace
+
+std::string encode(const opt::Generation& g) {
+  Writer w;
+  put(w, g);
+  return w.out;
+}
+
+opt::Generation decode_generation(const std::string& bytes) {
+  Reader r(bytes);
+  return get(r);
+}
+
+std::string encode(const std::vector<opt::Generation>& generations) {
+  Writer w;
+  w.put(std::uint64_t(generations.size()));
+  for (const auto& g : generations) put(w, g);
+  return w.out;
+}
+
+std::vector<opt::Generation> decode_generations(const std::string& bytes) {
+  Reader r(bytes);
+  std::vector<opt::Generation> out(r.get<std::uint64_t>());
+  for (auto& g : out) g = get(r);
+  return out;
 }
 
 }  // namespace mtcs::run::wire

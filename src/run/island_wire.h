@@ -13,5 +13,8 @@ std::string encode(const std::vector<opt::Individual>& individuals);
 std::vector<opt::Individual> decode_individuals(const std::string& bytes);
 std::string encode(const opt::Generation& g);
 opt::Generation decode_generation(const std::string& bytes);
+// An island's generations since the last meeting of the islands, in order.
+std::string encode(const std::vector<opt::Generation>& generations);
+std::vector<opt::Generation> decode_generations(const std::string& bytes);
 
 }  // namespace mtcs::run::wire

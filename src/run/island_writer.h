@@ -8,6 +8,7 @@
 
 #include <condition_variable>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -18,16 +19,19 @@ namespace mtcs::run {
 
 class IslandWriter {
  public:
-  explicit IslandWriter(store::RunStore& db);
+  // `complete` fills in what the islands' generations leave to the writer (the archipelago's),
+  // in the writer's thread, before they are saved.
+  IslandWriter(store::RunStore& db, std::function<void(store::IslandsGeneration&)> complete);
   // Stops the thread after what is queued; an error not reported yet is dropped (the run is
   // ending through another exception then).
   ~IslandWriter();
   IslandWriter(const IslandWriter&) = delete;
   IslandWriter& operator=(const IslandWriter&) = delete;
 
-  // Queues a generation; waits while kMaxQueued are waiting (a store slower than the islands
-  // sets the pace, the memory stays bounded). Throws the error of an earlier write.
-  void push(store::IslandsGeneration g);
+  // Queues generations (a meeting's, written in one transaction unless more are waiting); waits
+  // while kMaxQueued island generations are waiting (a store slower than the islands sets the
+  // pace, the memory stays bounded). Throws the error of an earlier write.
+  void push(std::vector<store::IslandsGeneration> generations);
   // Returns when every queued generation is committed; throws the error of a write.
   void finish();
 
@@ -39,11 +43,14 @@ class IslandWriter {
   Times times() const;
 
  private:
-  static constexpr std::size_t kMaxQueued = 16;
+  // Island generations (a generation of P islands counts P): room for many meetings of a few
+  // islands, so that a writer at its lower priority lags without holding an island up.
+  static constexpr std::size_t kMaxQueued = 512;
   void loop();
   void rethrow_failure();
 
   store::RunStore& db_;
+  std::function<void(store::IslandsGeneration&)> complete_;
   mutable std::mutex mutex_;
   std::condition_variable changed_;
   std::vector<store::IslandsGeneration> queued_;

@@ -11,6 +11,8 @@
 #include <fstream>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
+#include <thread>
 
 #include "island_writer.h"
 #include "mtcs/io/input_error.h"
@@ -64,19 +66,31 @@ class Island {
 };
 
 // Every island's members in one generation (the archipelago's): ES best first (stable), SMS-EMOA
-// in island order.
-opt::Generation merge(const MoldOptimizer& base, const opt::Problem& problem, const std::vector<opt::Generation>& islands) {
+// in island order. `from` (if given) gets where each member comes from: its index among the
+// islands' members in island order (the store keeps the archipelago as these references).
+opt::Generation merge(const MoldOptimizer& base, const opt::Problem& problem, const std::vector<opt::Generation>& islands,
+                      std::vector<int>* from = nullptr) {
+  std::vector<const opt::Individual*> all;
   opt::Generation m;
   m.index = islands.front().index;
   for (const auto& g : islands) {
     m.evaluations += g.evaluations;
-    m.population.insert(m.population.end(), g.population.begin(), g.population.end());
+    for (const auto& ind : g.population) all.push_back(&ind);
   }
+  std::vector<int> order(all.size());
+  for (std::size_t j = 0; j < order.size(); ++j) order[j] = int(j);
   if (!base.pareto())
-    std::stable_sort(m.population.begin(), m.population.end(),
-                     [&](const opt::Individual& a, const opt::Individual& b) { return problem.better(a.score, b.score); });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return problem.better(all[std::size_t(a)]->score, all[std::size_t(b)]->score); });
+  m.population.reserve(all.size());
+  for (const int j : order) m.population.push_back(*all[std::size_t(j)]);
+  if (from) *from = std::move(order);
   return m;
 }
+
+// The islands meet at least this often (stored generations), migrating or not: what rank 0 holds
+// unstored, what a kill -9 loses and how long a stop waits stay small.
+constexpr std::size_t kMaxStretch = 10;
 
 class ThreadTransport final : public IslandTransport {
  public:
@@ -95,7 +109,9 @@ class ThreadTransport final : public IslandTransport {
                                         outgoing[std::size_t(s)].end());
     return arrivals;
   }
-  std::vector<opt::Generation> gather(const std::vector<opt::Generation>& local, int) override { return local; }
+  std::vector<std::vector<opt::Generation>> gather(std::vector<std::vector<opt::Generation>> local, int) override {
+    return local;
+  }
   std::vector<opt::Generation> scatter(const std::vector<opt::Generation>& all, int) override { return all; }
   bool broadcast(bool value) override { return value; }
   std::string broadcast(const std::string& value) override { return value; }
@@ -112,6 +128,17 @@ int mpi_launch_size() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
     if (const char* v = std::getenv(name)) return std::max(1, std::atoi(v));
   return 0;
+}
+
+int threads_per_rank() {
+  if (mpi_launch_size() == 0) return 0;
+  int local = 1;  // ranks on this machine (Open MPI; MPICH: MPI_LOCALNRANKS)
+  for (const char* name : {"OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS"})
+    if (const char* v = std::getenv(name)) {
+      local = std::max(1, std::atoi(v));
+      break;
+    }
+  return std::max(1, int(std::thread::hardware_concurrency()) / local);
 }
 
 std::string IslandSettings::to_text() const {
@@ -169,13 +196,13 @@ double process_cpu_seconds() { return cpu_seconds(CLOCK_PROCESS_CPUTIME_ID); }
 double thread_cpu_seconds() { return cpu_seconds(CLOCK_THREAD_CPUTIME_ID); }
 
 // Where a process's wall time goes in run_islands, for the speed study (the --verbose log).
-// Also the CPU seconds of this thread in each stored generation (its work: with one thread a
-// rank, what the rank would take on a core of its own), for experiments/islands/speedup.py.
+// Also the CPU seconds of this thread between two meetings of the islands (its work: with one
+// thread a rank, what the rank would take on a core of its own), for experiments/islands/speedup.py.
 struct Phases {
   double evaluate = 0, migrate = 0, gather = 0, store = 0, stop = 0;
   std::vector<double> work;
   double work_start = thread_cpu_seconds(), waiting_cpu = 0;
-  void generation_stored() {
+  void met() {
     const double now = thread_cpu_seconds();
     work.push_back(now - work_start - waiting_cpu);
     work_start = now, waiting_cpu = 0;
@@ -206,7 +233,7 @@ struct Phases {
 
 StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, const IslandSettings& s,
                       IslandTransport& transport, store::RunStore* db,
-                      const std::function<void(const opt::Generation&, const std::string&)>& on_line,
+                      const std::function<void(int, const std::function<std::string()>&)>& on_line,
                       const std::function<bool()>& stop) {
   const auto t0 = std::chrono::steady_clock::now();
   const double cpu0 = process_cpu_seconds();
@@ -248,43 +275,91 @@ StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, con
     for (const auto& g : gens) local_evals_before += g.evaluations;
 
   // The writer's store, written from a thread of its own while the islands go on.
+  // The archipelago's generation (all members, merged) is made there too, off the islands' path.
   std::optional<IslandWriter> writing;
-  if (db) writing.emplace(*db);
+  if (db)
+    writing.emplace(*db, [&](store::IslandsGeneration& g) { g.merged = merge(base, problem, g.islands, &g.merged_from); });
+  std::vector<opt::Generation> last;  // every island's last generation (the writer's)
   StoredRun r;
-  // Stores one generation of every island (the writer), and tells the live line.
-  auto store = [&] {
-    std::vector<opt::Generation> every = phases.waited(phases.gather, [&] { return transport.gather(gens, P); });
+  // Each local island's generations since the last meeting, and the seconds at which the first
+  // local island (island 0 at the writer) had each.
+  std::vector<std::vector<opt::Generation>> stretch(islands.size());
+  std::vector<double> stretch_seconds;
+  // At a meeting: the writer stores the stretch of every island, generation by generation, and
+  // tells the live line (resuming: takes the last generation as the run's). Returns whether to
+  // stop: the writer's stop(), told everywhere before the writer's work, which the others need
+  // not wait for.
+  auto meet = [&](bool resumed) {
+    std::vector<std::vector<opt::Generation>> every =
+        phases.waited(phases.gather, [&] { return transport.gather(std::move(stretch), P); });
+    stretch.assign(islands.size(), {});
+    const bool stopping = phases.waited(phases.stop, [&] { return transport.broadcast(stop && stop()); });
     if (transport.writer()) {
       Phases::timed(phases.store, [&] {
-        r.last = merge(base, problem, every);
-        const double sec = elapsed();
-        if (on_line) on_line(r.last, island_progress_line(base, r.last, every, sec, r.last.evaluations - evals_before));
-        if (writing) writing->push({std::move(every), r.last, seconds_before + sec});
+        const std::size_t n = every.front().size();
+        std::vector<store::IslandsGeneration> stored;
+        for (const auto& island : every)
+          if (island.size() != n) throw std::logic_error("islands: islands met at different generations");
+        for (std::size_t k = 0; k < n; ++k) {
+          store::IslandsGeneration gen;
+          for (auto& island : every) gen.islands.push_back(std::move(island[k]));
+          if (k + 1 == n) last = gen.islands;
+          if (resumed) continue;
+          const double sec = stretch_seconds[k];
+          if (on_line)
+            on_line(gen.islands.front().index, [&] {
+              const opt::Generation merged = merge(base, problem, gen.islands);
+              return island_progress_line(base, merged, gen.islands, sec, merged.evaluations - evals_before);
+            });
+          if (writing) {
+            gen.seconds = seconds_before + sec;
+            stored.push_back(std::move(gen));
+          }
+        }
+        if (writing && !stored.empty()) writing->push(std::move(stored));
       });
     }
-    phases.generation_stored();
+    stretch_seconds.clear();
+    phases.met();
+    return stopping;
   };
-  if (!resuming) store();
-  else if (transport.writer()) r.last = merge(base, problem, transport.gather(gens, P));
-  else transport.gather(gens, P);
+  for (std::size_t k = 0; k < islands.size(); ++k) stretch[k].push_back(gens[k]);
+  stretch_seconds.push_back(elapsed());
+  bool stopping = meet(resuming);
 
-  while (!islands.front().done(gens.front()) &&
-         !phases.waited(phases.stop, [&] { return transport.broadcast(stop && stop()); })) {
+  // Every island runs to the next meeting on its own (a migration, the end, or kMaxStretch
+  // generations on); all islands step alike, so they meet at the same generation.
+  auto runs_on = [&](std::size_t k) {
+    const Island& island = islands[k];
+    return !island.done(gens[k]) && !island.migrates_after(gens[k], s.migration_every) &&
+           stretch[k].size() < kMaxStretch;
+  };
+  while (!islands.front().done(gens.front()) && !stopping) {
     Phases::timed(phases.evaluate, [&] {
-      tbb::parallel_for(std::size_t(0), islands.size(), [&](std::size_t k) { gens[k] = islands[k].advance(gens[k]); });
+      tbb::parallel_for(std::size_t(0), islands.size(), [&](std::size_t k) {
+        do {
+          gens[k] = islands[k].advance(gens[k]);
+          stretch[k].push_back(gens[k]);
+          if (k == 0) stretch_seconds.push_back(elapsed());
+        } while (runs_on(k));
+      });
     });
     if (islands.front().migrates_after(gens.front(), s.migration_every) && P > 1) {
       phases.waited(phases.migrate, [&] {
         std::vector<std::vector<opt::Individual>> out;
         for (std::size_t k = 0; k < islands.size(); ++k) out.push_back(islands[k].emigrants(gens[k], s.migrants));
         const auto arrivals = transport.migrate(out, P, s.topology);
-        for (std::size_t k = 0; k < islands.size(); ++k) gens[k] = islands[k].immigrate(gens[k], arrivals[k]);
+        for (std::size_t k = 0; k < islands.size(); ++k) {
+          gens[k] = islands[k].immigrate(gens[k], arrivals[k]);
+          stretch[k].back() = gens[k];
+        }
       });
     }
-    store();
+    stopping = meet(false);
   }
   if (writing) Phases::timed(phases.store, [&] { writing->finish(); });
   r.interrupted = !islands.front().done(gens.front());
+  if (transport.writer()) r.last = merge(base, problem, last);
   if (base.pareto() && transport.writer())
     std::stable_sort(r.last.population.begin(), r.last.population.end(),
                      [&](const opt::Individual& a, const opt::Individual& b) { return problem.better(a.score, b.score); });

@@ -1,6 +1,6 @@
 // One island per MPI rank (mtcs built with MTCS_WITH_MPI, started by mpirun): migrants go
 // point to point around the ring, or to every rank (all-gather) when fully connected; rank 0
-// gathers every island's generation to store it. Messages are generations and migrants as
+// gathers every island's generations since the last meeting to store them. Messages are generations and migrants as
 // bytes (island_wire.h), every number as its exact bits. Every call waits through await():
 // MPI's blocking calls poll without end, which takes the core of a rank that still evaluates
 // (2 ranks on 2 shared cores: 0.7x the evaluations/s of one rank, experiments/islands).
@@ -92,10 +92,13 @@ class MpiTransport final : public IslandTransport {
     return {arrivals};
   }
 
-  std::vector<opt::Generation> gather(const std::vector<opt::Generation>& local, int) override {
-    std::vector<opt::Generation> out;
-    for (const std::string& bytes : gather_bytes(wire::encode(local.front())))
-      out.push_back(wire::decode_generation(bytes));
+  std::vector<std::vector<opt::Generation>> gather(std::vector<std::vector<opt::Generation>> local, int) override {
+    std::vector<std::vector<opt::Generation>> out;
+    // Rank 0 keeps its own island's generations as they are (no bytes to itself).
+    for (std::string& bytes : gather_bytes(rank_ == 0 ? std::string() : wire::encode(local.front()))) {
+      if (out.empty()) out.push_back(std::move(local.front()));
+      else out.push_back(wire::decode_generations(bytes));
+    }
     return out;
   }
 

@@ -117,8 +117,9 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
   if (transport) {
     const ProgressPrinter printer(optimizer, config.log_every);
     stored = run_islands(optimizer, problem, islands, *transport, db ? &*db : nullptr,
-                         [&](const opt::Generation& g, const std::string& line) {
-                           printer.print(optimizer.pareto() ? g.index / optimizer.mu() : g.index, line);
+                         [&](int index, const std::function<std::string()>& line) {
+                           const int generation = optimizer.pareto() ? index / optimizer.mu() : index;
+                           if (printer.prints(generation)) printer.print(generation, line());
                          },
                          stop);
     if (!writer) return {out_dir, mold_path, false, 0, 0, 0};  // rank 0 writes the outputs

@@ -47,12 +47,14 @@ ProgressPrinter::ProgressPrinter(const MoldOptimizer& optimizer, int log_every)
 void ProgressPrinter::operator()(const opt::Generation& g, double seconds, long evaluations) const {
   // SMS-EMOA's generations are its stored steps, every mu.
   const int generation = optimizer_->pareto() ? g.index / optimizer_->mu() : g.index;
-  if (quiet_ || (!tty_ && generation % log_every_ != 0)) return;
+  if (!prints(generation)) return;
   print(generation, progress_line(*optimizer_, g, seconds, evaluations));
 }
 
+bool ProgressPrinter::prints(int generation) const { return !quiet_ && (tty_ || generation % log_every_ == 0); }
+
 void ProgressPrinter::print(int generation, const std::string& line) const {
-  if (quiet_ || (!tty_ && generation % log_every_ != 0)) return;
+  if (!prints(generation)) return;
   if (tty_) std::fprintf(stderr, "\r%s\033[K", line.c_str());
   else spdlog::info(line);
 }

@@ -150,9 +150,26 @@ auto reading(const std::string& path, F&& read) {
 
 }  // namespace
 
+// The statements of save_islands, prepared once a connection (preparing them per commit cost
+// the writer thread a few percent of an island run's CPU).
+struct RunStore::Prepared {
+  Prepared(sqlite3* db, bool by_reference)
+      : island_row(db, by_reference ? "INSERT INTO island_individual(island, generation, rank, genotype, steps, objectives,"
+                                      " violation, feasible, value, violations, archipelago_rank)"
+                                      " VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"
+                                    : "INSERT INTO island_individual(island, generation, rank, genotype, steps, objectives,"
+                                      " violation, feasible, value, violations) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"),
+        island_generation(db,
+                          "INSERT INTO island_generation(island, idx, evaluations, best, feasible_share, seconds)"
+                          " VALUES(?, ?, ?, ?, ?, ?)"),
+        generation(db, "INSERT INTO generation(idx, evaluations, best, feasible_share, seconds) VALUES(?, ?, ?, ?, ?)") {}
+  Statement island_row, island_generation, generation;
+};
+
 RunStore::RunStore(sqlite3* db, std::string path, int lock_fd) : db_(db), path_(std::move(path)), lock_fd_(lock_fd) {}
 RunStore::RunStore(RunStore&& o) noexcept
-    : db_(o.db_), path_(std::move(o.path_)), lock_fd_(o.lock_fd_), island_tables_(o.island_tables_) {
+    : db_(o.db_), path_(std::move(o.path_)), lock_fd_(o.lock_fd_), island_tables_(o.island_tables_),
+      archipelago_by_reference_(o.archipelago_by_reference_), prepared_(std::move(o.prepared_)) {
   o.db_ = nullptr;
   o.lock_fd_ = -1;
 }
@@ -161,9 +178,12 @@ RunStore& RunStore::operator=(RunStore&& o) noexcept {
   std::swap(path_, o.path_);
   std::swap(lock_fd_, o.lock_fd_);
   std::swap(island_tables_, o.island_tables_);
+  std::swap(archipelago_by_reference_, o.archipelago_by_reference_);
+  std::swap(prepared_, o.prepared_);
   return *this;
 }
 RunStore::~RunStore() {
+  prepared_.reset();  // finalized before the close
   sqlite3_close(db_);
   if (lock_fd_ >= 0) ::close(lock_fd_);  // closing drops the flock
 }
@@ -245,25 +265,36 @@ std::map<std::string, std::string> RunStore::meta() const {
 
 namespace {
 
-// One generation's rows in the run's tables (inside the caller's transaction).
-void insert_generation(sqlite3* db, const opt::Generation& g, double seconds) {
-  int feasible = 0;
+// A generation's summary row in the run's table (`gen`: its prepared insert).
+void insert_summary(Statement& gen, const opt::Generation& g, double seconds) {
+  long feasible = 0;
+  for (const auto& ind : g.population) feasible += ind.score.feasible ? 1 : 0;
+  gen.reset();
+  gen.bind(1, g.index).bind(2, g.evaluations);
+  gen.bind(3, g.population.empty() ? 0.0 : g.population.front().score.value);
+  gen.bind(4, g.population.empty() ? 0.0 : double(feasible) / double(g.population.size())).bind(5, seconds).step();
+}
+
+// One generation's members in the run's table (inside the caller's transaction).
+void insert_members(sqlite3* db, const opt::Generation& g) {
   Statement ins(db,
                 "INSERT INTO individual(generation, rank, genotype, steps, objectives, violation, feasible, value,"
                 " violations) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?)");
   for (std::size_t r = 0; r < g.population.size(); ++r) {
     const auto& ind = g.population[r];
-    feasible += ind.score.feasible ? 1 : 0;
     ins.bind(1, g.index).bind(2, int(r)).bind(3, ind.x).bind(4, ind.steps).bind(5, ind.score.objectives);
     ins.bind(6, ind.score.violation).bind(7, ind.score.feasible ? 1 : 0).bind(8, ind.score.value);
     ins.bind(9, ind.score.detail).step();
     ins.reset();
     io::crash_point("store-row");
   }
+}
+
+// One generation's rows in the run's tables (inside the caller's transaction).
+void insert_generation(sqlite3* db, const opt::Generation& g, double seconds) {
+  insert_members(db, g);
   Statement gen(db, "INSERT INTO generation(idx, evaluations, best, feasible_share, seconds) VALUES(?, ?, ?, ?, ?)");
-  gen.bind(1, g.index).bind(2, g.evaluations);
-  gen.bind(3, g.population.empty() ? 0.0 : g.population.front().score.value);
-  gen.bind(4, g.population.empty() ? 0.0 : double(feasible) / double(g.population.size())).bind(5, seconds).step();
+  insert_summary(gen, g, seconds);
 }
 
 }  // namespace
@@ -293,42 +324,79 @@ bool has_island_tables(sqlite3* db) {
   return q.integer(0) > 0;
 }
 
-}  // namespace
-
-namespace {
-
-// One generation of every island and the archipelago's (inside the caller's transaction).
-void insert_islands(sqlite3* db, const IslandsGeneration& gen) {
-  Statement ins(db,
-                "INSERT INTO island_individual(island, generation, rank, genotype, steps, objectives, violation,"
-                " feasible, value, violations) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
-  Statement row(db,
-                "INSERT INTO island_generation(island, idx, evaluations, best, feasible_share, seconds)"
-                " VALUES(?, ?, ?, ?, ?, ?)");
-  for (std::size_t i = 0; i < gen.islands.size(); ++i) {
-    const opt::Generation& g = gen.islands[i];
-    int feasible = 0;
-    for (std::size_t r = 0; r < g.population.size(); ++r) {
-      const auto& ind = g.population[r];
-      feasible += ind.score.feasible ? 1 : 0;
-      ins.bind(1, int(i)).bind(2, g.index).bind(3, int(r)).bind(4, ind.x).bind(5, ind.steps);
-      ins.bind(6, ind.score.objectives).bind(7, ind.score.violation).bind(8, ind.score.feasible ? 1 : 0);
-      ins.bind(9, ind.score.value).bind(10, ind.score.detail).step();
-      ins.reset();
-      io::crash_point("store-island-row");
-    }
-    row.bind(1, int(i)).bind(2, g.index).bind(3, g.evaluations);
-    row.bind(4, g.population.empty() ? 0.0 : g.population.front().score.value);
-    row.bind(5, g.population.empty() ? 0.0 : double(feasible) / double(g.population.size())).bind(6, gen.seconds).step();
-    row.reset();
-  }
-  insert_generation(db, gen.merged, gen.seconds);
+// Whether the island rows carry the archipelago's ranks (island tables made since 2026-11-25),
+// and the run's table no copy of the archipelago's members.
+bool has_archipelago_rank(sqlite3* db) {
+  Statement q(db, "SELECT count(*) FROM pragma_table_info('island_individual') WHERE name = 'archipelago_rank'");
+  q.step();
+  return q.integer(0) > 0;
 }
 
 }  // namespace
 
+namespace {
+
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+}
+
+// Each island member's rank in the archipelago's generation (island order), checked against
+// `merged`: the store keeps the archipelago as these references, so they must be right.
+std::vector<int> archipelago_ranks(const IslandsGeneration& gen) {
+  std::vector<const opt::Individual*> all;
+  for (const auto& g : gen.islands)
+    for (const auto& ind : g.population) all.push_back(&ind);
+  const auto n = all.size();
+  const auto& merged = gen.merged.population;
+  if (merged.size() != n || (!gen.merged_from.empty() && gen.merged_from.size() != n))
+    throw std::invalid_argument("run store: the archipelago's generation " + std::to_string(gen.merged.index) +
+                                " is not its islands' members");
+  std::vector<int> rank(n, -1);
+  for (std::size_t j = 0; j < n; ++j) {
+    const auto from = gen.merged_from.empty() ? j : std::size_t(gen.merged_from[j]);
+    if (from >= n || rank[from] >= 0 || !same_bits(all[from]->x, merged[j].x) ||
+        !same_bits({all[from]->score.value}, {merged[j].score.value}))
+      throw std::invalid_argument("run store: member " + std::to_string(j) + " of the archipelago's generation " +
+                                  std::to_string(gen.merged.index) + " is not the island member it names");
+    rank[from] = int(j);
+  }
+  return rank;
+}
+
+}  // namespace
+
+// One generation of every island and the archipelago's (inside the caller's transaction).
+void RunStore::insert_islands(const IslandsGeneration& gen) {
+  Prepared& p = *prepared_;
+  const std::vector<int> archipelago_rank = archipelago_ranks(gen);
+  std::size_t member = 0;
+  for (std::size_t i = 0; i < gen.islands.size(); ++i) {
+    const opt::Generation& g = gen.islands[i];
+    int feasible = 0;
+    for (std::size_t r = 0; r < g.population.size(); ++r, ++member) {
+      const auto& ind = g.population[r];
+      feasible += ind.score.feasible ? 1 : 0;
+      Statement& ins = p.island_row;
+      ins.reset();
+      ins.bind(1, int(i)).bind(2, g.index).bind(3, int(r)).bind(4, ind.x).bind(5, ind.steps);
+      ins.bind(6, ind.score.objectives).bind(7, ind.score.violation).bind(8, ind.score.feasible ? 1 : 0);
+      ins.bind(9, ind.score.value).bind(10, ind.score.detail);
+      if (archipelago_by_reference_) ins.bind(11, archipelago_rank[member]);
+      ins.step();
+      io::crash_point("store-island-row");
+    }
+    Statement& row = p.island_generation;
+    row.reset();
+    row.bind(1, int(i)).bind(2, g.index).bind(3, g.evaluations);
+    row.bind(4, g.population.empty() ? 0.0 : g.population.front().score.value);
+    row.bind(5, g.population.empty() ? 0.0 : double(feasible) / double(g.population.size())).bind(6, gen.seconds).step();
+  }
+  if (!archipelago_by_reference_) insert_members(db_, gen.merged);
+  insert_summary(p.generation, gen.merged, gen.seconds);
+}
+
 void RunStore::save_islands(const std::vector<opt::Generation>& islands, const opt::Generation& merged, double seconds) {
-  save_islands({IslandsGeneration{islands, merged, seconds}});
+  save_islands({IslandsGeneration{islands, merged, seconds, {}}});
 }
 
 void RunStore::save_islands(const std::vector<IslandsGeneration>& batch) {
@@ -336,14 +404,19 @@ void RunStore::save_islands(const std::vector<IslandsGeneration>& batch) {
   errno = 0;
   try {
     exec(db_, "BEGIN IMMEDIATE;");
-    if (!island_tables_)
+    if (!island_tables_) {
+      // New tables keep the archipelago as references (archipelago_rank), in generation order
+      // (appended, one b-tree); tables of an older store keep their schema and its copies.
       exec(db_,
-         "CREATE TABLE IF NOT EXISTS island_generation(island INTEGER, idx INTEGER, evaluations INTEGER, best REAL,"
-         "  feasible_share REAL, seconds REAL, PRIMARY KEY(island, idx));"
-         "CREATE TABLE IF NOT EXISTS island_individual(island INTEGER, generation INTEGER, rank INTEGER, genotype BLOB,"
-         "  steps BLOB, objectives BLOB, violation REAL, feasible INTEGER, value REAL, violations TEXT,"
-         "  PRIMARY KEY(island, generation, rank));");
-    for (const IslandsGeneration& gen : batch) insert_islands(db_, gen);
+           "CREATE TABLE IF NOT EXISTS island_generation(island INTEGER, idx INTEGER, evaluations INTEGER, best REAL,"
+           "  feasible_share REAL, seconds REAL, PRIMARY KEY(island, idx));"
+           "CREATE TABLE IF NOT EXISTS island_individual(island INTEGER, generation INTEGER, rank INTEGER, genotype BLOB,"
+           "  steps BLOB, objectives BLOB, violation REAL, feasible INTEGER, value REAL, violations TEXT,"
+           "  archipelago_rank INTEGER, PRIMARY KEY(generation, island, rank)) WITHOUT ROWID;");
+      archipelago_by_reference_ = has_archipelago_rank(db_);
+      prepared_ = std::make_unique<Prepared>(db_, archipelago_by_reference_);
+    }
+    for (const IslandsGeneration& gen : batch) insert_islands(gen);
     exec(db_, "COMMIT;");
     island_tables_ = true;
   } catch (const std::exception& e) {
@@ -418,6 +491,14 @@ std::optional<opt::Generation> RunStore::generation(int index) const {
                 " WHERE generation = ? ORDER BY rank");
     q.bind(1, index);
     read_members(q, out);
+    if (out.population.empty() && has_island_tables(db_) && has_archipelago_rank(db_)) {
+      // An island run's archipelago: its members are the island rows, in their archipelago rank.
+      Statement a(db_,
+                  "SELECT genotype, steps, objectives, violation, feasible, value, violations FROM island_individual"
+                  " WHERE generation = ? ORDER BY archipelago_rank");
+      a.bind(1, index);
+      read_members(a, out);
+    }
     return out;
   });
 }

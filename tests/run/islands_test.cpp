@@ -6,11 +6,13 @@
 #include <catch2/catch.hpp>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <thread>
 #include <unistd.h>
 
 #include "mtcs/opt/migration.h"
@@ -127,7 +129,7 @@ TEST_CASE("islands: an interrupted archipelago resumed ends as the uninterrupted
     r.islands.topology = opt::Topology::fully_connected;
     const run::OptimizeResult done = optimize(r);
     CHECK_FALSE(done.interrupted);
-    // Stopped after 3 stored generations (a migration falls in the stretch after), then resumed.
+    // Stopped at the islands' 4th meeting (stop() is read where they meet), then resumed.
     r.out = parts.string();
     int calls = 0;
     const run::OptimizeResult stopped = optimize(r, [&] { return ++calls > 3; });
@@ -246,4 +248,30 @@ TEST_CASE("islands: messages between ranks keep every bit", "[run][islands]") {
   CHECK_FALSE(back.population[0].score.feasible);
   CHECK(back.population[1].score.value == -1);
   CHECK_THROWS(run::wire::decode_generation(run::wire::encode(g).substr(0, 30)));
+  // An island's generations between two meetings, in one message.
+  opt::Generation next = g;
+  next.index = 13, next.population.pop_back();
+  const auto both = run::wire::decode_generations(run::wire::encode(std::vector<opt::Generation>{g, next}));
+  REQUIRE(both.size() == 2);
+  CHECK(both[0].index == 12);
+  CHECK(both[0].population.size() == 2);
+  CHECK(both[1].index == 13);
+  REQUIRE(both[1].population.size() == 1);
+  CHECK(bits(both[1].population[0].x) == bits(g.population[0].x));
+  CHECK(run::wire::decode_generations(run::wire::encode(std::vector<opt::Generation>{})).empty());
+}
+
+TEST_CASE("islands: a rank's default threads share the machine's cores with the other ranks on it", "[run][islands]") {
+  const char* saved_size = std::getenv("OMPI_COMM_WORLD_SIZE");
+  const char* saved_local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+  if (saved_size || saved_local || std::getenv("PMI_SIZE")) return;  // under mpirun itself: leave it be
+  const int cores = int(std::thread::hardware_concurrency());
+  CHECK(run::threads_per_rank() == 0);  // not under mpirun: all cores
+  ::setenv("OMPI_COMM_WORLD_SIZE", "4", 1);
+  ::setenv("OMPI_COMM_WORLD_LOCAL_SIZE", "2", 1);
+  CHECK(run::threads_per_rank() == std::max(1, cores / 2));
+  ::setenv("OMPI_COMM_WORLD_LOCAL_SIZE", "4096", 1);
+  CHECK(run::threads_per_rank() == 1);
+  ::unsetenv("OMPI_COMM_WORLD_SIZE");
+  ::unsetenv("OMPI_COMM_WORLD_LOCAL_SIZE");
 }

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <sqlite3.h>
 #include <unistd.h>
 
 #include "mtcs/store/run_store.h"
@@ -80,7 +81,83 @@ TEST_CASE("island rows: one row per island and generation, the archipelago's bes
   CHECK_FALSE(read.island_generation(2, 2));
   // A generation stored twice is refused whole: no island row of it is left behind.
   RunStore again = RunStore::resume(path);
-  CHECK_THROWS(again.save_islands({generation(4, 15, 1), generation(3, 15, 2)}, generation(4, 30, 1), 5));
+  const std::vector<opt::Generation> twice{generation(4, 15, 1), generation(3, 15, 2)};
+  opt::Generation all = twice[0];
+  all.population.insert(all.population.end(), twice[1].population.begin(), twice[1].population.end());
+  CHECK_THROWS_WITH(again.save_islands(twice, all, 5), Catch::Contains("UNIQUE"));
   CHECK_FALSE(again.island_generation(0, 4));
   CHECK(again.last()->index == 3);
+}
+
+TEST_CASE("island rows: the archipelago is stored as references to island rows, read back in its order",
+          "[store][islands]") {
+  const std::string path = fresh("references.sqlite");
+  const std::vector<opt::Generation> islands{generation(0, 3, 10), generation(0, 3, 5)};
+  // The archipelago best first: island 1's members (5, 6, 7), then island 0's (10, 11, 12).
+  store::IslandsGeneration gen{islands, {}, 0.5, {3, 4, 5, 0, 1, 2}};
+  gen.merged.index = 0, gen.merged.evaluations = 6;
+  for (const int j : gen.merged_from)
+    gen.merged.population.push_back(islands[std::size_t(j / 3)].population[std::size_t(j % 3)]);
+  {
+    RunStore s = RunStore::create(path, {{"program", "mtcs test"}});
+    s.save_islands({gen});
+    // A reference to the wrong member is refused, and nothing of its generation is kept.
+    store::IslandsGeneration wrong = gen;
+    for (auto& g : wrong.islands) g.index = 1;
+    wrong.merged.index = 1;
+    std::swap(wrong.merged_from[0], wrong.merged_from[1]);
+    CHECK_THROWS_WITH(s.save_islands({wrong}), Catch::Contains("not the island member it names"));
+    CHECK(s.last()->index == 0);
+  }
+  const RunStore read = RunStore::open(path);
+  const auto back = read.generation(0);
+  REQUIRE(back);
+  REQUIRE(back->population.size() == 6);
+  std::vector<double> values;
+  for (const auto& ind : back->population) values.push_back(ind.score.value);
+  CHECK(values == std::vector<double>{5, 6, 7, 10, 11, 12});
+  CHECK(std::signbit(back->population[3].x[1]));
+  CHECK_FALSE(back->population[5].score.feasible);
+  CHECK(read.summaries().front().best == 5);
+  CHECK(read.summaries().front().feasible_share == Approx(4.0 / 6));
+  // Stored once: the run's table holds no copy of the members.
+  sqlite3* db = nullptr;
+  REQUIRE(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK);
+  sqlite3_stmt* q = nullptr;
+  REQUIRE(sqlite3_prepare_v2(db, "SELECT count(*) FROM individual", -1, &q, nullptr) == SQLITE_OK);
+  REQUIRE(sqlite3_step(q) == SQLITE_ROW);
+  CHECK(sqlite3_column_int(q, 0) == 0);
+  sqlite3_finalize(q);
+  sqlite3_close(db);
+}
+
+TEST_CASE("island rows: island tables of an older store (a copy of the archipelago) resume as they were",
+          "[store][islands]") {
+  const std::string path = fresh("older.sqlite");
+  { RunStore::create(path, {{"program", "mtcs test"}}); }
+  {  // the island tables as stores made before 2026-11-25 have them
+    sqlite3* db = nullptr;
+    REQUIRE(sqlite3_open(path.c_str(), &db) == SQLITE_OK);
+    REQUIRE(sqlite3_exec(db,
+                         "CREATE TABLE island_generation(island INTEGER, idx INTEGER, evaluations INTEGER, best REAL,"
+                         "  feasible_share REAL, seconds REAL, PRIMARY KEY(island, idx));"
+                         "CREATE TABLE island_individual(island INTEGER, generation INTEGER, rank INTEGER, genotype BLOB,"
+                         "  steps BLOB, objectives BLOB, violation REAL, feasible INTEGER, value REAL, violations TEXT,"
+                         "  PRIMARY KEY(island, generation, rank));",
+                         nullptr, nullptr, nullptr) == SQLITE_OK);
+    sqlite3_close(db);
+  }
+  const std::vector<opt::Generation> islands{generation(0, 3, 10), generation(0, 3, 5)};
+  opt::Generation merged = islands[0];
+  merged.evaluations = 6;
+  merged.population.insert(merged.population.end(), islands[1].population.begin(), islands[1].population.end());
+  {
+    RunStore s = RunStore::resume(path);
+    s.save_islands(islands, merged, 0.5);
+  }
+  const RunStore read = RunStore::open(path);
+  REQUIRE(read.last());
+  REQUIRE(read.last()->population.size() == 6);
+  CHECK(read.last()->population[3].score.value == 5);
+  CHECK(read.island_generation(1, 0)->population[2].score.value == 7);
 }

@@ -1,15 +1,17 @@
 #pragma once
 // The island model on a mold (mtcs optimize --islands P): P populations of the run's optimiser
 // (ES or SMS-EMOA), island i seeded by opt::island_seed(run seed, i), each with 1/P of the
-// evaluation budget, stepping in lockstep one stored generation at a time (an ES generation;
-// SMS-EMOA's mu steps). Every `migration_every` generations each island sends `migrants` to its
-// neighbours (ring or fully connected), chosen from the populations before any arrival: the same
-// seed and P give the same run, bit for bit, whatever the threads or processes. The islands run
-// in this process's threads, or one per MPI rank (IslandTransport); rank 0 stores every island's
-// generation and the archipelago's (all members) in the run store, from a thread of its own
-// (the islands go on meanwhile), one transaction per generation or per few whole generations
-// when it falls behind: a resumed run continues exactly from the last stored one. Waiting ranks
-// sleep between polls (MPI's own waits would spin on the cores the others need).
+// evaluation budget, one stored generation at a time (an ES generation; SMS-EMOA's mu steps).
+// Every `migration_every` generations each island sends `migrants` to its neighbours (ring or
+// fully connected), chosen from the populations before any arrival: the same seed and P give the
+// same run, bit for bit, whatever the threads or processes. The islands meet only there (and at
+// the end, and at least every 10 generations): between meetings each runs on without waiting for
+// the others. The islands run in this process's threads, or one per MPI rank (IslandTransport);
+// at each meeting rank 0 gathers every island's generations since the last and stores them, and
+// the archipelago's (all members), in the run store, from a thread of its own (the islands go on
+// meanwhile), whole generations per transaction: a resumed run continues exactly from the last
+// stored one. Waiting ranks sleep between polls (MPI's own waits would spin on the cores the
+// others need).
 
 #include <functional>
 #include <memory>
@@ -48,8 +50,10 @@ class IslandTransport {
   // opt::migration_sources gives.
   virtual std::vector<std::vector<opt::Individual>> migrate(const std::vector<std::vector<opt::Individual>>& outgoing,
                                                             int islands, opt::Topology topology) = 0;
-  // Every island's generation at the writer (in island order); elsewhere empty.
-  virtual std::vector<opt::Generation> gather(const std::vector<opt::Generation>& local, int islands) = 0;
+  // Every island's generations since the last meeting at the writer (in island order, each
+  // island's in generation order); elsewhere empty. `local`: this process's islands'.
+  virtual std::vector<std::vector<opt::Generation>> gather(std::vector<std::vector<opt::Generation>> local,
+                                                           int islands) = 0;
   // The writer's generations of every island, each to the process that runs it.
   virtual std::vector<opt::Generation> scatter(const std::vector<opt::Generation>& all, int islands) = 0;
   // The writer's value, everywhere.
@@ -68,13 +72,19 @@ std::unique_ptr<IslandTransport> thread_transport();
 std::unique_ptr<IslandTransport> mpi_transport();
 // The number of ranks mpirun started, or 0 outside mpirun.
 int mpi_launch_size();
+// Worker threads a rank takes by default: the machine's cores shared by the ranks mpirun started
+// on it (at least 1); 0 outside mpirun (all cores). More threads than cores would make each
+// rank's threads wait for each other's cores.
+int threads_per_rank();
 
 // Runs the archipelago from the store's last generation (resume) or fresh populations to the
-// budget, or until stop() (the writer's) is true after a stored generation. `db` is the writer's
-// store (nullptr elsewhere); `on_line` gets the live line of each stored generation (writer).
+// budget, or until stop() (the writer's) is true at a meeting of the islands. `db` is the writer's
+// store (nullptr elsewhere); `on_line` gets each stored generation's index and its live line,
+// made when asked for (the writer; most lines are not printed, and making them costs the writer's
+// island).
 StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, const IslandSettings& settings,
                       IslandTransport& transport, store::RunStore* db,
-                      const std::function<void(const opt::Generation& merged, const std::string& line)>& on_line,
+                      const std::function<void(int generation, const std::function<std::string()>& line)>& on_line,
                       const std::function<bool()>& stop = {});
 
 // The live line: the archipelago's progress (all islands' members) and each island's best (ES)

@@ -21,6 +21,8 @@ class ProgressPrinter {
   void operator()(const opt::Generation& g, double seconds, long evaluations) const;
   // Any line (the islands'), by the same rules, for the run's `generation`.
   void print(int generation, const std::string& line) const;
+  // Whether the line of the run's `generation` is printed (quiet, a log's every log_every-th).
+  bool prints(int generation) const;
 
  private:
   const MoldOptimizer* optimizer_;

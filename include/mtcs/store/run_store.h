@@ -25,10 +25,13 @@ struct sqlite3;
 namespace mtcs::store {
 
 // One stored generation of an island run: every island's and the archipelago's (all members).
+// merged.population[j] is member merged_from[j] of the islands' members in island order
+// (empty: merged holds them in that order).
 struct IslandsGeneration {
   std::vector<opt::Generation> islands;
   opt::Generation merged;
   double seconds = 0;
+  std::vector<int> merged_from;
 };
 
 struct GenerationSummary {
@@ -61,10 +64,12 @@ class RunStore {
   std::optional<opt::Generation> generation(int index) const;
   std::vector<GenerationSummary> summaries() const;
 
-  // Island runs (run/islands.h): one row per island and generation in tables of their own,
-  // made by the first save_islands (older stores keep their schema and open as before). One
+  // Island runs (run/islands.h): one row per island member and generation in tables of their
+  // own, made by the first save_islands (older stores keep their schema and open as before). One
   // transaction holds every island's generation and the archipelago's (`merged`: all islands'
-  // members), which the readers of whole runs (replay, report, resume's checks) see as usual.
+  // members, which the readers of whole runs - replay, report, resume's checks - see as usual).
+  // The archipelago's members are stored once, as their island rows with their rank in the
+  // archipelago (island tables made before that keep a copy of them in the run's table).
   void save_islands(const std::vector<opt::Generation>& islands, const opt::Generation& merged, double seconds);
   // Several whole generations in one transaction (a writer that fell behind catches up): a
   // failure keeps none of them, the store ends at the last generation of an earlier one.
@@ -75,10 +80,14 @@ class RunStore {
 
  private:
   RunStore(sqlite3* db, std::string path, int lock_fd);
+  void insert_islands(const IslandsGeneration& gen);
   sqlite3* db_ = nullptr;
   std::string path_;
   int lock_fd_ = -1;  // the advisory lock of a writing store
   bool island_tables_ = false;  // made (by this connection's save_islands): no DDL per commit
+  bool archipelago_by_reference_ = false;  // island rows carry archipelago_rank (new tables)
+  struct Prepared;  // the island inserts, prepared once a connection
+  std::unique_ptr<Prepared> prepared_;
 };
 
 }  // namespace mtcs::store
