@@ -1,6 +1,9 @@
 // One channel's influence columns (what LineSinkCache keeps per channel): at the samples, at
 // the convective faces' grids, at its own collocation rows, and its moments for the far lattice.
 
+#include <algorithm>
+
+#include "element_far_fields.h"
 #include "line_sink_model.h"
 
 namespace mtcs::thermal {
@@ -52,10 +55,11 @@ MatrixXd LineSinkModel::Impl::columns_at(const ChannelAxis& source, const PointS
   return out;
 }
 
-MatrixXd LineSinkModel::Impl::channel_at_rows(const LineSinkCache::ChannelBlock& rows, const ChannelAxis& source) const {
-  const MatrixXd v = columns_at(source, rows.walls, rows.walls_single, rows.walls_origin);
-  MatrixXd out(rows.axis.elements * kinds, v.cols());
-  for (int e = 0; e < rows.axis.elements; ++e) {
+// The rows' functionals from the columns at the wall points (4 per element): the mean and the
+// half-differences along n1 and n2.
+MatrixXd LineSinkModel::Impl::rows_from_walls(const ChannelAxis& rows, const MatrixXd& v) const {
+  MatrixXd out(rows.elements * kinds, v.cols());
+  for (int e = 0; e < rows.elements; ++e) {
     out.row(e * kinds) = 0.25 * (v.row(4 * e) + v.row(4 * e + 1) + v.row(4 * e + 2) + v.row(4 * e + 3));
     if (kinds == 3) {
       out.row(e * kinds + 1) = 0.5 * (v.row(4 * e) - v.row(4 * e + 1));
@@ -63,6 +67,52 @@ MatrixXd LineSinkModel::Impl::channel_at_rows(const LineSinkCache::ChannelBlock&
     }
   }
   return out;
+}
+
+MatrixXd LineSinkModel::Impl::channel_at_rows(const LineSinkCache::ChannelBlock& rows, const ChannelAxis& source) const {
+  return rows_from_walls(rows.axis, columns_at(source, rows.walls, rows.walls_single, rows.walls_origin));
+}
+
+MatrixXd LineSinkModel::Impl::pair_at_rows(const LineSinkCache::ChannelBlock& rows, const ChannelAxis& source) const {
+  const PointSet& ps = rows.walls;
+  const double reach = options.pair_far * source.element_length;
+  if (!(reach > 0) || ps.slots == 0) return channel_at_rows(rows, source);
+  // Per slot (mostly: one image of every wall point), far when all its points are: a function
+  // of the pair alone, so the block stays a function of its key. Runs of near and far slots go
+  // to the exact kernel and to the multipoles, summed in the same float columns in slot order.
+  // The distances in float (a vectorised loop; only the split depends on them).
+  const std::size_t T = ps.targets(), n = T * std::size_t(ps.slots);
+  const Vec3 a = source.p0 - rows.walls_origin;
+  const float ax = float(a.x()), ay = float(a.y()), az = float(a.z());
+  const float ux = float(source.u.x()), uy = float(source.u.y()), uz = float(source.u.z());
+  const float length = float(source.length), reach2 = float(reach * reach);
+  std::vector<float> d2(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const float wx = ps.sx[i] - ax, wy = ps.sy[i] - ay, wz = ps.sz[i] - az;
+    const float t = std::min(std::max(wx * ux + wy * uy + wz * uz, 0.0f), length);
+    const float rx = wx - t * ux, ry = wy - t * uy, rz = wz - t * uz;
+    d2[i] = rx * rx + ry * ry + rz * rz;
+  }
+  std::vector<char> far(ps.slots);
+  for (int j = 0; j < ps.slots; ++j)
+    far[j] = std::all_of(d2.begin() + std::ptrdiff_t(j * T), d2.begin() + std::ptrdiff_t((j + 1) * T),
+                         [&](float v) { return v >= reach2; });
+  const int cols = source.elements * kinds;
+  std::vector<float> acc(T * cols, 0.0f);
+  for (int j0 = 0; j0 < ps.slots;) {
+    int j1 = j0 + 1;
+    while (j1 < ps.slots && far[j1] == far[j0]) ++j1;
+    const std::size_t k = std::size_t(j0) * T;
+    (far[j0] ? element_far_fields_float_slots : element_fields_float_slots)(
+        source, rows.walls_origin, kinds, ps.sx.data() + k, ps.sy.data() + k, ps.sz.data() + k, ps.sw.data() + k, T,
+        j1 - j0, acc.data());
+    j0 = j1;
+  }
+  for (int c = 0; c < cols; ++c) {
+    const float scale = float((c % kinds == 0 ? -1 : 1) * inv4pik);  // a sink takes heat out
+    for (std::size_t t = 0; t < T; ++t) acc[c * T + t] *= scale;
+  }
+  return rows_from_walls(rows.axis, Eigen::Map<const Eigen::MatrixXf>(acc.data(), Eigen::Index(T), cols).cast<double>());
 }
 
 std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(const Channel& ch) const {

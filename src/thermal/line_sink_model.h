@@ -194,6 +194,10 @@ struct LineSinkModel::Impl {
   std::vector<float> float_columns_at(const ChannelAxis& source, const PointSet& ps, const Vec3& origin) const;
   // Columns of `source` at the rows of a channel: its wall points' mean and half-differences.
   MatrixXd channel_at_rows(const LineSinkCache::ChannelBlock& rows, const ChannelAxis& source) const;
+  // The same for another channel: wall image points farther than options.pair_far element
+  // lengths from the source's axis take its elements' multipoles (element_far_fields.h).
+  MatrixXd pair_at_rows(const LineSinkCache::ChannelBlock& rows, const ChannelAxis& source) const;
+  MatrixXd rows_from_walls(const ChannelAxis& rows, const MatrixXd& at_walls) const;
   // Everything of one channel that does not depend on the others (line_sink_channel.cpp).
   std::shared_ptr<LineSinkCache::ChannelBlock> build_channel(const Channel& ch) const;
 };

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "dense_solve.h"
 #include "line_sink_model.h"
 #include "mtcs/geometry/exact_hash.h"
 
@@ -34,43 +35,6 @@ std::optional<geometry::Segment> clip_to_block(const Box& box, const geometry::S
   }
   if (!(t0 < t1)) return std::nullopt;
   return geometry::Segment{t0 > 0 ? Vec3(s.p0 + t0 * d) : s.p0, t1 < 1 ? Vec3(s.p0 + t1 * d) : s.p1};
-}
-
-// Gaussian elimination with partial pivoting (the pivots of Eigen's partialPivLu), for the
-// small systems of a few bores: Eigen's blocked LU costs ~3x this at n ~ 40 (one bore moved on
-// the block: 9 % of an evaluation before). Larger systems keep Eigen's cache-blocked LU.
-VectorXd solve_dense(MatrixXd& A, VectorXd b) {
-  const Eigen::Index n = A.rows();
-  if (n > 96) return A.partialPivLu().solve(b);
-  for (Eigen::Index k = 0; k < n; ++k) {
-    Eigen::Index p = k;
-    double biggest = std::abs(A(k, k));
-    for (Eigen::Index i = k + 1; i < n; ++i)
-      if (std::abs(A(i, k)) > biggest) biggest = std::abs(A(i, k)), p = i;
-    if (biggest == 0) continue;  // singular: the solution gets inf/NaN, as Eigen's would
-    if (p != k) {
-      A.row(k).swap(A.row(p));
-      std::swap(b[k], b[p]);
-    }
-    double* ck = &A(0, k);
-    const double inv = 1 / ck[k];
-    for (Eigen::Index i = k + 1; i < n; ++i) ck[i] *= inv;
-    for (Eigen::Index j = k + 1; j < n; ++j) {
-      double* cj = &A(0, j);
-      const double akj = cj[k];
-      if (akj == 0) continue;
-      for (Eigen::Index i = k + 1; i < n; ++i) cj[i] -= ck[i] * akj;
-    }
-    const double bk = b[k];
-    for (Eigen::Index i = k + 1; i < n; ++i) b[i] -= ck[i] * bk;
-  }
-  for (Eigen::Index k = n - 1; k >= 0; --k) {
-    const double* ck = &A(0, k);
-    b[k] /= ck[k];
-    const double bk = b[k];
-    for (Eigen::Index i = 0; i < k; ++i) b[i] -= ck[i] * bk;
-  }
-  return b;
 }
 
 }  // namespace
@@ -176,7 +140,7 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
       auto& entry = cache.pairs_[k];
       if (!entry.block) {
         entry.block = std::make_shared<LineSinkCache::PairBlock>();
-        entry.block->block = m.channel_at_rows(*blocks[r], blocks[c]->axis);
+        entry.block->block = m.pair_at_rows(*blocks[r], blocks[c]->axis);
         cache.bytes_ += block_bytes(*entry.block);
       }
       entry.used = now;

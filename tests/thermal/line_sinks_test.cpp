@@ -415,6 +415,7 @@ TEST_CASE("line sinks: stiff and extreme inputs stay finite and reach their limi
       split.push_back(second);
     }
     LineSinkOptions o;
+    o.pair_far = 0;  // exact pairs: the whole bore's own block (halves' pair) is exact
     const LineSinkModel halves(setting, ref.samples, o);
     o.elements = 8;
     const LineSinkModel whole(setting, ref.samples, o);
@@ -509,6 +510,7 @@ TEST_CASE("line sinks: the cache keeps earlier layouts and evicts without changi
 TEST_CASE("line sinks: single-precision columns cost under 1e-4 K") {
   const Reference ref = patch_reference();
   LineSinkOptions o;
+  o.pair_far = 0;  // the double path's pairs are exact (pair_far_test.cpp measures the multipoles)
   const LineSinkModel f(block_setting(), ref.samples, o);
   o.single_precision = false;
   const LineSinkModel d(block_setting(), ref.samples, o);

@@ -50,6 +50,9 @@ struct LineSinkOptions {
   double heat_grid = 4;          // mm: the heat input's field tabulated for the collocation
                                  // points 2 cells or more from it (0: always summed exactly);
                                  // a large block: a coarser grid, this one around the heat
+  double pair_far = 2;  // element lengths: an image of another channel's wall points this far
+                        // from a channel's axis sees its elements as multipoles (0: every pair
+                        // exact; with single_precision only, the double path stays exact)
 };
 
 // The per-channel and per-pair influence blocks of recent evaluations, keyed by the exact
