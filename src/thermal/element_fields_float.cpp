@@ -208,18 +208,26 @@ template <bool Accumulate>
 #undef MTCS_FAR
 }
 
-// Is every point of the box (min x, y, z, max x, y, z) at least h / far_ratio from every
-// element's centre? Then the far expansion holds there.
-inline bool chunk_is_far(const FloatAxis& g, int m, const float* node, const float* box, float far_ratio) {
+// Each element's centre (x, y, z) and the squared distance (h / far_ratio)^2 beyond which the
+// far expansion holds: 4 floats per element.
+inline void far_limits(const FloatAxis& g, int m, const float* node, float far_ratio, float* out) {
   for (int e = 0; e < m; ++e) {
     const float mid = 0.5f * (node[e] + node[e + 1]), h = 0.5f * (node[e + 1] - node[e]);
-    const float c[3] = {g.ax + mid * g.ux, g.ay + mid * g.uy, g.az + mid * g.uz};
+    out[4 * e] = g.ax + mid * g.ux, out[4 * e + 1] = g.ay + mid * g.uy, out[4 * e + 2] = g.az + mid * g.uz;
+    out[4 * e + 3] = (h / far_ratio) * (h / far_ratio);
+  }
+}
+
+// Is every point of the box (min x, y, z, max x, y, z) far from every element (far_limits)?
+inline bool chunk_is_far(int m, const float* limits, const float* box) {
+  for (int e = 0; e < m; ++e) {
+    const float* c = limits + 4 * e;
     float d2 = 0;
     for (int a = 0; a < 3; ++a) {
       const float gap = std::max({box[a] - c[a], c[a] - box[3 + a], 0.0f});
       d2 += gap * gap;
     }
-    if (!(d2 * far_ratio * far_ratio >= h * h)) return false;
+    if (!(d2 >= c[3])) return false;
   }
   return true;
 }
@@ -248,11 +256,13 @@ FloatAxis float_axis(const ChannelAxis& axis, const Vec3& origin, std::vector<fl
   const FloatAxis g = float_axis(axis, origin, node);                                       \
   const std::size_t chunk = far ? far->chunk : targets;                                     \
   const std::size_t chunks = chunk ? (targets + chunk - 1) / chunk : 0;                     \
+  std::vector<float> limits(far ? 4 * axis.elements : 0);                                   \
+  if (far) far_limits(g, axis.elements, node.data(), far->ratio, limits.data());            \
   for (int j = 0; j < slots; ++j) {                                                         \
     const std::size_t k = std::size_t(j) * targets;                                         \
     for (std::size_t c0 = 0; c0 < chunks;) {                                                \
       const auto is_far = [&](std::size_t c) {                                              \
-        return far && chunk_is_far(g, axis.elements, node.data(), far->box + 6 * (j * chunks + c), far->ratio); \
+        return far && chunk_is_far(axis.elements, limits.data(), far->box + 6 * (j * chunks + c)); \
       };                                                                                    \
       const bool run_far = is_far(c0);                                                      \
       std::size_t c1 = c0 + 1;                                                              \

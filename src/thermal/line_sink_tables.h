@@ -52,7 +52,7 @@ struct PointSet {
 
   // Per slot, the bounding boxes of chunks of kChunk consecutive targets (FarChunks): where a
   // channel is far from a chunk, its fields there take the cheaper expansions.
-  static constexpr std::size_t kChunk = 8;
+  static constexpr std::size_t kChunk = 16;
   std::vector<float> chunk_box;
   void make_chunk_boxes() {
     const std::size_t T = targets(), chunks = (T + kChunk - 1) / kChunk;
