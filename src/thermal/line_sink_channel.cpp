@@ -13,8 +13,10 @@ std::vector<float> LineSinkModel::Impl::float_columns_at(const ChannelAxis& sour
   const int cols = source.elements * kinds;
   const std::size_t T = ps.targets();
   std::vector<float> acc(T * cols, 0.0f);
+  const FarChunks far{ps.chunk_box.data(), PointSet::kChunk, float(options.far_expansion)};
+  const bool use_far = !ps.chunk_box.empty() && options.far_expansion > 0;
   element_fields_float_slots(source, origin, kinds, ps.sx.data(), ps.sy.data(), ps.sz.data(), ps.sw.data(), T,
-                             ps.slots, acc.data());
+                             ps.slots, acc.data(), use_far ? &far : nullptr);
   for (int c = 0; c < cols; ++c) {
     const float scale = float((c % kinds == 0 ? -1 : 1) * inv4pik);  // a sink takes heat out
     for (std::size_t t = 0; t < T; ++t) acc[c * T + t] *= scale;
@@ -126,6 +128,10 @@ std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(
   b->walls_origin = a.p0 + 0.5 * a.length * a.u;
   b->walls_single = options.single_precision &&
                     a.radius >= 1e-3 * (setting.block.size().norm() + a.length);
+  // Sized once (4 M wall points x the images), so that the pushes below never regrow.
+  const std::size_t expected = std::size_t(4 * a.elements) * images.size();
+  b->walls.points.reserve(expected), b->walls.x.reserve(expected), b->walls.y.reserve(expected),
+      b->walls.z.reserve(expected), b->walls.begin.reserve(4 * a.elements + 1);
   for (int e = 0; e < a.elements; ++e)
     for (const Vec3& p : wall_points(a, e)) {
       b->walls.add(images, p, tol, 1.0, b->walls_origin);

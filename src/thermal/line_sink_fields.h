@@ -51,11 +51,22 @@ void element_fields(const ChannelAxis& axis, const Vec3& s, double* phi, double*
 // k = 0 the sink's phi and k = 1, 2 the dipoles (kinds 3). Relative error ~1e-6.
 void element_fields_float(const ChannelAxis& axis, const Vec3& origin, int kinds, const float* x,
                           const float* y, const float* z, std::size_t n, float* out);
+// Chunks of `chunk` consecutive targets of a slot layout, each slot's chunk with the bounding box
+// of its points (box + 6 * (slot * chunks + c): min x, y, z, max x, y, z). A chunk whose box
+// lies at least h / ratio from every element's centre (h: the half length) takes the elements'
+// multipole expansions instead of the closed forms: relative error below ratio^8 / 9 for the
+// sink and 5 ratio^8 for the dipoles, over 1 - ratio^2 (element_fields_float.cpp).
+struct FarChunks {
+  const float* box = nullptr;
+  std::size_t chunk = 0;
+  float ratio = 0;
+};
 // The same over the slot layout of many targets (PointSet::make_slots): point j of target t at
 // j * targets + t with weight w there; out[c * targets + t] += the weighted sum over the slots.
+// With `far`, the far chunks by the expansions.
 void element_fields_float_slots(const ChannelAxis& axis, const Vec3& origin, int kinds, const float* x,
                                 const float* y, const float* z, const float* w, std::size_t targets,
-                                int slots, float* out);
+                                int slots, float* out, const FarChunks* far = nullptr);
 
 // T[s] += sum over c of x[c] * double(cols[c * n + s]), s < n: a channel's float columns at the
 // samples weighted by its strengths (AVX2 when the CPU has it; chunks of samples kept in cache).

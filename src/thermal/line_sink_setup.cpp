@@ -99,6 +99,8 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
   if (options.elements < 1 || options.elements > 64)
     throw std::invalid_argument("line sinks: elements per channel must be in 1..64");
   if (options.images < 0) throw std::invalid_argument("line sinks: images must be >= 0");
+  if (!(options.far_expansion >= 0 && options.far_expansion <= 0.5))
+    throw std::invalid_argument("line sinks: far_expansion must be in [0, 0.5]");
   if (!(setting.conductivity > 0)) throw std::invalid_argument("line sinks: conductivity must be > 0");
   m.setting = setting;
   m.options = options;
@@ -196,8 +198,8 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     m.sample_set.add(sample_images, p, m.tol, 1.0, m.sample_origin);
     m.sample_set.close_target();
   }
-  if (m.n_samples) m.sample_set.make_slots();
-  if (!m.faces.empty()) m.face_set.make_slots();
+  if (m.n_samples) m.sample_set.make_slots(), m.sample_set.make_chunk_boxes();
+  if (!m.faces.empty()) m.face_set.make_slots(), m.face_set.make_chunk_boxes();
   m.face_average = MatrixXd::Zero(m.faces.size(), m.face_set.targets());
   for (std::size_t f = 0, point = 0; f < m.faces.size(); ++f)
     for (std::size_t i = 0; i < m.faces[f].cool.size(); ++i) m.face_average(f, point++) = 1.0 / double(m.faces[f].cool.size());

@@ -49,6 +49,27 @@ struct PointSet {
         sw[k] = begin[t] + j < begin[t + 1] ? float(points[i].weight) : 0.0f;
       }
   }
+
+  // Per slot, the bounding boxes of chunks of kChunk consecutive targets (FarChunks): where a
+  // channel is far from a chunk, its fields there take the cheaper expansions.
+  static constexpr std::size_t kChunk = 16;
+  std::vector<float> chunk_box;
+  void make_chunk_boxes() {
+    const std::size_t T = targets(), chunks = (T + kChunk - 1) / kChunk;
+    chunk_box.assign(6 * chunks * std::size_t(slots), 0.0f);
+    for (int j = 0; j < slots; ++j)
+      for (std::size_t c = 0; c < chunks; ++c) {
+        float* b = &chunk_box[6 * (j * chunks + c)];
+        for (std::size_t t = c * kChunk; t < std::min(T, (c + 1) * kChunk); ++t) {
+          const std::size_t k = j * T + t;
+          const float p[3] = {sx[k], sy[k], sz[k]};
+          for (int a = 0; a < 3; ++a) {
+            b[a] = t == c * kChunk ? p[a] : std::min(b[a], p[a]);
+            b[3 + a] = t == c * kChunk ? p[a] : std::max(b[3 + a], p[a]);
+          }
+        }
+      }
+  }
 };
 
 // Layout-independent fields on a regular grid over the block, interpolated tricubically

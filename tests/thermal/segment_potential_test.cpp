@@ -186,4 +186,90 @@ TEST_CASE("element fields: float slot kernel, best time", "[.bench]") {
   }
   for (float v : out) sum += v;
   std::printf("slot kernel best %.2f us (checksum %.6g)\n", best, sum);
+  // The same points moved 400 mm off, every chunk far: the expansions alone.
+  for (std::size_t i = 0; i < x.size(); ++i) z[i] += 400;
+  std::vector<float> box;
+  const std::size_t chunk = 16, chunks = T / chunk;
+  for (int j = 0; j < slots; ++j)
+    for (std::size_t c = 0; c < chunks; ++c) {
+      float b[6] = {1e30f, 1e30f, 1e30f, -1e30f, -1e30f, -1e30f};
+      for (std::size_t t = c * chunk; t < (c + 1) * chunk; ++t) {
+        const std::size_t k = j * T + t;
+        const float p[3] = {x[k], y[k], z[k]};
+        for (int a = 0; a < 3; ++a) b[a] = std::min(b[a], p[a]), b[3 + a] = std::max(b[3 + a], p[a]);
+      }
+      box.insert(box.end(), b, b + 6);
+    }
+  const FarChunks far{box.data(), chunk, 0.3f};
+  for (const FarChunks* f : {(const FarChunks*)nullptr, &far}) {
+    best = 1e9;
+    for (int i = 0; i < 3000; ++i) {
+      std::fill(out.begin(), out.end(), 0.0f);
+      const auto t0 = std::chrono::steady_clock::now();
+      element_fields_float_slots(axis, Vec3(60, 40, 30), 3, x.data(), y.data(), z.data(), w.data(), T, slots, out.data(), f);
+      best = std::min(best, std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
+    }
+    std::printf("all points far, %s: best %.2f us\n", f ? "expansions" : "closed forms", best);
+  }
+}
+
+// The far expansion (element_fields_float with FarChunks) against the double closed forms: at
+// points whose distance from every element's centre is h / q or more, q up to the ratio, the
+// error stays inside the stated bound (sink q^8/9, dipole 5 q^8, over 1 - q^2) plus float
+// rounding; and a chunk nearer than that keeps the closed forms (same values as without far).
+TEST_CASE("element fields: the far expansion keeps its stated error bound") {
+  Channel ch;
+  ch.axis = {Vec3(10, 40, 45), Vec3(130, 35, 47)};
+  ch.radius = 5;
+  const int m = 4;
+  const ChannelAxis axis = channel_axis(ch, m);
+  const double h = 0.5 * axis.element_length;
+  const Vec3 origin(60, 40, 30);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (const double ratio : {0.2, 0.3, 0.35, 0.4}) {
+    // Points around the channel at distances where the nearest element centre is h / ratio.. 3 h / ratio.
+    std::vector<Vec3> pts;
+    while (pts.size() < 2000) {
+      const Vec3 p = axis.p0 + 0.5 * axis.length * axis.u + Vec3(u(rng), u(rng), u(rng)) * (4 * h / ratio + 0.5 * axis.length);
+      double dmin = 1e300;
+      for (int e = 0; e < m; ++e) dmin = std::min(dmin, (p - (axis.p0 + (e + 0.5) * axis.element_length * axis.u)).norm());
+      if (dmin >= h / ratio * 1.001 && dmin <= 3 * h / ratio) pts.push_back(p);
+    }
+    const std::size_t T = pts.size();
+    std::vector<float> x(T), y(T), z(T), w(T, 1.0f), box;
+    for (std::size_t i = 0; i < T; ++i) {
+      const Vec3 r = pts[i] - origin;
+      x[i] = float(r.x()), y[i] = float(r.y()), z[i] = float(r.z());
+      box.insert(box.end(), {x[i], y[i], z[i], x[i], y[i], z[i]});  // one target per chunk
+    }
+    const FarChunks far{box.data(), 1, float(ratio)};
+    std::vector<float> out(T * 3 * m, 0.0f);
+    element_fields_float_slots(axis, origin, 3, x.data(), y.data(), z.data(), w.data(), T, 1, out.data(), &far);
+    const double q8 = std::pow(ratio, 8) / (1 - ratio * ratio);
+    double worst_sink = 0, worst_dip = 0;
+    for (std::size_t i = 0; i < T; ++i) {
+      double phi[m], d1[m], d2[m];
+      element_fields(axis, pts[i], phi, d1, d2);
+      for (int e = 0; e < m; ++e) {
+        worst_sink = std::max(worst_sink, std::abs(out[(e * 3) * T + i] - phi[e]) / phi[e]);
+        // The dipole relative to its size at the point (|factor| |rho|).
+        const double scale = std::hypot(d1[e], d2[e]) + 1e-30;
+        worst_dip = std::max(worst_dip, std::hypot(out[(e * 3 + 1) * T + i] - d1[e], out[(e * 3 + 2) * T + i] - d2[e]) / scale);
+      }
+    }
+    INFO("ratio " << ratio << " sink " << worst_sink << " dipole " << worst_dip);
+    CHECK(worst_sink <= q8 / 9 + 2e-6);
+    CHECK(worst_dip <= 5 * q8 + 2e-6);
+    CHECK(worst_sink > 0);  // the expansion ran (not the closed forms)
+  }
+  // A chunk that reaches nearer than h / ratio: the closed forms, bit for bit.
+  const Vec3 near_point = axis.p0 + 0.3 * axis.length * axis.u + Vec3(0, 0, 20);
+  const float px = float(near_point.x() - 60), py = float(near_point.y() - 40), pz = float(near_point.z() - 30);
+  const float wt = 1, box[6] = {px, py, pz, px, py, pz};
+  const FarChunks far{box, 1, 0.3f};
+  std::vector<float> a(3 * m, 0.0f), b(3 * m, 0.0f);
+  element_fields_float_slots(axis, origin, 3, &px, &py, &pz, &wt, 1, 1, a.data(), &far);
+  element_fields_float_slots(axis, origin, 3, &px, &py, &pz, &wt, 1, 1, b.data());
+  CHECK(a == b);
 }
