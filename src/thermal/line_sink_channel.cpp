@@ -105,9 +105,12 @@ MatrixXd LineSinkModel::Impl::pair_at_rows(const LineSinkCache::ChannelBlock& ro
     int j1 = j0 + 1;
     while (j1 < ps.slots && far[j1] == far[j0]) ++j1;
     const std::size_t k = std::size_t(j0) * T;
-    (far[j0] ? element_far_fields_float_slots : element_fields_float_slots)(
-        source, rows.walls_origin, kinds, ps.sx.data() + k, ps.sy.data() + k, ps.sz.data() + k, ps.sw.data() + k, T,
-        j1 - j0, acc.data());
+    if (far[j0])
+      element_far_fields_float_slots(source, rows.walls_origin, kinds, ps.sx.data() + k, ps.sy.data() + k,
+                                     ps.sz.data() + k, ps.sw.data() + k, T, j1 - j0, acc.data());
+    else
+      element_fields_float_slots(source, rows.walls_origin, kinds, ps.sx.data() + k, ps.sy.data() + k,
+                                 ps.sz.data() + k, ps.sw.data() + k, T, j1 - j0, acc.data());
     j0 = j1;
   }
   for (int c = 0; c < cols; ++c) {
