@@ -27,6 +27,10 @@ struct MutationRates {
   // at least one; 0: all of them, every time. Two beat all on the gear and matched them on the
   // plate at equal budgets, and keep a child's other bores cached (experiments/evaluate).
   double moves = 2;
+  // With worst_covered among the objectives: the probability per offspring of the reach move
+  // instead of the others, a feasible circuit laid beside the sample the parent cools worst
+  // (src/run/reach_move.h; experiments/defaults). 0: never (and no random number drawn for it).
+  double reach = 0.05;
 };
 
 class MoldProblem final : public opt::Problem {
@@ -72,6 +76,8 @@ class MoldProblem final : public opt::Problem {
   int movable_parts(const mold::Circuit& c) const;
   int move_some(mold::Circuit& c, double sigma, double probability, opt::Rng& rng) const;
   opt::Score score(const eval::Pipeline& pipeline, const opt::Genotype& g) const;
+  // The reach move on g: true when it laid a circuit (added, or in place of one).
+  bool reach_worst(mold::Genome& g, opt::Rng& rng) const;
 
   const eval::Pipeline& pipeline_;
   const eval::Pipeline* screen_;
@@ -84,6 +90,7 @@ class MoldProblem final : public opt::Problem {
   std::vector<double> weights_;
   MutationRates rates_;
   const eval::DrillAccess* access_ = nullptr;  // set: AM-guided directions
+  std::vector<geometry::Vec3> reach_samples_;  // the cavity samples the reach move looks at (none: off)
   double initial_step_;
   mutable std::atomic<long> evaluated_{0}, feasible_{0}, screened_{0};
 };
