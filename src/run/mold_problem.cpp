@@ -234,10 +234,16 @@ bool MoldProblem::reach_worst(mold::Genome& g, opt::Rng& rng) const {
   const mold::Scene& scene = pipeline_.scene();
   const WorstSample worst = worst_covered_sample(reach_samples_, mold::decode(scene, g));
   if (!worst.any) return false;
+  // A drill at random, then the smallest (it fits the narrowest windows).
   const auto& diameters = spec_.drilling.diameters;
   ReachRequest request{worst.point, worst.wall_distance, diameters[std::size_t(rng.below(int(diameters.size())))],
                        12, region_};
-  const auto c = circuit_reaching(pipeline_, request, [this](mold::Circuit& k) { repair(k); }, rng);
+  auto c = circuit_reaching(pipeline_, request, [this](mold::Circuit& k) { repair(k); }, rng);
+  const double smallest = *std::min_element(diameters.begin(), diameters.end());
+  if (!c && request.diameter != smallest) {
+    request.diameter = smallest;
+    c = circuit_reaching(pipeline_, request, [this](mold::Circuit& k) { repair(k); }, rng);
+  }
   if (!c) return false;
   // Added, or in place of the circuit nearest the sample (which does not reach it) or of any one.
   const auto& lim = spec_.circuits;
