@@ -6,6 +6,9 @@
 
 #include "aim_bores.h"
 #include "holes.h"
+#include "mtcs/eval/thermal_model.h"
+#include "mtcs/mold/decoder.h"
+#include "reach_move.h"
 
 namespace mtcs::run {
 
@@ -28,6 +31,9 @@ MoldProblem::MoldProblem(const eval::Pipeline& pipeline, std::vector<double> wei
     const double reach = 4 * *std::max_element(spec_.drilling.diameters.begin(), spec_.drilling.diameters.end());
     region_ = {(part.min - Vec3::Constant(reach)).cwiseMax(block_.min), (part.max + Vec3::Constant(reach)).cwiseMin(block_.max)};
   }
+  const auto& use = spec_.objectives.use;
+  if (rates_.reach > 0 && spec_.cavity && std::find(use.begin(), use.end(), mold::Objective::WorstCovered) != use.end())
+    reach_samples_ = eval::thermal_samples(pipeline.scene()).points;
 }
 
 mold::Genome MoldProblem::genome(const opt::Genotype& g) const {
@@ -123,6 +129,11 @@ void MoldProblem::repair(mold::Circuit& c) const {
 
 void MoldProblem::mutate(opt::Genotype& x, const std::vector<double>& steps, opt::Rng& rng) const {
   mold::Genome g = genome(x);
+  // The reach move alone: a child that moves other holes too would lose a narrow window it found.
+  if (!reach_samples_.empty() && rng.uniform() < rates_.reach && reach_worst(g, rng)) {
+    x = encode(g);
+    return;
+  }
   const double sigma = steps.front();
   const auto& lim = spec_.circuits;
   // With mutation.moves, each hole (a run of aligned waypoints) or waypoint moves with the
@@ -265,6 +276,58 @@ bool MoldProblem::blend_circuits(mold::Genome& a, const mold::Genome& b, opt::Rn
     blended = true;
   }
   return blended;
+}
+
+bool MoldProblem::reach_worst(mold::Genome& g, opt::Rng& rng) const {
+  const mold::Scene& scene = pipeline_.scene();
+  const WorstSample worst = worst_covered_sample(reach_samples_, mold::decode(scene, g));
+  if (!worst.any) return false;
+  // A drill at random, then the smallest (it fits the narrowest windows).
+  const auto& diameters = spec_.drilling.diameters;
+  ReachRequest request{worst.point, worst.wall_distance, diameters[std::size_t(rng.below(int(diameters.size())))],
+                       12, region_};
+  auto c = circuit_reaching(pipeline_, request, [this](mold::Circuit& k) { repair(k); }, rng);
+  const double smallest = *std::min_element(diameters.begin(), diameters.end());
+  if (!c && request.diameter != smallest) {
+    request.diameter = smallest;
+    c = circuit_reaching(pipeline_, request, [this](mold::Circuit& k) { repair(k); }, rng);
+  }
+  if (!c) return false;
+  // Added, or in place of the circuit nearest the sample (which does not reach it) or of any one.
+  const auto& lim = spec_.circuits;
+  const int n = int(g.circuits.size());
+  std::size_t at = std::size_t(n);
+  if (n < lim.max && (n < lim.min || n == 0 || rng.uniform() < 0.5)) {
+    g.circuits.push_back(*c);
+  } else {
+    at = 0;
+    if (rng.uniform() < 0.5) {
+      double least = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k < g.circuits.size(); ++k) {
+        const double d = wall_distance(scene, g.circuits[k], worst.point);
+        if (d < least) least = d, at = k;
+      }
+    } else {
+      at = std::size_t(rng.below(n));
+    }
+    g.circuits[at] = *c;
+  }
+  // Circuits the new one collides with give way, as far as circuits.min allows.
+  const std::string mine = "c" + std::to_string(at) + ".";
+  std::vector<std::size_t> gone;
+  for (const auto& v : pipeline_.evaluate(g).violations) {
+    if (v.kind != eval::ViolationKind::BoreBore || v.elements.size() < 2) continue;
+    for (int e = 0; e < 2; ++e) {
+      const std::string& other = v.elements[std::size_t(1 - e)];
+      if (v.elements[std::size_t(e)].rfind(mine, 0) != 0 || other.rfind(mine, 0) == 0) continue;
+      const std::size_t k = std::size_t(std::stoi(other.substr(1)));
+      if (std::find(gone.begin(), gone.end(), k) == gone.end()) gone.push_back(k);
+    }
+  }
+  std::sort(gone.rbegin(), gone.rend());
+  for (const std::size_t k : gone)
+    if (int(g.circuits.size()) > lim.min) g.circuits.erase(g.circuits.begin() + std::ptrdiff_t(k));
+  return true;
 }
 
 opt::Genotype MoldProblem::recombine(const opt::Genotype& a, const opt::Genotype& b, opt::Rng& rng) const {

@@ -84,7 +84,8 @@ RunConfig parse_run_config(const std::string& text, const std::string& origin,
   }
   if (root["mutation"]) {
     const YAML::Node& m = root["mutation"];
-    r.expect_map(m, "mutation", {"insert", "remove", "snap", "diameter", "circuit", "access_guided", "moves", "blend"});
+    r.expect_map(m, "mutation",
+                 {"insert", "remove", "snap", "diameter", "circuit", "access_guided", "moves", "blend", "reach"});
     if (m["insert"]) c.mutation.insert = r.number(m["insert"], "mutation.insert", 0, 1);
     if (m["remove"]) c.mutation.remove = r.number(m["remove"], "mutation.remove", 0, 1);
     if (m["snap"]) c.mutation.snap = r.number(m["snap"], "mutation.snap", 0, 1);
@@ -93,6 +94,7 @@ RunConfig parse_run_config(const std::string& text, const std::string& origin,
     if (m["access_guided"]) c.mutation.access_guided = r.boolean(m["access_guided"], "mutation.access_guided");
     if (m["moves"]) c.mutation.moves = r.number(m["moves"], "mutation.moves", 0, 1000);
     if (m["blend"]) c.mutation.blend = r.number(m["blend"], "mutation.blend", 0, 1);
+    if (m["reach"]) c.mutation.reach = r.number(m["reach"], "mutation.reach", 0, 1);
   }
   return c;
 }
@@ -142,7 +144,8 @@ std::string RunConfig::to_yaml(const std::vector<std::string>& objective_names) 
       << mutation.insert << YAML::Key << "remove" << YAML::Value << mutation.remove << YAML::Key << "snap"
       << YAML::Value << mutation.snap << YAML::Key << "diameter" << YAML::Value << mutation.diameter << YAML::Key
       << "circuit" << YAML::Value << mutation.circuit << YAML::Key << "access_guided" << YAML::Value
-      << mutation.access_guided << YAML::Key << "moves" << YAML::Value << mutation.moves;
+      << mutation.access_guided << YAML::Key << "moves" << YAML::Value << mutation.moves << YAML::Key << "reach"
+      << YAML::Value << mutation.reach;
   if (mutation.blend > 0) out << YAML::Key << "blend" << YAML::Value << mutation.blend;  // older runs' configs stay as they were
   out << YAML::EndMap;
   out << YAML::EndMap;

@@ -44,6 +44,7 @@ TEST_CASE("issue 16: configs/es_default.yaml gives exactly the defaults the code
   CHECK(file.mutation.access_guided == code.mutation.access_guided);
   CHECK(file.mutation.moves == code.mutation.moves);
   CHECK(file.mutation.blend == code.mutation.blend);
+  CHECK(file.mutation.reach == code.mutation.reach);
   CHECK(file.ref.empty());  // the reference point from the mold
   CHECK_FALSE(file.screen_tier.has_value());
 }

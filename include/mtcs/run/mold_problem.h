@@ -31,6 +31,10 @@ struct MutationRates {
   // same shape in both parents (waypoint count and, axis-parallel, which waypoints share each
   // coordinate) get SBX-blended waypoint coordinates instead of the whole-circuit crossover.
   double blend = 0;
+  // With worst_covered among the objectives: the probability per offspring of the reach move
+  // instead of the others, a feasible circuit laid beside the sample the parent cools worst
+  // (src/run/reach_move.h; experiments/defaults). 0: never (and no random number drawn for it).
+  double reach = 0.05;
 };
 
 class MoldProblem final : public opt::Problem {
@@ -78,6 +82,8 @@ class MoldProblem final : public opt::Problem {
   // mutation.blend: a's circuits blended with b's of the same index and shape; false: none had one.
   bool blend_circuits(mold::Genome& a, const mold::Genome& b, opt::Rng& rng) const;
   opt::Score score(const eval::Pipeline& pipeline, const opt::Genotype& g) const;
+  // The reach move on g: true when it laid a circuit (added, or in place of one).
+  bool reach_worst(mold::Genome& g, opt::Rng& rng) const;
 
   const eval::Pipeline& pipeline_;
   const eval::Pipeline* screen_;
@@ -90,6 +96,7 @@ class MoldProblem final : public opt::Problem {
   std::vector<double> weights_;
   MutationRates rates_;
   const eval::DrillAccess* access_ = nullptr;  // set: AM-guided directions
+  std::vector<geometry::Vec3> reach_samples_;  // the cavity samples the reach move looks at (none: off)
   double initial_step_;
   mutable std::atomic<long> evaluated_{0}, feasible_{0}, screened_{0};
 };
