@@ -41,8 +41,9 @@ for t in "${targets[@]}"; do
   corpus="build-fuzz/corpus/$t" artifacts="build-fuzz/artifacts/$t"
   mkdir -p "$corpus" "$artifacts"
   # -rss_limit_mb: a reader that allocates gigabytes for a small file is a finding too.
+  max_len=$(awk -v t="$t" '$1 == t {print $2}' fuzz/max_len.tsv)
   if ! build-fuzz/fuzz/fuzz_"$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-       -max_len=65536 -print_final_stats=1 -artifact_prefix="$artifacts/" \
+       -max_len="${max_len:-65536}" -print_final_stats=1 -artifact_prefix="$artifacts/" \
        "$corpus" "fuzz/corpus/$t" > "build-fuzz/fuzz_$t.log" 2>&1; then
     echo "fuzz: $t FAILED: see build-fuzz/fuzz_$t.log and $artifacts/"; tail -40 "build-fuzz/fuzz_$t.log"; exit 1
   fi
