@@ -9,10 +9,10 @@ s=$1 t=$2; shift 2
 export TMPDIR=/dev/shm UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 run() {  # variant binary seeds max_len
   local work; work=$(mktemp -d /dev/shm/sbs-XXXXXX)
+  mkdir -p "$work/corpus"
   local load; load=$(cut -d' ' -f1 /proc/loadavg)
   /usr/bin/time -f "%U" -o "$work/cpu" nice -n 19 "$2" -max_total_time="$s" -timeout=30 -rss_limit_mb=2048 \
     -max_len="$4" -print_final_stats=1 "$work/corpus" "$3" > "$work/log" 2>&1 || true
-  mkdir -p "$work/corpus"
   local execs cpu covft
   execs=$(grep -o 'number_of_executed_units: *[0-9]*' "$work/log" | grep -o '[0-9]*$')
   cpu=$(tail -1 "$work/cpu")
