@@ -25,9 +25,10 @@ for tw in "$@"; do
   [ "$seconds" -ge 10 ] || continue
   corpus="build-fuzz/corpus/$t" artifacts="build-fuzz/artifacts/$t"
   mkdir -p "$corpus" "$artifacts"
+  max_len=$(awk -v t="$t" '$1 == t {print $2}' fuzz/max_len.tsv)
   start=$(date -u +%s)
   nice -n 19 "${FUZZ_TREE:-build-fuzz}"/fuzz/fuzz_"$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-    -max_len=65536 -print_final_stats=1 -artifact_prefix="$artifacts/" \
+    -max_len="${max_len:-65536}" -print_final_stats=1 -artifact_prefix="$artifacts/" \
     "$corpus" "fuzz/corpus/$t" > "build-fuzz/long_$t.log" 2>&1
   code=$?
   execs=$(grep -o 'number_of_executed_units: *[0-9]*' "build-fuzz/long_$t.log" | grep -o '[0-9]*$')

@@ -1,0 +1,48 @@
+#!/usr/bin/env python3
+"""Cumulative executions per fuzz target: the total before a round plus the round's lines.
+  python3 experiments/fuzz/cumulative.py ROUND.tsv [OTHER.tsv...]
+ROUND.tsv: long_run.sh's lines (target, seconds, executions, exit code, tree); OTHER.tsv: other
+runs of the same readers, executions in the 4th column (side_by_side.sh's lines, smoke runs). Prints the
+README's markdown table: this round, cumulative, left to 10 M and the time that takes at the
+round's executions/s."""
+import collections
+import sys
+
+# Cumulative executions until 2026-11-25 06:01 UTC (the README's tables before this round).
+BEFORE = {"mold_spec": 53369, "layout": 769460, "pairs_csv": 1522217, "cylinders_csv": 1737831,
+          "points_csv": 1995954, "front_file": 1492706, "mesh_stl": 384717, "mesh_off": 1991720,
+          "mesh_obj": 2065307, "mesh_ply": 1521617, "run_store": 1298946}
+GOAL = 10_000_000
+# Executions/s of the UBSan round of 05:43-06:01 (load ~2): the estimate for a target this round
+# did not run.
+EARLIER_RATE = {"pairs_csv": 12281, "cylinders_csv": 14008, "points_csv": 17057, "front_file": 12509,
+                "mesh_off": 7980, "mesh_obj": 9683, "mesh_ply": 7386, "run_store": 5254}
+
+
+def fmt(n):
+    return "{:,}".format(int(n)).replace(",", " ")
+
+
+execs, secs, exits = collections.Counter(), collections.Counter(), collections.defaultdict(list)
+for line in open(sys.argv[1]):
+    t, s, e, code = line.split("\t")[:4]
+    execs[t] += int(e); secs[t] += int(s); exits[t].append(code)
+side = collections.Counter()
+for other in sys.argv[2:]:
+    for line in open(other):
+        f = line.rstrip("\n").split("\t")
+        if f[0] in BEFORE and f[3].isdigit(): side[f[0]] += int(f[3])
+print("| target | this round: executions (seconds), executions/s | exit codes | other runs (side by side, smoke) | cumulative | at 10 M? | left, at this round's rate |")
+print("|---|---|---|---|---|---|---|")
+total = 0
+for t in BEFORE:
+    cum = BEFORE[t] + execs[t] + side[t]
+    total += cum
+    rate = execs[t] / secs[t] if secs[t] else EARLIER_RATE.get(t, 0)
+    left = max(0, GOAL - cum)
+    eta = "-" if not left else ("%.1f h" % (left / rate / 3600) + ("" if secs[t] else " at 05:43's rate") if rate else "?")
+    run = "%s (%d s), %s" % (fmt(execs[t]), secs[t], fmt(rate)) if secs[t] else "not run"
+    print("| %s | %s | %s | %s | %s | %s | %s |" % (
+        t, run, " ".join(exits[t]) or "-", fmt(side[t]), fmt(cum),
+        "yes" if not left else "no", ("%s, %s" % (fmt(left), eta)) if left else "-"))
+print("| all | %s (%d s) | | %s | %s | | |" % (fmt(sum(execs.values())), sum(secs.values()), fmt(sum(side.values())), fmt(total)))
