@@ -637,17 +637,6 @@ std::vector<std::vector<Channel>> random_layouts(int count) {
   return layouts;
 }
 
-double kendall_tau(const std::vector<double>& a, const std::vector<double>& b) {
-  double concordant = 0, discordant = 0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (std::size_t j = i + 1; j < a.size(); ++j) {
-      const double s = (a[i] - a[j]) * (b[i] - b[j]);
-      if (s > 0) ++concordant;
-      if (s < 0) ++discordant;
-    }
-  return (concordant - discordant) / (concordant + discordant);
-}
-
 }  // namespace
 
 // How the tiers rank random layouts by the patch temperature's std, against the finest line
@@ -693,7 +682,7 @@ TEST_CASE("line sinks: ranking of 60 random layouts by patch std", "[.bench]") {
     for (std::size_t i = 0; i < s.size(); ++i) worst = std::max(worst, std::abs(s[i] - reference[i]));
     const char* tier = r.tier == Tier::T1 ? "T1" : r.tier == Tier::T2 ? "T2" : "T2d";
     std::printf("%s,%d,%d,%d,%.4f,%.4f,%.4f,%.3f\n", tier, r.elements, r.images, r.sample_images,
-                kendall_tau(s, reference), mtcs_test::spearman(s, reference), worst, ms);
+                mtcs_test::kendall_tau(s, reference), mtcs_test::spearman(s, reference), worst, ms);
   }
 }
 // The best of many calls (the machine is shared: the best is the cost, the mean the load),

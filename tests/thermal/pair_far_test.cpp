@@ -14,6 +14,7 @@
 #include <string>
 
 #include "mtcs/thermal/line_sinks.h"
+#include "rank_statistics.h"
 
 using namespace mtcs::thermal;
 using mtcs::geometry::Segment;
@@ -74,17 +75,6 @@ double max_abs_diff(const std::vector<double>& a, const std::vector<double>& b) 
   double d = 0;
   for (std::size_t i = 0; i < a.size(); ++i) d = std::max(d, std::abs(a[i] - b[i]));
   return d;
-}
-
-double kendall_tau(const std::vector<double>& a, const std::vector<double>& b) {
-  double concordant = 0, discordant = 0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (std::size_t j = i + 1; j < a.size(); ++j) {
-      const double s = (a[i] - a[j]) * (b[i] - b[j]);
-      if (s > 0) ++concordant;
-      if (s < 0) ++discordant;
-    }
-  return (concordant - discordant) / (concordant + discordant);
 }
 
 // 2 to 5 bores along x through the block case, as the ranking study's layouts.
@@ -171,7 +161,7 @@ TEST_CASE("line sinks: far pairs as multipoles stay within 0.01 K of the exact p
     std_far.push_back(std_of(a)), std_exact.push_back(std_of(b));
     worst_std = std::max(worst_std, std::abs(std_far.back() - std_exact.back()));
   }
-  const double tau = kendall_tau(std_far, std_exact);
+  const double tau = mtcs_test::kendall_tau(std_far, std_exact);
   std::printf("pair_far block: max |dT| %.2e K, max |d std| %.2e K, tau(far, exact) %.4f over %zu layouts\n", worst,
               worst_std, tau, layouts.size());
   CHECK(worst <= 0.01);

@@ -33,6 +33,18 @@ inline double pearson(const std::vector<double>& a, const std::vector<double>& b
   return sab / std::sqrt(saa * sbb);
 }
 
+// Kendall's tau-a: concordant minus discordant pairs over the pairs that are not tied.
+inline double kendall_tau(const std::vector<double>& a, const std::vector<double>& b) {
+  double concordant = 0, discordant = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = i + 1; j < a.size(); ++j) {
+      const double s = (a[i] - a[j]) * (b[i] - b[j]);
+      if (s > 0) ++concordant;
+      if (s < 0) ++discordant;
+    }
+  return (concordant - discordant) / (concordant + discordant);
+}
+
 inline double spearman(const std::vector<double>& a, const std::vector<double>& b) { return pearson(ranks(a), ranks(b)); }
 
 }  // namespace mtcs_test
