@@ -3,6 +3,7 @@
 // area-weighted mean, standard deviation and maximum, and the plate cooling time at the
 // hottest sample.
 
+#include <limits>
 #include <stdexcept>
 
 #include "mtcs/eval/cycle_time.h"
@@ -34,8 +35,13 @@ class TemperatureStage final : public Stage {
   std::string name() const override { return "temperature_" + mold::to_string(spec_.thermal.tier); }
 
   void run(const mold::Layout& layout, Evaluation& out) const override {
-    const std::vector<double> t = solve_(thermal_channels(layout, spec_));
-    const TemperatureObjectives o = temperature_objectives(t, samples_, spec_);
+    const std::vector<thermal::Channel> channels = thermal_channels(layout, spec_);
+    // A genome can decode to no bore at all (a circuit whose waypoints collapse). Nothing then
+    // carries the heat away in the models: worse than any layout that cools, not an error.
+    constexpr double kNoCooling = std::numeric_limits<double>::infinity();
+    const TemperatureObjectives o = channels.empty()
+                                        ? TemperatureObjectives{kNoCooling, kNoCooling, kNoCooling, kNoCooling}
+                                        : temperature_objectives(solve_(channels), samples_, spec_);
     for (const auto& [objective, slot] : slots_) {
       double& v = out.objectives[slot];
       switch (objective) {

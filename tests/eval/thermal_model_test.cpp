@@ -345,3 +345,27 @@ TEST_CASE("patch cavity: bore_cavity is the clearance to the rectangle, not to i
   REQUIRE(edge);
   CHECK(edge->distance == Approx(std::sqrt(1.5 * 1.5 + 5.0 * 5.0) - 3).epsilon(1e-9));
 }
+
+TEST_CASE("issue 16: a layout that decodes to no bore scores the worst temperatures instead of ending the run",
+          "[eval][thermal][issue16]") {
+  // SMS-EMOA with defaults on molds/plate.yaml stopped on 5 of 11 seeds with "line sinks: no
+  // channel and no isothermal face: no steady state": a genome whose circuit collapsed reached
+  // the temperature stage with no bore.
+  const mold::Scene scene(mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml"));
+  const eval::Pipeline pipeline(scene);
+  const eval::Evaluation none = pipeline.evaluate(mold::Layout{});
+  const auto& use = scene.spec().objectives.use;
+  bool any_temperature = false;
+  for (std::size_t k = 0; k < use.size(); ++k) {
+    if (!mold::is_temperature_objective(use[k])) continue;
+    any_temperature = true;
+    CHECK(std::isinf(none.objectives[k]));
+    CHECK(none.objectives[k] > 0);
+  }
+  CHECK(any_temperature);
+  // A layout that cools scores finite temperatures, below the empty one's.
+  const auto layout = mold::decode(scene, mold::load_layout(MTCS_SOURCE_DIR "/molds/plate.layout.yaml", scene.spec()));
+  const eval::Evaluation some = pipeline.evaluate(layout);
+  for (std::size_t k = 0; k < use.size(); ++k)
+    if (mold::is_temperature_objective(use[k])) CHECK(std::isfinite(some.objectives[k]));
+}
