@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Cumulative executions per fuzz target: the total before a round plus the round's lines.
-  python3 experiments/fuzz/cumulative.py ROUND.tsv [OTHER.tsv...]
+  python3 experiments/fuzz/cumulative.py [--before 0601|0915] ROUND.tsv [OTHER.tsv...]
 ROUND.tsv: long_run.sh's lines (target, seconds, executions, exit code, tree); OTHER.tsv: other
 runs of the same readers, executions in the 4th column (side_by_side.sh's lines, smoke runs). Prints the
 README's markdown table: this round, cumulative, left to 10 M and the time that takes at the
@@ -8,10 +8,18 @@ round's executions/s."""
 import collections
 import sys
 
-# Cumulative executions until 2026-11-25 06:01 UTC (the README's tables before this round).
-BEFORE = {"mold_spec": 53369, "layout": 769460, "pairs_csv": 1522217, "cylinders_csv": 1737831,
+# Cumulative executions before a round (the README's tables): until 2026-11-25 06:01 UTC, and
+# until 09:15 UTC (the round of 08:11-09:15 and its side-by-side and smoke runs included).
+ROUNDS = {"0601": {"mold_spec": 53369, "layout": 769460, "pairs_csv": 1522217, "cylinders_csv": 1737831,
           "points_csv": 1995954, "front_file": 1492706, "mesh_stl": 384717, "mesh_off": 1991720,
-          "mesh_obj": 2065307, "mesh_ply": 1521617, "run_store": 1298946}
+          "mesh_obj": 2065307, "mesh_ply": 1521617, "run_store": 1298946},
+          "0915": {"mold_spec": 970220, "layout": 1647541, "pairs_csv": 2720737, "cylinders_csv": 3086947,
+                   "points_csv": 3833007, "front_file": 2446798, "mesh_stl": 1596885, "mesh_off": 3317746,
+                   "mesh_obj": 3764318, "mesh_ply": 3092947, "run_store": 2472620}}
+args = sys.argv[1:]
+BEFORE = ROUNDS["0601"]
+if args[:1] == ["--before"]:
+    BEFORE, args = ROUNDS[args[1]], args[2:]
 GOAL = 10_000_000
 # Executions/s of the UBSan round of 05:43-06:01 (load ~2): the estimate for a target this round
 # did not run.
@@ -24,11 +32,11 @@ def fmt(n):
 
 
 execs, secs, exits = collections.Counter(), collections.Counter(), collections.defaultdict(list)
-for line in open(sys.argv[1]):
+for line in open(args[0]):
     t, s, e, code = line.split("\t")[:4]
     execs[t] += int(e); secs[t] += int(s); exits[t].append(code)
 side = collections.Counter()
-for other in sys.argv[2:]:
+for other in args[1:]:
     for line in open(other):
         f = line.rstrip("\n").split("\t")
         if f[0] in BEFORE and f[3].isdigit(): side[f[0]] += int(f[3])
