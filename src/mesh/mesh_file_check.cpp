@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -200,17 +201,35 @@ void check_off(const std::string& path, const std::string& text) {
 // end of the file for hours), adds a property to the last element (undefined before the first)
 // allocates a list as long as its count says (4.7 GB from one int32 count), and reads a
 // vertex's x, y, z as float or double whatever their declared type (a null
-// dereference for an integer type).
+// dereference for an integer type). A "halfedge" element's items are read as an unsigned int
+// "source" and "target" whatever the header declares, so both must be there with that type.
 void check_ply(const std::string& path, const std::string& text) {
   std::istringstream in(text);
   std::string line, element;
-  std::set<std::string> declared;  // "element property"
+  long long items = 0;
+  int element_line = 0;
+  std::set<std::string> declared;                      // "element property"
+  std::map<std::string, std::string> halfedge_types;  // property -> type, of the current halfedge element
+  const auto check_halfedge = [&] {
+    if (element != "halfedge" || items == 0) return;
+    for (const char* property : {"source", "target"}) {
+      const auto found = halfedge_types.find(property);
+      const std::string type = found == halfedge_types.end() ? "" : found->second;
+      if (type != "uint" && type != "uint32")
+        fail(path, element_line,
+             std::string("element halfedge needs the property ") + property + " as uint (uint32), " +
+                 (type.empty() ? std::string("not declared") : "not " + type));
+    }
+  };
   for (int lineno = 1; std::getline(in, line); ++lineno) {
     std::istringstream words(line);
     std::string word, type, name;
     words >> word;
-    if (word == "end_header") return;
+    if (word == "end_header") return check_halfedge();
     if (word == "element") {
+      check_halfedge();
+      halfedge_types.clear();
+      element_line = lineno;
       std::string count;
       words >> element >> count;
       long long n = -1;
@@ -219,6 +238,7 @@ void check_ply(const std::string& path, const std::string& text) {
           n > static_cast<long long>(text.size()))  // every element takes a byte at least
         fail(path, lineno, "element " + element + " has the count '" + count + "', not a whole number from 0 to " +
                                std::to_string(kMaxMeshTriangles));
+      items = n;
     }
     if (word != "property") continue;
     if (element.empty()) fail(path, lineno, "a property before any element");
@@ -230,6 +250,7 @@ void check_ply(const std::string& path, const std::string& text) {
       std::string index_type;
       words >> index_type >> name;
     }
+    halfedge_types.emplace(name, type);
     // CGAL names a property by the word after its type(s); garbage after that is ignored, and a
     // type it does not know drops the property. Both that name and the line's last word are
     // checked, so a garbage type before "x" is refused too.

@@ -184,3 +184,27 @@ TEST_CASE("mesh reader defect: a PLY element named vertices has its coordinates 
                                           "property float y\nproperty short z\nend_header\n0 0 0\n");
   CHECK_THAT(error_of(path), Catch::StartsWith(path + ":6: vertex property z must be float or double, not short"));
 }
+
+// Fuzz crash #15 (mesh_ply, crash-630daee5, input kept as
+// tests/data/meshes/fuzz_crash_ply_halfedge_source.ply): CGAL reads every item of an element named
+// "halfedge" as an unsigned int "source" and "target" whatever the header declares; a halfedge
+// element without them (or with another type) met a missing reader (UBSan: member call on null
+// pointer of type PLY_read_typed_number<unsigned int>, PLY_reader.h:387).
+TEST_CASE("mesh reader defect: a PLY halfedge element needs uint source and target", "[mesh][fuzz-defect]") {
+  const std::string artifact = MTCS_TEST_DATA "/meshes/fuzz_crash_ply_halfedge_source.ply";
+  CHECK_THAT(error_of(artifact), Catch::Contains("element halfedge needs the property source as uint"));
+  const std::string tetra = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                            "property float z\nelement face 1\nproperty list uchar int vertex_indices\n";
+  const auto typed = write("halfedge_int.ply", tetra + "element halfedge 1\nproperty int source\nproperty uint target\n"
+                                                       "end_header\n" + kTetraVertices + "3 0 1 2\n0 1\n");
+  CHECK_THAT(error_of(typed), Catch::StartsWith(typed + ":9: element halfedge needs the property source as uint (uint32), not int"));
+  const auto missing = write("halfedge_no_target.ply", tetra + "element halfedge 1\nproperty uint32 source\n"
+                                                               "end_header\n" + kTetraVertices + "3 0 1 2\n0\n");
+  CHECK_THAT(error_of(missing), Catch::StartsWith(missing + ":9: element halfedge needs the property target as uint (uint32), not declared"));
+  // With both as CGAL reads them, and with none when the element is empty, the mesh still reads.
+  const auto good = write("halfedge_good.ply", tetra + "element halfedge 1\nproperty uint source\nproperty uint32 target\n"
+                                                       "end_header\n" + kTetraVertices + "3 0 1 2\n0 1\n");
+  CHECK(read_mesh(good).triangles.size() == 1);
+  const auto empty = write("halfedge_empty.ply", tetra + "element halfedge 0\nproperty float u\nend_header\n" + kTetraVertices + "3 0 1 2\n");
+  CHECK(read_mesh(empty).triangles.size() == 1);
+}
