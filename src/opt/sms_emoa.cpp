@@ -7,21 +7,6 @@
 #include <numeric>
 
 namespace mtcs::opt {
-namespace {
-
-// a constrained-dominates b: feasible beats infeasible, less violation beats more, then Pareto.
-bool dominates(const Score& a, const Score& b) {
-  if (a.feasible != b.feasible) return a.feasible;
-  if (!a.feasible) return a.violation < b.violation;
-  bool strictly = false;
-  for (std::size_t k = 0; k < a.objectives.size(); ++k) {
-    if (a.objectives[k] > b.objectives[k]) return false;
-    strictly = strictly || a.objectives[k] < b.objectives[k];
-  }
-  return strictly;
-}
-
-}  // namespace
 
 struct SmsEmoa::Fronts {
   std::mutex lock;  // one population at a time (a shared algorithm steps under it)
@@ -90,7 +75,8 @@ std::vector<Individual> SmsEmoa::emigrants(const Generation& g, int k) const {
   std::vector<std::size_t> first;
   for (std::size_t i = 0; i < ranked.size(); ++i) {
     bool dominated = false;
-    for (std::size_t j = 0; j < ranked.size() && !dominated; ++j) dominated = j != i && dominates(ranked[j], ranked[i]);
+    for (std::size_t j = 0; j < ranked.size() && !dominated; ++j)
+      dominated = j != i && constrained_dominates(ranked[j], ranked[i]);
     if (!dominated) first.push_back(i);
   }
   if (!first.empty() && ranked[first.front()].feasible) {  // largest exclusive hypervolume first
@@ -134,7 +120,7 @@ std::vector<Point> SmsEmoa::front(const Generation& g) {
     if (!s.feasible) continue;
     bool dominated = false;
     for (std::size_t j = 0; j < g.population.size() && !dominated; ++j)
-      dominated = j != i && dominates(g.population[j].score, s);
+      dominated = j != i && constrained_dominates(g.population[j].score, s);
     if (!dominated) out.push_back(s.objectives);
   }
   return out;

@@ -20,24 +20,13 @@ using namespace mtcs::opt;
 
 namespace {
 
-bool dominates(const Score& a, const Score& b) {
-  if (a.feasible != b.feasible) return a.feasible;
-  if (!a.feasible) return a.violation < b.violation;
-  bool strictly = false;
-  for (std::size_t k = 0; k < a.objectives.size(); ++k) {
-    if (a.objectives[k] > b.objectives[k]) return false;
-    strictly = strictly || a.objectives[k] < b.objectives[k];
-  }
-  return strictly;
-}
-
 std::vector<std::size_t> worst_front(const std::vector<Score>& scores, bool* is_first) {
   const std::size_t n = scores.size();
   std::vector<int> count(n, 0);
   std::vector<std::vector<std::size_t>> beats(n);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < n; ++j)
-      if (i != j && dominates(scores[i], scores[j])) beats[i].push_back(j), ++count[j];
+      if (i != j && constrained_dominates(scores[i], scores[j])) beats[i].push_back(j), ++count[j];
   std::vector<std::size_t> current;
   for (std::size_t i = 0; i < n; ++i)
     if (count[i] == 0) current.push_back(i);
@@ -66,7 +55,7 @@ std::size_t reference_drop(const std::vector<Score>& ranked, bool domcount_then_
       std::vector<int> count(worst.size(), 0);
       if (domcount_then_hv && !first)
         for (std::size_t w = 0; w < worst.size(); ++w)
-          for (const auto& other : ranked) count[w] += dominates(other, ranked[worst[w]]) ? 1 : 0;
+          for (const auto& other : ranked) count[w] += constrained_dominates(other, ranked[worst[w]]) ? 1 : 0;
       const int most = *std::max_element(count.begin(), count.end());
       std::vector<std::size_t> tied;
       for (std::size_t w = 0; w < worst.size(); ++w)
@@ -277,7 +266,8 @@ TEST_CASE("SMS fronts: kept 3-D contributions equal the full computation's withi
     std::vector<std::size_t> first;
     for (std::size_t i = 0; i < pop.size(); ++i) {
       bool dominated = false;
-      for (std::size_t j = 0; j < pop.size() && !dominated; ++j) dominated = j != i && dominates(pop[j], pop[i]);
+      for (std::size_t j = 0; j < pop.size() && !dominated; ++j)
+        dominated = j != i && constrained_dominates(pop[j], pop[i]);
       if (!dominated) first.push_back(i);
     }
     std::vector<Point> pts;

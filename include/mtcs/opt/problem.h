@@ -27,6 +27,19 @@ inline bool feasible_first(const Score& a, const Score& b) {
   return a.value < b.value;
 }
 
+// Constrained domination, SMS-EMOA's order: feasible beats infeasible, less violation beats
+// more, then Pareto (no worse in every objective, better in one).
+inline bool constrained_dominates(const Score& a, const Score& b) {
+  if (a.feasible != b.feasible) return a.feasible;
+  if (!a.feasible) return a.violation < b.violation;
+  bool strictly = false;
+  for (std::size_t k = 0; k < a.objectives.size(); ++k) {
+    if (a.objectives[k] > b.objectives[k]) return false;
+    strictly = strictly || a.objectives[k] < b.objectives[k];
+  }
+  return strictly;
+}
+
 class Problem {
  public:
   virtual ~Problem() = default;
