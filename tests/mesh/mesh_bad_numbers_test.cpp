@@ -17,6 +17,7 @@
 
 #include "mtcs/mesh/mesh_io.h"
 #include "support/scratch_file.h"
+#include "support/thrown_by.h"
 
 using mtcs::mesh::MeshError;
 using mtcs::mesh::read_mesh;
@@ -29,13 +30,7 @@ std::string write(const std::string& name, const std::string& text) {
 }
 
 std::string error_of(const std::string& path) {
-  try {
-    read_mesh(path);
-  } catch (const MeshError& e) {
-    return e.what();
-  }
-  FAIL("no error for " << path);
-  return "";
+  return mtcs_test::thrown_by<MeshError>([&] { read_mesh(path); }, path).what();
 }
 
 // A tetrahedron whose vertex 2 has the y coordinate Y, in each text format.

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "mtcs/mesh/mesh_io.h"
+#include "support/thrown_by.h"
 
 using mtcs::mesh::MeshError;
 using mtcs::mesh::read_mesh;
@@ -24,13 +25,7 @@ std::string write(const std::string& name, const std::string& text) {
 }
 
 std::string error_of(const std::string& path) {
-  try {
-    read_mesh(path);
-  } catch (const MeshError& e) {
-    return e.what();
-  }
-  FAIL("no error for " << path);
-  return "";
+  return mtcs_test::thrown_by<MeshError>([&] { read_mesh(path); }, path).what();
 }
 
 const std::string kTetraVertices = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";

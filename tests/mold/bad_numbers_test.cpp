@@ -16,6 +16,7 @@
 #include "mtcs/io/input_error.h"
 #include "mtcs/mold/mold_spec.h"
 #include "mtcs/mold/scene.h"
+#include "support/thrown_by.h"
 
 using namespace mtcs;
 namespace fs = std::filesystem;
@@ -29,13 +30,7 @@ fs::path write(const std::string& name, const std::string& text) {
 const std::string kBlock = "block: {box: {min: [0, 0, 0], max: [100, 100, 50]}}\n";
 
 io::InputError error_of(const std::string& text) {
-  try {
-    mold::load_mold_spec(write("spec.yaml", text).string());
-  } catch (const io::InputError& e) {
-    return e;
-  }
-  FAIL("no error for:\n" << text);
-  throw;
+  return mtcs_test::thrown_by<io::InputError>([&] { mold::load_mold_spec(write("spec.yaml", text).string()); }, text);
 }
 
 mold::MoldSpec load(const std::string& text) { return mold::load_mold_spec(write("spec.yaml", text).string()); }

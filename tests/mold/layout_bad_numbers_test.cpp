@@ -8,6 +8,7 @@
 #include "mtcs/io/input_error.h"
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/mold/mold_spec.h"
+#include "support/thrown_by.h"
 
 using namespace mtcs;
 
@@ -29,13 +30,7 @@ mold::Genome load(const std::string& text) {
 }
 
 io::InputError error_of(const std::string& text) {
-  try {
-    load(text);
-  } catch (const io::InputError& e) {
-    return e;
-  }
-  FAIL("no error for:\n" << text);
-  throw;
+  return mtcs_test::thrown_by<io::InputError>([&] { load(text); }, text);
 }
 
 }  // namespace

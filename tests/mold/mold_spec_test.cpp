@@ -10,6 +10,7 @@
 #include "../support/scratch_file.h"
 #include "mtcs/io/input_error.h"
 #include "mtcs/mold/mold_spec.h"
+#include "support/thrown_by.h"
 
 using namespace mtcs;
 namespace fs = std::filesystem;
@@ -25,13 +26,7 @@ const std::string kBlock = "block: {box: {min: [0, 0, 0], max: [100, 100, 50]}}\
 // Loads the spec and returns the error it raises.
 io::InputError error_of(const std::string& text, const std::string& name = "spec.yaml") {
   const auto p = write(name, text);
-  try {
-    mold::load_mold_spec(p.string());
-  } catch (const io::InputError& e) {
-    return e;
-  }
-  FAIL("no error for:\n" << text);
-  throw;
+  return mtcs_test::thrown_by<io::InputError>([&] { mold::load_mold_spec(p.string()); }, text);
 }
 
 }  // namespace

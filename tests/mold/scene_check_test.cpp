@@ -10,6 +10,7 @@
 #include "../support/scratch_file.h"
 #include "mtcs/io/input_error.h"
 #include "mtcs/mold/mold_spec.h"
+#include "support/thrown_by.h"
 
 using namespace mtcs;
 using geometry::Vec3;
@@ -47,13 +48,7 @@ const std::string kPartUm = boxes_off({{0, 0, 0, 1e5, 6e4, 2e4}});
 
 io::InputError error_of(const std::string& text, const std::string& name = "spec.yaml") {
   const auto p = write(name, text);
-  try {
-    mold::load_mold_spec(p.string());
-  } catch (const io::InputError& e) {
-    return e;
-  }
-  FAIL("no error for:\n" << text);
-  throw;
+  return mtcs_test::thrown_by<io::InputError>([&] { mold::load_mold_spec(p.string()); }, text);
 }
 
 }  // namespace

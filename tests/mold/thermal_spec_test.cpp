@@ -17,6 +17,7 @@
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/mold/mold_spec.h"
+#include "support/thrown_by.h"
 
 using namespace mtcs;
 using geometry::Vec3;
@@ -33,13 +34,7 @@ const std::string kBlock = "block: {box: {min: [0, 0, 0], max: [120, 80, 60]}}\n
 mold::MoldSpec load(const std::string& text) { return mold::load_mold_spec(write("spec.yaml", text).string()); }
 
 io::InputError error_of(const std::string& text) {
-  try {
-    load(text);
-  } catch (const io::InputError& e) {
-    return e;
-  }
-  FAIL("no error for:\n" << text);
-  throw;
+  return mtcs_test::thrown_by<io::InputError>([&] { load(text); }, text);
 }
 
 bool mentions(const io::InputError& e, const std::string& what) {

@@ -13,6 +13,7 @@
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/run/shop_layout.h"
+#include "support/thrown_by.h"
 
 using namespace mtcs;
 namespace fs = std::filesystem;
@@ -38,13 +39,7 @@ std::string u_loop(const std::string& far_z) {
 }
 
 io::InputError error_of(const fs::path& layout, const mold::MoldSpec& spec) {
-  try {
-    mold::read_layout(layout.string(), spec);
-  } catch (const io::InputError& e) {
-    return e;
-  }
-  FAIL("no error for " << layout);
-  throw;
+  return mtcs_test::thrown_by<io::InputError>([&] { mold::read_layout(layout.string(), spec); }, layout.string());
 }
 
 // The plate's spec with +z and -z allowed too: a step along z can be drilled.

@@ -7,6 +7,8 @@
 
 #include "mtcs/io/input_error.h"
 #include "mtcs/voxel/accessibility_map.h"
+#include "support/scratch_file.h"
+#include "support/thrown_by.h"
 #include "voxel/case_files.h"
 
 using namespace mtcs;
@@ -23,14 +25,8 @@ std::string slurp(const std::string& path) {
 
 // The error message of reading `text` as a case file.
 std::string error_of(const std::string& text) {
-  const std::string path = "/tmp/mtcs_voxel_case_test.txt";
-  std::ofstream(path) << text;
-  try {
-    read_access_case(path);
-  } catch (const io::InputError& e) {
-    return e.what();
-  }
-  return "";
+  const std::string path = mtcs_test::write_scratch("access_case", "case.txt", text).string();
+  return mtcs_test::thrown_by<io::InputError>([&] { read_access_case(path); }, text).what();
 }
 
 }  // namespace
@@ -65,5 +61,5 @@ TEST_CASE("case-file errors name the line, column and field", "[voxel][case]") {
   CHECK_THAT(error_of(replace("pivot ", "pivots ")), Catch::Contains("unknown key 'pivots'"));
   CHECK_THAT(error_of(good.substr(0, good.find("am\n") + 3 + 2 * 33)), Catch::Contains("field 'am': file ends"));
   CHECK_THAT(error_of(replace("pivot ", "# pivot ")), Catch::Contains("field 'pivot': missing"));
-  CHECK(error_of(good).empty());
+  CHECK_NOTHROW(read_access_case(mtcs_test::write_scratch("access_case", "good.txt", good).string()));
 }
