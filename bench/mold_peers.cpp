@@ -44,7 +44,7 @@ class Recorder final : public opt::Problem {
   std::size_t dimension(const opt::Genotype& g) const override { return inner_.dimension(g); }
   std::size_t rotation_angles(const opt::Genotype& g) const override { return inner_.rotation_angles(g); }
   std::vector<double> initial_steps(const opt::Genotype& g) const override { return inner_.initial_steps(g); }
-  void mutate(opt::Genotype& g, const std::vector<double>& s, opt::Rng& rng) const override { inner_.mutate(g, s, rng); }
+  long mutate(opt::Genotype& g, const std::vector<double>& s, opt::Rng& rng) const override { return inner_.mutate(g, s, rng); }
   opt::Genotype recombine(const opt::Genotype& a, const opt::Genotype& b, opt::Rng& rng) const override {
     return inner_.recombine(a, b, rng);
   }

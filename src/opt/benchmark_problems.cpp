@@ -24,7 +24,7 @@ class Benchmark final : public Problem {
   std::vector<double> initial_steps(const Genotype&) const override { return {1.0}; }
 
   // Polynomial mutation (Deb & Agrawal), eta 20, each variable with probability 1/n.
-  void mutate(Genotype& x, const std::vector<double>&, Rng& rng) const override {
+  long mutate(Genotype& x, const std::vector<double>&, Rng& rng) const override {
     const double eta = 20;
     for (std::size_t i = 0; i < x.size(); ++i) {
       if (rng.uniform() >= 1.0 / double(n_)) continue;
@@ -41,6 +41,7 @@ class Benchmark final : public Problem {
       }
       x[i] = std::clamp(x[i] + dq * span, lo_[i], hi_[i]);
     }
+    return 0;
   }
 
   // Simulated binary crossover (Deb & Agrawal), eta 10, per variable with probability 1/2. The

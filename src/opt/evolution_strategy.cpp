@@ -56,6 +56,7 @@ Generation EvolutionStrategy::step(const Generation& prev) const {
   const int lambda = config_.lambda;
   std::vector<Individual> offspring(static_cast<std::size_t>(lambda));
   std::vector<Genotype> xs(static_cast<std::size_t>(lambda));
+  long spent_by_moves = 0;  // evaluations the mutations themselves made (the budget counts them)
   for (int i = 0; i < lambda; ++i) {
     Rng rng = Rng::for_individual(config_.seed, std::uint64_t(prev.index + 1), std::uint64_t(i));
     if (config_.random_search) {
@@ -98,7 +99,7 @@ Generation EvolutionStrategy::step(const Generation& prev) const {
       if (angle < -kPi) angle += 2 * kPi;
       child.steps[k] = angle;
     }
-    problem_.mutate(child.x, child.steps, rng);
+    spent_by_moves += problem_.mutate(child.x, child.steps, rng);
     xs[std::size_t(i)] = child.x;
     offspring[std::size_t(i)] = std::move(child);
   }
@@ -111,7 +112,7 @@ Generation EvolutionStrategy::step(const Generation& prev) const {
 
   Generation next;
   next.index = prev.index + 1;
-  next.evaluations = prev.evaluations + lambda;
+  next.evaluations = prev.evaluations + lambda + spent_by_moves;
   std::vector<Individual> pool = config_.plus ? prev.population : std::vector<Individual>{};
   pool.insert(pool.end(), offspring.begin(), offspring.end());
   sort_population(problem_, pool);

@@ -31,6 +31,7 @@ void SmsEmoa::advance(Generation& g) const {
   const int mu = int(g.population.size());
   const long lambda = std::max(1L, std::min<long>(config_.lambda, config_.evaluations - g.evaluations));
   std::vector<Individual> children(static_cast<std::size_t>(lambda));
+  long spent_by_moves = 0;  // evaluations the mutations themselves made (the budget counts them)
   for (long k = 0; k < lambda; ++k) {
     Rng rng = Rng::for_individual(config_.seed, std::uint64_t(g.index), std::uint64_t(k));
     const Individual& a = g.population[std::size_t(rng.below(mu))];
@@ -38,7 +39,7 @@ void SmsEmoa::advance(Generation& g) const {
     Individual& child = children[std::size_t(k)];
     child.x = problem_.recombine(a.x, b.x, rng);
     child.steps = a.steps;
-    problem_.mutate(child.x, child.steps, rng);
+    spent_by_moves += problem_.mutate(child.x, child.steps, rng);
   }
   if (lambda == 1) {
     children.front().score = problem_.evaluate(children.front().x);
@@ -48,7 +49,7 @@ void SmsEmoa::advance(Generation& g) const {
     std::vector<Score> scores = evaluate_all(problem_, xs);
     for (std::size_t k = 0; k < children.size(); ++k) children[k].score = std::move(scores[k]);
   }
-  g.evaluations += lambda;
+  g.evaluations += lambda + spent_by_moves;
 
   // Reduce: drop lambda members, one at a time from the worst front, ranked as the problem asks
   // (its penalty method).

@@ -25,7 +25,7 @@ class TestFunction final : public Problem {
     s.resize(g.size() + rotation_angles(g), 0.0);
     return s;
   }
-  void mutate(Genotype& g, const std::vector<double>& steps, Rng& rng) const override {
+  long mutate(Genotype& g, const std::vector<double>& steps, Rng& rng) const override {
     const std::size_t n = g.size();
     std::vector<double> z(n);
     for (std::size_t k = 0; k < n; ++k) z[k] = steps[k] * rng.normal();
@@ -39,6 +39,7 @@ class TestFunction final : public Problem {
       }
     }
     for (std::size_t k = 0; k < n; ++k) g[k] += z[k];
+    return 0;
   }
   // Intermediate recombination.
   Genotype recombine(const Genotype& a, const Genotype& b, Rng&) const override {

@@ -127,12 +127,13 @@ void MoldProblem::repair(mold::Circuit& c) const {
   snap(c.waypoints.back(), spec_.circuits.outlet_faces);
 }
 
-void MoldProblem::mutate(opt::Genotype& x, const std::vector<double>& steps, opt::Rng& rng) const {
+long MoldProblem::mutate(opt::Genotype& x, const std::vector<double>& steps, opt::Rng& rng) const {
   mold::Genome g = genome(x);
   // The reach move alone: a child that moves other holes too would lose a narrow window it found.
-  if (!reach_samples_.empty() && rng.uniform() < rates_.reach && reach_worst(g, rng)) {
+  long spent = 0;
+  if (!reach_samples_.empty() && rng.uniform() < rates_.reach && reach_worst(g, rng, spent)) {
     x = encode(g);
-    return;
+    return spent;
   }
   const double sigma = steps.front();
   const auto& lim = spec_.circuits;
@@ -200,6 +201,7 @@ void MoldProblem::mutate(opt::Genotype& x, const std::vector<double>& steps, opt
     }
   }
   x = encode(g);
+  return spent;
 }
 
 int MoldProblem::movable_parts(const mold::Circuit& c) const {
@@ -278,7 +280,7 @@ bool MoldProblem::blend_circuits(mold::Genome& a, const mold::Genome& b, opt::Rn
   return blended;
 }
 
-bool MoldProblem::reach_worst(mold::Genome& g, opt::Rng& rng) const {
+bool MoldProblem::reach_worst(mold::Genome& g, opt::Rng& rng, long& evaluations) const {
   const mold::Scene& scene = pipeline_.scene();
   const WorstSample worst = worst_covered_sample(reach_samples_, mold::decode(scene, g));
   if (!worst.any) return false;
@@ -286,19 +288,21 @@ bool MoldProblem::reach_worst(mold::Genome& g, opt::Rng& rng) const {
   const auto& diameters = spec_.drilling.diameters;
   ReachRequest request{worst.point, worst.wall_distance, diameters[std::size_t(rng.below(int(diameters.size())))],
                        12, region_};
-  auto c = circuit_reaching(pipeline_, request, [this](mold::Circuit& k) { repair(k); }, rng);
+  Reached c = circuit_reaching(pipeline_, request, [this](mold::Circuit& k) { repair(k); }, rng);
+  evaluations += c.evaluations;
   const double smallest = *std::min_element(diameters.begin(), diameters.end());
-  if (!c && request.diameter != smallest) {
+  if (!c.circuit && request.diameter != smallest) {
     request.diameter = smallest;
     c = circuit_reaching(pipeline_, request, [this](mold::Circuit& k) { repair(k); }, rng);
+    evaluations += c.evaluations;
   }
-  if (!c) return false;
+  if (!c.circuit) return false;
   // Added, or in place of the circuit nearest the sample (which does not reach it) or of any one.
   const auto& lim = spec_.circuits;
   const int n = int(g.circuits.size());
   std::size_t at = std::size_t(n);
   if (n < lim.max && (n < lim.min || n == 0 || rng.uniform() < 0.5)) {
-    g.circuits.push_back(*c);
+    g.circuits.push_back(*c.circuit);
   } else {
     at = 0;
     if (rng.uniform() < 0.5) {
@@ -310,11 +314,12 @@ bool MoldProblem::reach_worst(mold::Genome& g, opt::Rng& rng) const {
     } else {
       at = std::size_t(rng.below(n));
     }
-    g.circuits[at] = *c;
+    g.circuits[at] = *c.circuit;
   }
   // Circuits the new one collides with give way, as far as circuits.min allows.
   const std::string mine = "c" + std::to_string(at) + ".";
   std::vector<std::size_t> gone;
+  ++evaluations;
   for (const auto& v : pipeline_.evaluate(g).violations) {
     if (v.kind != eval::ViolationKind::BoreBore || v.elements.size() < 2) continue;
     for (int e = 0; e < 2; ++e) {

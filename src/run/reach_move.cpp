@@ -115,7 +115,7 @@ double wall_distance(const mold::Scene& scene, const mold::Circuit& circuit, con
   return nearest_wall(mold::decode(scene, mold::Genome{{circuit}}), p);
 }
 
-std::optional<mold::Circuit> circuit_reaching(const eval::Pipeline& pipeline, const ReachRequest& request,
+Reached circuit_reaching(const eval::Pipeline& pipeline, const ReachRequest& request,
                                               const std::function<void(mold::Circuit&)>& repair, opt::Rng& rng) {
   const mold::Scene& scene = pipeline.scene();
   const mold::MoldSpec& spec = scene.spec();
@@ -123,7 +123,7 @@ std::optional<mold::Circuit> circuit_reaching(const eval::Pipeline& pipeline, co
   std::vector<int> drillable;
   for (const mold::Face f : spec.drilling.allowed_faces)
     if (std::find(drillable.begin(), drillable.end(), axis_of(f)) == drillable.end()) drillable.push_back(axis_of(f));
-  if (drillable.empty()) return std::nullopt;
+  if (drillable.empty()) return {};
   const double r = request.diameter / 2;
   const double cavity_margin = spec.clearances.bore_cavity.at(request.diameter);
   int left = request.evaluations;
@@ -144,7 +144,7 @@ std::optional<mold::Circuit> circuit_reaching(const eval::Pipeline& pipeline, co
       const eval::Evaluation e = pipeline.evaluate(mold::Genome{{c}});
       const mold::Layout layout = mold::decode(scene, mold::Genome{{c}});
       if (nearest_wall(layout, request.target) >= request.better_than) break;  // pushed too far: a new start
-      if (e.feasible()) return c;
+      if (e.feasible()) return {c, request.evaluations - left};
       Vec3 shift = Vec3::Zero();
       bool clearable = true;
       for (const eval::Violation& v : e.violations) {
@@ -162,7 +162,7 @@ std::optional<mold::Circuit> circuit_reaching(const eval::Pipeline& pipeline, co
       repair(c);
     }
   }
-  return std::nullopt;
+  return {std::nullopt, request.evaluations - left};
 }
 
 }  // namespace mtcs::run

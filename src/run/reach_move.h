@@ -39,10 +39,15 @@ struct ReachRequest {
   geometry::Box region;             // where the circuit's other legs may run (around the part)
 };
 
+struct Reached {
+  std::optional<mold::Circuit> circuit;
+  int evaluations = 0;  // pipeline evaluations spent (they count in the optimiser's budget)
+};
+
 // A circuit feasible on its own (no violation in the pipeline) whose flow bores come within
 // `better_than` of the target, or none after `evaluations` tries. `repair` puts its ports back
 // on their faces (MoldProblem::repair).
-std::optional<mold::Circuit> circuit_reaching(const eval::Pipeline& pipeline, const ReachRequest& request,
+Reached circuit_reaching(const eval::Pipeline& pipeline, const ReachRequest& request,
                                               const std::function<void(mold::Circuit&)>& repair, opt::Rng& rng);
 
 }  // namespace mtcs::run

@@ -86,7 +86,7 @@ class Screened final : public Problem {
   std::vector<double> initial_steps(const Genotype& g) const override { return f_.initial_steps(g); }
   Genotype recombine(const Genotype& a, const Genotype& b, Rng& rng) const override { return f_.recombine(a, b, rng); }
   bool better(const Score& a, const Score& b) const override { return f_.better(a, b); }
-  void mutate(Genotype& g, const std::vector<double>& steps, Rng& rng) const override { f_.mutate(g, steps, rng); }
+  long mutate(Genotype& g, const std::vector<double>& steps, Rng& rng) const override { return f_.mutate(g, steps, rng); }
   Score evaluate(const Genotype& g) const override {
     ++evaluated;
     return f_.evaluate(g);
@@ -149,4 +149,40 @@ TEST_CASE("ES multi-fidelity: only the screen's best survive, and the population
   });
   CHECK(good.population.front().score.value < 1e-3 * bad.population.front().score.value);
   CHECK(backwards.evaluated == c.mu + bad.index * c.survivors);
+}
+
+namespace {
+
+// A test function whose mutation scores two candidates of its own before it moves, as the mold
+// problem's reach move does: what it spends is in the ES's count, so it shortens the run.
+class SearchingMutation final : public Problem {
+ public:
+  explicit SearchingMutation(const Problem& f) : f_(f) {}
+  std::string name() const override { return f_.name(); }
+  Genotype sample(Rng& rng) const override { return f_.sample(rng); }
+  std::vector<double> initial_steps(const Genotype& g) const override { return f_.initial_steps(g); }
+  long mutate(Genotype& g, const std::vector<double>& steps, Rng& rng) const override {
+    f_.mutate(g, steps, rng);
+    return 2;
+  }
+  Score evaluate(const Genotype& g) const override { return f_.evaluate(g); }
+
+ private:
+  const Problem& f_;
+};
+
+}  // namespace
+
+TEST_CASE("ES: the evaluations a mutation spends count in the budget", "[opt][es][budget]") {
+  const auto f = make_test_function("sphere", 5);
+  EsConfig c;
+  c.evaluations = 2010;
+  const SearchingMutation searching(*f);
+  std::vector<long> counts;
+  const Generation end = run(EvolutionStrategy(searching, c), nullptr,
+                             [&](const Generation& g) { counts.push_back(g.evaluations); });
+  REQUIRE(counts.size() > 2);
+  for (std::size_t k = 1; k < counts.size(); ++k) CHECK(counts[k] - counts[k - 1] == 3 * c.lambda);
+  CHECK(end.evaluations >= c.evaluations);
+  CHECK(end.evaluations < c.evaluations + 3 * c.lambda);
 }

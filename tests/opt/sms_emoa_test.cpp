@@ -89,7 +89,7 @@ class DeathRankedZdt1 final : public Problem {
   std::string name() const override { return "zdt1-death"; }
   Genotype sample(Rng& rng) const override { return zdt1_->sample(rng); }
   std::vector<double> initial_steps(const Genotype& g) const override { return zdt1_->initial_steps(g); }
-  void mutate(Genotype& g, const std::vector<double>& s, Rng& rng) const override { zdt1_->mutate(g, s, rng); }
+  long mutate(Genotype& g, const std::vector<double>& s, Rng& rng) const override { return zdt1_->mutate(g, s, rng); }
   Genotype recombine(const Genotype& a, const Genotype& b, Rng& rng) const override { return zdt1_->recombine(a, b, rng); }
   Score evaluate(const Genotype& g) const override {
     Score s = zdt1_->evaluate(g);
@@ -126,4 +126,30 @@ TEST_CASE("SMS-EMOA ranks by the problem's ranking: a death penalty's infinite o
   const double hv = hypervolume(front, c.ref);
   CHECK(std::isfinite(hv));
   CHECK(hv > 0.3);
+}
+
+TEST_CASE("SMS-EMOA: the evaluations a mutation spends count in the budget", "[opt][sms-emoa][budget]") {
+  // ZDT1 whose mutation scores one candidate of its own first, as the mold problem's reach move does.
+  class Searching final : public Problem {
+   public:
+    Searching() : zdt1_(make_benchmark_problem("zdt1")) {}
+    std::string name() const override { return "zdt1-searching"; }
+    Genotype sample(Rng& rng) const override { return zdt1_->sample(rng); }
+    std::vector<double> initial_steps(const Genotype& g) const override { return zdt1_->initial_steps(g); }
+    long mutate(Genotype& g, const std::vector<double>& s, Rng& rng) const override { return 1 + zdt1_->mutate(g, s, rng); }
+    Score evaluate(const Genotype& g) const override { return zdt1_->evaluate(g); }
+
+   private:
+    std::unique_ptr<Problem> zdt1_;
+  } searching;
+  SmsConfig c;
+  c.mu = 20;
+  c.evaluations = 400;
+  c.ref = {1.1, 1.1};
+  std::vector<long> counts;
+  run(SmsEmoa(searching, c), nullptr, [&](const Generation& g) { counts.push_back(g.evaluations); });
+  REQUIRE(counts.size() > 2);
+  for (std::size_t k = 1; k < counts.size(); ++k) CHECK(counts[k] - counts[k - 1] == 2);
+  CHECK(counts.back() >= c.evaluations);
+  CHECK(counts.size() < 200);  // half the steps of a mutation that spends nothing
 }

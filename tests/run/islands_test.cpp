@@ -82,7 +82,7 @@ struct Line final : opt::Problem {
   std::string name() const override { return "line"; }
   opt::Genotype sample(opt::Rng& rng) const override { return {rng.uniform()}; }
   std::vector<double> initial_steps(const opt::Genotype&) const override { return {0.1}; }
-  void mutate(opt::Genotype&, const std::vector<double>&, opt::Rng&) const override {}
+  long mutate(opt::Genotype&, const std::vector<double>&, opt::Rng&) const override { return 0; }
   opt::Score evaluate(const opt::Genotype& g) const override { return {{g[0], 1 - g[0]}, 0, true, g[0], ""}; }
 };
 

@@ -86,7 +86,10 @@ TEST_CASE("circuit_reaching lays a feasible circuit in the 1 mm band over the tr
   for (std::uint64_t seed = 1; seed <= 8; ++seed) {
     opt::Rng rng(seed);
     const run::ReachRequest request{target, 20, 8, 24, block};
-    const auto c = run::circuit_reaching(pipeline, request, repair, rng);
+    const run::Reached reached = run::circuit_reaching(pipeline, request, repair, rng);
+    CHECK(reached.evaluations >= 1);
+    CHECK(reached.evaluations <= request.evaluations);
+    const auto& c = reached.circuit;
     if (!c) continue;
     ++found;
     const mold::Genome g{{*c}};

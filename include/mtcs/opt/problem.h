@@ -58,8 +58,9 @@ class Problem {
   // Initial strategy parameters: step sizes, then angles.
   virtual std::vector<double> initial_steps(const Genotype& g) const = 0;
   // Gaussian moves with the given strategy parameters plus any structural moves; must keep g
-  // valid.
-  virtual void mutate(Genotype& g, const std::vector<double>& steps, Rng& rng) const = 0;
+  // valid. Returns the evaluations the move itself spent (a move that scores candidates, like
+  // the mold problem's reach move): they count in the optimisers' budgets.
+  virtual long mutate(Genotype& g, const std::vector<double>& steps, Rng& rng) const = 0;
   // Recombination of two parents; the default takes the first.
   virtual Genotype recombine(const Genotype& a, const Genotype& b, Rng& rng) const;
   // Thread-safe.

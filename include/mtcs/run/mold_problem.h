@@ -50,7 +50,7 @@ class MoldProblem final : public opt::Problem {
   // The waypoint coordinates (the genotype minus its structure counts).
   std::size_t dimension(const opt::Genotype& g) const override;
   std::vector<double> initial_steps(const opt::Genotype&) const override { return {initial_step_}; }
-  void mutate(opt::Genotype& g, const std::vector<double>& steps, opt::Rng& rng) const override;
+  long mutate(opt::Genotype& g, const std::vector<double>& steps, opt::Rng& rng) const override;
   opt::Genotype recombine(const opt::Genotype& a, const opt::Genotype& b, opt::Rng& rng) const override;
   opt::Score evaluate(const opt::Genotype& g) const override;
   // The screening pipeline's score (the same as evaluate without one).
@@ -82,8 +82,9 @@ class MoldProblem final : public opt::Problem {
   // mutation.blend: a's circuits blended with b's of the same index and shape; false: none had one.
   bool blend_circuits(mold::Genome& a, const mold::Genome& b, opt::Rng& rng) const;
   opt::Score score(const eval::Pipeline& pipeline, const opt::Genotype& g) const;
-  // The reach move on g: true when it laid a circuit (added, or in place of one).
-  bool reach_worst(mold::Genome& g, opt::Rng& rng) const;
+  // The reach move on g: true when it laid a circuit (added, or in place of one); `evaluations`
+  // grows by the pipeline evaluations it spent.
+  bool reach_worst(mold::Genome& g, opt::Rng& rng, long& evaluations) const;
 
   const eval::Pipeline& pipeline_;
   const eval::Pipeline* screen_;
