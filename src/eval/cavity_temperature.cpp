@@ -48,14 +48,17 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
   out.surface = mold::to_string(scene.spec().thermal.objective_surface);
   if (field_edge > 0) out.field = {mesh::refine(heated_surface(setting), field_edge), {}, "temperature", "degC"};
 
-  // Every point where a temperature is wanted, in one set: the samples, the extra points, the
-  // field's vertices (weights matter only for the samples' summary).
-  thermal::Samples all = samples;
-  for (const Vec3& p : points) all.points.push_back(p), all.weights.push_back(0);
-  for (const Vec3& p : out.field.surface.vertices) all.points.push_back(p), all.weights.push_back(0);
+  // The extra points and the field's vertices after the samples (weights matter only for the
+  // samples' summary).
+  thermal::Samples extra;
+  for (const Vec3& p : points) extra.points.push_back(p), extra.weights.push_back(0);
+  for (const Vec3& p : out.field.surface.vertices) extra.points.push_back(p), extra.weights.push_back(0);
 
   std::vector<double> t;
   if (query.tier == mold::ThermalTier::Fd) {
+    thermal::Samples all = samples;
+    all.points.insert(all.points.end(), extra.points.begin(), extra.points.end());
+    all.weights.insert(all.weights.end(), extra.weights.begin(), extra.weights.end());
     thermal::FvOptions options;
     options.cell = query.cell;
     const thermal::FvResult r = thermal::solve_finite_volume({setting, channels}, all, options);
@@ -67,10 +70,21 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
     options.elements = query.elements;
     const thermal::CavityCut cut =
         scene.spec().thermal.void_plane ? thermal::cut_at_cavity_void(setting) : thermal::CavityCut{setting};
-    const thermal::LineSinkModel model(cut.setting, all, options);
+    const std::vector<thermal::Channel> folded = cut.fold(channels);
+    // The samples in a model of their own, the extra points in another: the line sinks' float
+    // coordinates (from the samples' centre) and far-expansion chunks (16 neighbouring targets)
+    // depend on which points share the set, so the samples' values stay those of the thermal
+    // command bit for bit whatever else is asked. The system solved does not depend on them.
+    const thermal::LineSinkModel model(cut.setting, samples, options);
     thermal::LineSinkCache cache;
-    const thermal::LineSinkSolution r = model.solve(cut.fold(channels), cache);
+    const thermal::LineSinkSolution r = model.solve(folded, cache);
     t = r.temperature;
+    if (extra.size()) {
+      const thermal::LineSinkModel at_extra(cut.setting, extra, options);
+      thermal::LineSinkCache extra_cache;
+      const std::vector<double> te = at_extra.temperatures(folded, extra_cache);
+      t.insert(t.end(), te.begin(), te.end());
+    }
     double to_channels = 0;
     for (double q : r.channel_heat) to_channels += q;
     out.balance = {r.heat_in, to_channels, r.face_heat};

@@ -61,7 +61,8 @@ template <int M, bool Dipoles, bool Accumulate>
     float pa = ra + std::abs(ta);
     float inv = 1 / (pa * ra);  // one division for both reciprocals
     float ipa = ra * inv, ira = pa * inv;
-    const float wi = Accumulate ? w[i] : 1.0f;
+    // With weights, the weight joins rho . n once per point rather than each dipole per element.
+    const float wi = Accumulate ? w[i] : 1.0f, wc1 = wi * c1, wc2 = wi * c2;
 #pragma GCC unroll 16
     for (int e = 0; e < M; ++e) {
       const float tb = t0 - s[e + 1];
@@ -80,13 +81,13 @@ template <int M, bool Dipoles, bool Accumulate>
         const float ca = ipa * ira, cb = ipb * irb;
         const float across = (ta * ira - tb * irb) * inv_rho2;
         const float factor = tb >= 0 ? cb - ca : (ta <= 0 ? ca - cb : across);
-        v[1] = factor * c1;
-        v[2] = factor * c2;
+        v[1] = factor * (Accumulate ? wc1 : c1);
+        v[2] = factor * (Accumulate ? wc2 : c2);
       }
 #pragma GCC unroll 3
       for (int k = 0; k < kinds; ++k) {
         float& o = out[std::size_t(e * kinds + k) * out_stride + i];
-        if constexpr (Accumulate) o += wi * v[k];
+        if constexpr (Accumulate) o += k == 0 ? wi * v[k] : v[k];
         else o = v[k];
       }
       ta = tb, ra = rb, pa = pb, ipa = ipb, ira = irb;
@@ -122,28 +123,27 @@ template <int M, bool Dipoles>
     const float rx = wx - t0 * g.ux, ry = wy - t0 * g.uy, rz = wz - t0 * g.uz;
     const float rho2 = rx * rx + ry * ry + rz * rz;
     const float c1 = rx * g.n1x + ry * g.n1y + rz * g.n1z, c2 = rx * g.n2x + ry * g.n2y + rz * g.n2z;
-    const float wi = w[i];
+    const float wi = w[i], wc1 = wi * c1, wc2 = wi * c2;
 #pragma GCC unroll 16
     for (int e = 0; e < M; ++e) {
       const float tau = t0 - mid[e], tau2 = tau * tau;
       const float id2 = 1 / (rho2 + tau2), id = std::sqrt(id2);
       const float q2 = h2[e] * id2, cc = tau2 * id2;  // q^2 and c^2
-      // P2/3, P4/5, P6/7 and C2/3, C4/5, C6/7 as polynomials in c^2.
-      const float p2 = (3 * cc - 1) * (1.0f / 6);
-      const float p4 = ((35 * cc - 30) * cc + 3) * (1.0f / 40);
-      const float p6 = (((231 * cc - 315) * cc + 105) * cc - 5) * (1.0f / 112);
-      const float sink = two_h[e] * id * (1 + q2 * (p2 + q2 * (p4 + q2 * p6)));
-      float v[3] = {sink, 0, 0};
+      // P2/3, P4/5, P6/7 as polynomials in c^2, their constant factors folded in.
+      const float p2 = 0.5f * cc - (1.0f / 6);
+      const float p4 = (0.875f * cc - 0.75f) * cc + 0.075f;
+      const float p6 = ((2.0625f * cc - 2.8125f) * cc + 0.9375f) * cc - (5.0f / 112);
+      const float g = two_h[e] * id;
+      out[std::size_t(e * kinds) * out_stride + i] += wi * (g * (1 + q2 * (p2 + q2 * (p4 + q2 * p6))));
       if constexpr (Dipoles) {
-        const float d2 = (5 * cc - 1) * 0.5f;
-        const float d4 = ((315 * cc - 210) * cc + 15) * (1.0f / 40);
-        const float d6 = (((3003 * cc - 3465) * cc + 945) * cc - 35) * (1.0f / 112);
-        const float factor = two_h[e] * id * id2 * (1 + q2 * (d2 + q2 * (d4 + q2 * d6)));
-        v[1] = factor * c1;
-        v[2] = factor * c2;
+        // C2/3, C4/5, C6/7 likewise; the weight and rho . n taken per point.
+        const float d2 = 2.5f * cc - 0.5f;
+        const float d4 = (7.875f * cc - 5.25f) * cc + 0.375f;
+        const float d6 = ((26.8125f * cc - 30.9375f) * cc + 8.4375f) * cc - 0.3125f;
+        const float factor = g * id2 * (1 + q2 * (d2 + q2 * (d4 + q2 * d6)));
+        out[std::size_t(e * kinds + 1) * out_stride + i] += factor * wc1;
+        out[std::size_t(e * kinds + 2) * out_stride + i] += factor * wc2;
       }
-#pragma GCC unroll 3
-      for (int k = 0; k < kinds; ++k) out[std::size_t(e * kinds + k) * out_stride + i] += wi * v[k];
     }
   }
 }

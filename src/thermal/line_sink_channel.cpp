@@ -3,18 +3,17 @@
 
 #include <algorithm>
 
-#include "element_far_fields.h"
 #include "line_sink_model.h"
 
 namespace mtcs::thermal {
 
 std::vector<float> LineSinkModel::Impl::float_columns_at(const ChannelAxis& source, const PointSet& ps,
-                                                         const Vec3& origin) const {
+                                                         const Vec3& origin, double far_ratio) const {
   const int cols = source.elements * kinds;
   const std::size_t T = ps.targets();
   std::vector<float> acc(T * cols, 0.0f);
-  const FarChunks far{ps.chunk_box.data(), PointSet::kChunk, float(options.far_expansion)};
-  const bool use_far = !ps.chunk_box.empty() && options.far_expansion > 0;
+  const FarChunks far{ps.chunk_box.data(), ps.chunk, float(far_ratio)};
+  const bool use_far = !ps.chunk_box.empty() && far_ratio > 0;
   element_fields_float_slots(source, origin, kinds, ps.sx.data(), ps.sy.data(), ps.sz.data(), ps.sw.data(), T,
                              ps.slots, acc.data(), use_far ? &far : nullptr);
   for (int c = 0; c < cols; ++c) {
@@ -25,10 +24,10 @@ std::vector<float> LineSinkModel::Impl::float_columns_at(const ChannelAxis& sour
 }
 
 MatrixXd LineSinkModel::Impl::columns_at(const ChannelAxis& source, const PointSet& ps, bool single,
-                                         const Vec3& origin) const {
+                                         const Vec3& origin, double far_ratio) const {
   const int cols = source.elements * kinds;
   if (single && ps.slots > 0) {
-    const std::vector<float> v = float_columns_at(source, ps, origin);
+    const std::vector<float> v = float_columns_at(source, ps, origin, far_ratio);
     return Eigen::Map<const Eigen::MatrixXf>(v.data(), Eigen::Index(ps.targets()), cols).cast<double>();
   }
   MatrixXd out = MatrixXd::Zero(ps.targets(), cols);
@@ -72,52 +71,10 @@ MatrixXd LineSinkModel::Impl::rows_from_walls(const ChannelAxis& rows, const Mat
 }
 
 MatrixXd LineSinkModel::Impl::channel_at_rows(const LineSinkCache::ChannelBlock& rows, const ChannelAxis& source) const {
-  return rows_from_walls(rows.axis, columns_at(source, rows.walls, rows.walls_single, rows.walls_origin));
-}
-
-MatrixXd LineSinkModel::Impl::pair_at_rows(const LineSinkCache::ChannelBlock& rows, const ChannelAxis& source) const {
-  const PointSet& ps = rows.walls;
-  const double reach = options.pair_far * source.element_length;
-  if (!(reach > 0) || ps.slots == 0) return channel_at_rows(rows, source);
-  // Per slot (mostly: one image of every wall point), far when all its points are: a function
-  // of the pair alone, so the block stays a function of its key. Runs of near and far slots go
-  // to the exact kernel and to the multipoles, summed in the same float columns in slot order.
-  // The distances in float (a vectorised loop; only the split depends on them).
-  const std::size_t T = ps.targets(), n = T * std::size_t(ps.slots);
-  const Vec3 a = source.p0 - rows.walls_origin;
-  const float ax = float(a.x()), ay = float(a.y()), az = float(a.z());
-  const float ux = float(source.u.x()), uy = float(source.u.y()), uz = float(source.u.z());
-  const float length = float(source.length), reach2 = float(reach * reach);
-  std::vector<float> d2(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const float wx = ps.sx[i] - ax, wy = ps.sy[i] - ay, wz = ps.sz[i] - az;
-    const float t = std::min(std::max(wx * ux + wy * uy + wz * uz, 0.0f), length);
-    const float rx = wx - t * ux, ry = wy - t * uy, rz = wz - t * uz;
-    d2[i] = rx * rx + ry * ry + rz * rz;
-  }
-  std::vector<char> far(ps.slots);
-  for (int j = 0; j < ps.slots; ++j)
-    far[j] = std::all_of(d2.begin() + std::ptrdiff_t(j * T), d2.begin() + std::ptrdiff_t((j + 1) * T),
-                         [&](float v) { return v >= reach2; });
-  const int cols = source.elements * kinds;
-  std::vector<float> acc(T * cols, 0.0f);
-  for (int j0 = 0; j0 < ps.slots;) {
-    int j1 = j0 + 1;
-    while (j1 < ps.slots && far[j1] == far[j0]) ++j1;
-    const std::size_t k = std::size_t(j0) * T;
-    if (far[j0])
-      element_far_fields_float_slots(source, rows.walls_origin, kinds, ps.sx.data() + k, ps.sy.data() + k,
-                                     ps.sz.data() + k, ps.sw.data() + k, T, j1 - j0, acc.data());
-    else
-      element_fields_float_slots(source, rows.walls_origin, kinds, ps.sx.data() + k, ps.sy.data() + k,
-                                 ps.sz.data() + k, ps.sw.data() + k, T, j1 - j0, acc.data());
-    j0 = j1;
-  }
-  for (int c = 0; c < cols; ++c) {
-    const float scale = float((c % kinds == 0 ? -1 : 1) * inv4pik);  // a sink takes heat out
-    for (std::size_t t = 0; t < T; ++t) acc[c * T + t] *= scale;
-  }
-  return rows_from_walls(rows.axis, Eigen::Map<const Eigen::MatrixXf>(acc.data(), Eigen::Index(T), cols).cast<double>());
+  // An element at least pair_far element lengths from a slot's wall points (all of them) takes
+  // its multipole expansion there: q = h / d <= 1 / (2 pair_far), the walls' chunk boxes.
+  const double ratio = options.pair_far > 0 ? 0.5 / options.pair_far : 0.0;
+  return rows_from_walls(rows.axis, columns_at(source, rows.walls, rows.walls_single, rows.walls_origin, ratio));
 }
 
 std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(const Channel& ch) const {
@@ -140,21 +97,23 @@ std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(
       b->walls.add(images, p, tol, 1.0, b->walls_origin);
       b->walls.close_target();
     }
-  if (b->walls_single) b->walls.make_slots();
+  // One chunk per slot: the slot's wall points (one image of the whole channel's walls) are
+  // far from an element or not together, a function of the two channels' keys alone.
+  if (b->walls_single) b->walls.make_slots(), b->walls.make_chunk_boxes(b->walls.targets());
   // At the samples.
   if (options.single_precision && sample_set.slots > 0) {
-    b->sample_cols_f = float_columns_at(a, sample_set, sample_origin);
+    b->sample_cols_f = float_columns_at(a, sample_set, sample_origin, options.far_expansion);
   } else if (options.single_precision) {
-    const MatrixXd at_samples = columns_at(a, sample_set, true, sample_origin);
+    const MatrixXd at_samples = columns_at(a, sample_set, true, sample_origin, options.far_expansion);
     b->sample_cols_f.resize(n_samples * cols);
     for (int c = 0; c < cols; ++c)
       for (std::size_t s = 0; s < n_samples; ++s) b->sample_cols_f[c * n_samples + s] = float(at_samples(s, c));
   } else {
-    const MatrixXd at_samples = columns_at(a, sample_set, false, sample_origin);
+    const MatrixXd at_samples = columns_at(a, sample_set, false, sample_origin, 0);
     b->sample_cols_d.assign(at_samples.data(), at_samples.data() + at_samples.size());
   }
   // At the convective faces' grids (means).
-  b->face_means = face_average * columns_at(a, face_set, options.single_precision, center);
+  b->face_means = face_average * columns_at(a, face_set, options.single_precision, center, options.far_expansion);
   // Own rows: the own columns, the heat input and the face losses.
   b->self = channel_at_rows(*b, a);
   b->self_dipole.assign(cols, 0.0);

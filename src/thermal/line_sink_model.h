@@ -188,15 +188,17 @@ struct LineSinkModel::Impl {
 
   // Columns of `source` at every target of a point set: targets x cols. In single precision
   // only where asked (samples, face grids): a wall point sits a radius, maybe 1e-3 mm, from
-  // its axis, finer than a float resolves at the block's coordinates.
-  MatrixXd columns_at(const ChannelAxis& source, const PointSet& ps, bool single, const Vec3& origin) const;
+  // its axis, finer than a float resolves at the block's coordinates. Where the set has chunk
+  // boxes and far_ratio > 0, the chunks far from an element take its expansion (FarChunks).
+  MatrixXd columns_at(const ChannelAxis& source, const PointSet& ps, bool single, const Vec3& origin,
+                      double far_ratio) const;
   // The same in single precision over a slot layout, column-major (the samples' cached columns).
-  std::vector<float> float_columns_at(const ChannelAxis& source, const PointSet& ps, const Vec3& origin) const;
-  // Columns of `source` at the rows of a channel: its wall points' mean and half-differences.
+  std::vector<float> float_columns_at(const ChannelAxis& source, const PointSet& ps, const Vec3& origin,
+                                      double far_ratio) const;
+  // Columns of `source` at the rows of a channel (its own or another): its wall points' mean and
+  // half-differences; wall image slots options.pair_far element lengths or more from an element
+  // of the source see it as its multipole expansion (line_sink_fields.h, FarChunks).
   MatrixXd channel_at_rows(const LineSinkCache::ChannelBlock& rows, const ChannelAxis& source) const;
-  // The same for another channel: wall image points farther than options.pair_far element
-  // lengths from the source's axis take its elements' multipoles (element_far_fields.h).
-  MatrixXd pair_at_rows(const LineSinkCache::ChannelBlock& rows, const ChannelAxis& source) const;
   MatrixXd rows_from_walls(const ChannelAxis& rows, const MatrixXd& at_walls) const;
   // Everything of one channel that does not depend on the others (line_sink_channel.cpp).
   std::shared_ptr<LineSinkCache::ChannelBlock> build_channel(const Channel& ch) const;

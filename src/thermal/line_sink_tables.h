@@ -50,22 +50,24 @@ struct PointSet {
       }
   }
 
-  // Per slot, the bounding boxes of chunks of kChunk consecutive targets (FarChunks): where a
+  // Per slot, the bounding boxes of chunks of `chunk` consecutive targets (FarChunks): where a
   // channel is far from a chunk, its fields there take the cheaper expansions.
   static constexpr std::size_t kChunk = 16;
+  std::size_t chunk = kChunk;
   std::vector<float> chunk_box;
-  void make_chunk_boxes() {
-    const std::size_t T = targets(), chunks = (T + kChunk - 1) / kChunk;
+  void make_chunk_boxes(std::size_t size = kChunk) {
+    chunk = size;
+    const std::size_t T = targets(), chunks = (T + chunk - 1) / chunk;
     chunk_box.assign(6 * chunks * std::size_t(slots), 0.0f);
     for (int j = 0; j < slots; ++j)
       for (std::size_t c = 0; c < chunks; ++c) {
         float* b = &chunk_box[6 * (j * chunks + c)];
-        for (std::size_t t = c * kChunk; t < std::min(T, (c + 1) * kChunk); ++t) {
+        for (std::size_t t = c * chunk; t < std::min(T, (c + 1) * chunk); ++t) {
           const std::size_t k = j * T + t;
           const float p[3] = {sx[k], sy[k], sz[k]};
           for (int a = 0; a < 3; ++a) {
-            b[a] = t == c * kChunk ? p[a] : std::min(b[a], p[a]);
-            b[3 + a] = t == c * kChunk ? p[a] : std::max(b[3 + a], p[a]);
+            b[a] = t == c * chunk ? p[a] : std::min(b[a], p[a]);
+            b[3 + a] = t == c * chunk ? p[a] : std::max(b[3 + a], p[a]);
           }
         }
       }

@@ -70,8 +70,9 @@ void shrink(Map& map, std::size_t& bytes, std::size_t keep, std::uint64_t now) {
   std::vector<std::uint64_t> ages;
   ages.reserve(map.size());
   for (const auto& [key, e] : map) ages.push_back(e.used);
-  std::sort(ages.begin(), ages.end());
-  // Drop the older half of the entries (never the current evaluation's).
+  // Drop the older half of the entries (never the current evaluation's): the median age, no
+  // full sort needed.
+  std::nth_element(ages.begin(), ages.begin() + std::ptrdiff_t(ages.size() / 2), ages.end());
   const std::uint64_t cut = std::min(ages[ages.size() / 2], now);
   for (auto it = map.begin(); it != map.end();) {
     if (it->second.used < cut || (it->second.used == cut && cut < now)) {
@@ -140,7 +141,7 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
       auto& entry = cache.pairs_[k];
       if (!entry.block) {
         entry.block = std::make_shared<LineSinkCache::PairBlock>();
-        entry.block->block = m.pair_at_rows(*blocks[r], blocks[c]->axis);
+        entry.block->block = m.channel_at_rows(*blocks[r], blocks[c]->axis);
         cache.bytes_ += block_bytes(*entry.block);
       }
       entry.used = now;

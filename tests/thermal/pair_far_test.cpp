@@ -1,7 +1,10 @@
-// The pair blocks' far field (LineSinkOptions::pair_far: wall image points far from another
-// channel see its elements as multipoles) against the exact blocks (pair_far = 0), a second
-// method: on the block case and its random layouts (3 bores; FreeFem++ P2 at the 720 patch
-// samples), and on a plate-sized block with 27 bores, at the samples and in the patch std.
+// The wall blocks' far field (LineSinkOptions::pair_far: an image slot of a channel's wall
+// points far from an element of a channel, its own or another, sees the element as its P6
+// multipole expansion) against the exact blocks (pair_far = 0), a second method: on the block
+// case and its random layouts (3 bores; FreeFem++ P2 at the 720 patch samples), and on a
+// plate-sized block with 27 bores, at the samples and in the patch std. The expansion's bound
+// at pair_far = 2 (q <= 1/4): 2e-6 of an element's term for the sink, 8e-5 for the dipoles;
+// measured 1e-5 K at most (the point-multipole pairs before it: 6e-4 K).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -142,7 +145,7 @@ std::vector<std::vector<Channel>> plate_layouts(int count) {
 
 }  // namespace
 
-TEST_CASE("line sinks: far pairs as multipoles stay within 0.01 K of the exact pairs on the block case",
+TEST_CASE("line sinks: far wall slots as multipoles stay within 1e-4 K of the exact blocks on the block case",
           "[thermal][pair_far]") {
   const Patch ref = patch_reference();
   LineSinkOptions exact;
@@ -164,8 +167,8 @@ TEST_CASE("line sinks: far pairs as multipoles stay within 0.01 K of the exact p
   const double tau = mtcs_test::kendall_tau(std_far, std_exact);
   std::printf("pair_far block: max |dT| %.2e K, max |d std| %.2e K, tau(far, exact) %.4f over %zu layouts\n", worst,
               worst_std, tau, layouts.size());
-  CHECK(worst <= 0.01);
-  CHECK(worst_std <= 0.002);
+  CHECK(worst <= 1e-4);
+  CHECK(worst_std <= 2e-5);
   CHECK(tau >= 0.99);
   // The case's own layout against FreeFem++ P2: the issue's 0.2 K still holds.
   double rms = 0;
@@ -202,6 +205,6 @@ TEST_CASE("line sinks: far pairs as multipoles on a plate-sized block with 27 bo
               worst, worst_std, *std::min_element(std_exact.begin(), std_exact.end()),
               *std::max_element(std_exact.begin(), std_exact.end()), ms_far / double(layouts.size()),
               ms_exact / double(layouts.size()), layouts.size());
-  CHECK(worst <= 0.01);
-  CHECK(worst_std <= 0.002);
+  CHECK(worst <= 1e-4);
+  CHECK(worst_std <= 2e-5);
 }

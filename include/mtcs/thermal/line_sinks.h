@@ -54,9 +54,10 @@ struct LineSinkOptions {
   double heat_grid = 4;          // mm: the heat input's field tabulated for the collocation
                                  // points 2 cells or more from it (0: always summed exactly);
                                  // a large block: a coarser grid, this one around the heat
-  double pair_far = 2;  // element lengths: an image of another channel's wall points this far
-                        // from a channel's axis sees its elements as multipoles (0: every pair
-                        // exact; with single_precision only, the double path stays exact)
+  double pair_far = 2;  // element lengths: an image slot of a channel's wall points (its own
+                        // or another's rows) this far from an element's centre sees the element
+                        // as its multipole expansion to P6 (q <= 1 / (2 pair_far); 0: every
+                        // block exact; with single_precision only, the double path stays exact)
 };
 
 // The per-channel and per-pair influence blocks of recent evaluations, keyed by the exact
