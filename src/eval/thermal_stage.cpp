@@ -84,7 +84,8 @@ class ThermalStage final : public Stage {
   // slot. Bores of one circuit share a radius: squared distances are minimised, one root per sample.
   const std::unique_ptr<double[]>& circuit_distances(const mold::Layout& layout, std::size_t first,
                                                      std::size_t last, double r) const {
-    std::vector<double> key{r};
+    static thread_local std::vector<double> key;  // per thread: a lookup that hits allocates nothing
+    key.assign(1, r);
     for (std::size_t b = first; b < last; ++b) {
       const auto& bore = layout.bores[b];
       key.insert(key.end(), {bore.flow_start.x(), bore.flow_start.y(), bore.flow_start.z(), bore.flow_end.x(),
