@@ -6,6 +6,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <limits>
+
+#include "eval/surface_samples.h"
+#include "eval/tiled_samples.h"
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/opt/rng.h"
@@ -114,4 +119,69 @@ TEST_CASE("A child scored after other parents' children equals a cold score with
     shared += shared_bores(p, c);
   }
   CHECK(shared > 0);
+}
+
+// The thermal stage minimises a circuit's distances over tiles of samples and skips far bores
+// (src/eval/tiled_samples.h): its objectives must be, bit for bit, those of the plain loop over
+// every bore and every sample it stands for, for random layouts and for children.
+TEST_CASE("The thermal objectives equal the plain loop's bit for bit", "[run][incremental]") {
+  const std::string mold = GENERATE(std::string("plate_wall_distance"), std::string("gear"));
+  const run::Session session(MTCS_SOURCE_DIR "/molds/" + mold + ".yaml");
+  const mold::Scene& scene = session.scene();
+  const auto& use = scene.spec().objectives.use;
+  const auto slot = [&](mold::Objective o) { return std::size_t(std::find(use.begin(), use.end(), o) - use.begin()); };
+  REQUIRE(slot(mold::Objective::Uniformity) < use.size());
+  REQUIRE(slot(mold::Objective::WorstCovered) < use.size());
+  const eval::SurfaceSamples s = eval::sample_cavity(*scene.spec().cavity);
+  const geometry::Vec3 origin = scene.block_bounds().min;
+  const mold::Length& target_at = scene.spec().objectives.target_wall_distance;
+  // Per sample the nearest circuit's sqrt(min squared distance) - r, the earlier circuit on ties.
+  auto plain = [&](const mold::Layout& layout) {
+    std::vector<double> best(s.size(), scene.block_bounds().size().norm()), target(s.size(), target_at.at(0));
+    for (std::size_t b = 0; b < layout.bores.size();) {
+      const std::size_t first = b;
+      while (b < layout.bores.size() && layout.bores[b].circuit == layout.bores[first].circuit) ++b;
+      std::vector<eval::FlowSegment> segments;
+      for (std::size_t k = first; k < b; ++k) segments.push_back({layout.bores[k].flow_start, layout.bores[k].flow_end});
+      const double r = layout.bores[first].diameter / 2;
+      std::vector<float> m(s.size(), std::numeric_limits<float>::infinity());
+      for (const auto& g : segments) {
+        const geometry::Vec3 a = g.start - origin, d = g.end - g.start;
+        const float ax = float(a.x()), ay = float(a.y()), az = float(a.z());
+        const float dx = float(d.x()), dy = float(d.y()), dz = float(d.z());
+        const float dd = dx * dx + dy * dy + dz * dz, inv = dd > 0 ? 1 / dd : 0;
+        for (std::size_t i = 0; i < s.size(); ++i) {
+          const float px = float(s.x[i] - origin.x()) - ax, py = float(s.y[i] - origin.y()) - ay,
+                      pz = float(s.z[i] - origin.z()) - az;
+          float t = (px * dx + py * dy + pz * dz) * inv;
+          t = t < 0.f ? 0.f : (t > 1.f ? 1.f : t);
+          const float qx = px - t * dx, qy = py - t * dy, qz = pz - t * dz;
+          const float d2 = qx * qx + qy * qy + qz * qz;
+          m[i] = d2 < m[i] ? d2 : m[i];
+        }
+      }
+      for (std::size_t i = 0; i < s.size(); ++i) {
+        const double e = std::sqrt(double(m[i])) - r;
+        if (e < best[i]) best[i] = e, target[i] = target_at.at(2 * r);
+      }
+    }
+    double sum = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const double dev = best[i] - target[i];
+      sum += s.weight[i] * dev * dev;
+    }
+    return std::pair{std::sqrt(sum / s.total_weight()), *std::max_element(best.begin(), best.end())};
+  };
+  const run::MoldProblem problem(session.pipeline(), {}, session.config().mutation);
+  opt::Rng rng(5);
+  for (int i = 0; i < 16; ++i) {
+    opt::Genotype g = problem.sample(rng);
+    if (i % 2) problem.mutate(g, problem.initial_steps(g), rng);  // a child: most of a parent's bores
+    const mold::Layout layout = mold::decode(scene, problem.genome(g));
+    const auto e = session.pipeline().evaluate(layout);
+    const auto [uniformity, worst] = plain(layout);
+    INFO(mold << ", layout " << i);
+    CHECK(e.objectives[slot(mold::Objective::Uniformity)] == uniformity);
+    CHECK(e.objectives[slot(mold::Objective::WorstCovered)] == worst);
+  }
 }
