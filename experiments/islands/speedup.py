@@ -7,7 +7,7 @@ Measured: evaluations / the run's own seconds (summary.json), best of the repeti
 Per run also: writer_cpu (the store thread's CPU seconds in its transactions), rank_cpu,
 rank_work_us_per_eval and rank_wait (each process's CPU seconds; its run loop's CPU without the
 waits, per evaluation of its island (MPI; threads: the main thread only); wall seconds blocked in gather,
-stop and migrate).
+stop and migrate; rank_end: wall seconds waiting at the end for the slowest island, since the delay).
 Idle estimate (what a machine with CORES free cores would give): the islands meet (every stored
 generation before 2026-11-25, every migration since) and each stretch between two meetings takes
 the longest process's work w[r][g] (CPU seconds of its one thread; every process waits for the
@@ -46,7 +46,7 @@ for run in sorted(p for p in glob.glob(os.path.join(root, "*-*-*")) if os.path.i
     delay = int(re.search(r"migration_delay: (\d+)", meta.get("islands", "")).group(1)) \
         if "migration_delay" in meta.get("islands", "") else 0
     idle_waits = [0.0] * len(work)
-    if mode == "serial":  # one thread; the writer beside it on another core
+    if mode in ("serial", "lockserial"):  # one thread; the writer beside it on another core
         idle = run_cpu - commit_cpu
     elif mode in ("mpi", "lockstep") and delay == 0:
         idle = sum(max(max(w[g] for w in work), (sum(w[g] for w in work) + commit_cpu / G) / cores) for g in range(G))
@@ -76,7 +76,7 @@ for run in sorted(p for p in glob.glob(os.path.join(root, "*-*-*")) if os.path.i
                      rank_wait=";".join(f"{t['gather'] + t['stop'] + t['migrate']:.3f}" for t in timing),
                      rank_wait_fraction=";".join(f"{(t['gather'] + t['stop'] + t['migrate']) / t['wall']:.3f}"
                                                  for t in timing),
-                     delay=delay, idle_wait_fraction=";".join(f"{x / idle:.3f}" for x in idle_waits)))
+                     rank_end=";".join(f"{t.get('end', 0):.3f}" for t in timing), delay=delay, idle_wait_fraction=";".join(f"{x / idle:.3f}" for x in idle_waits)))
 keys = list(rows[0].keys())
 print(",".join(keys))
 for r in rows:
@@ -85,22 +85,22 @@ print()
 # The same evaluations (P islands) on one thread against P ranks or threads: the speed-up of the same work.
 serial = {}
 for r in rows:
-    if r["mode"] == "serial":
-        b = serial.setdefault(r["P"], dict(evals_per_s=0, idle_evals_per_s=0, cpu=[]))
+    if r["mode"] in ("serial", "lockserial"):
+        b = serial.setdefault((r["mode"], r["P"]), dict(evals_per_s=0, idle_evals_per_s=0, cpu=[]))
         b["evals_per_s"] = max(b["evals_per_s"], r["evals_per_s"])
         b["idle_evals_per_s"] = max(b["idle_evals_per_s"], r["idle_evals_per_s"])
         b["cpu"].append(r["cpu_us_per_eval"])
-for r_mode in ("mpi", "lockstep", "threads"):
-    for P in sorted(serial):
-        if P == 1:
+for r_mode, s_mode in (("mpi", "serial"), ("threads", "serial"), ("lockstep", "lockserial")):
+    for (m_, P) in sorted(serial):
+        if P == 1 or m_ != s_mode:
             continue
         runs = [r for r in rows if r["mode"] == r_mode and r["P"] == P]
         if not runs:
             continue
-        s = serial[P]
+        s = serial[(s_mode, P)]
         m = max(r["evals_per_s"] for r in runs)
         i = max(r["idle_evals_per_s"] for r in runs)
-        print(f"{r_mode} P={P} against the same {P} islands in one thread: measured {m / s['evals_per_s']:.2f},"
+        print(f"{r_mode} P={P} against the same {P} islands in one thread ({s_mode}): measured {m / s['evals_per_s']:.2f},"
               f" idle estimate {i / s['idle_evals_per_s']:.2f}; one thread's CPU {min(s['cpu']):.0f}-{max(s['cpu']):.0f}"
               f" us/eval")
 print()

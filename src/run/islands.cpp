@@ -226,6 +226,7 @@ double thread_cpu_seconds() { return cpu_seconds(CLOCK_THREAD_CPUTIME_ID); }
 // thread a rank, what the rank would take on a core of its own), for experiments/islands/speedup.py.
 struct Phases {
   double evaluate = 0, migrate = 0, gather = 0, store = 0, stop = 0;
+  double end = 0;  // waiting at the end for the last meetings and migrants (the slowest island's finish)
   std::vector<double> work;
   double work_start = thread_cpu_seconds(), waiting_cpu = 0;
   void met() {
@@ -437,10 +438,13 @@ StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, con
   }
   // The last meetings (the writer stores them) and the migrants still on their way (sent by every
   // island alike, so as many to receive as this process sent).
-  while (meetings_received < meetings_sent) receive_meeting();
-  for (; migrations_received < migrations_sent; ++migrations_received)
-    phases.waited(phases.migrate, [&] { return transport.receive_migrants(P, s.topology); });
-  phases.waited(phases.gather, [&] { transport.finish_sends(); });
+  const double gather_before = phases.gather, stop_before = phases.stop;  // the end's waits go to `end` only
+  Phases::timed(phases.end, [&] {
+    while (meetings_received < meetings_sent) receive_meeting();
+    for (; migrations_received < migrations_sent; ++migrations_received) transport.receive_migrants(P, s.topology);
+    transport.finish_sends();
+  });
+  phases.gather = gather_before, phases.stop = stop_before;
   if (writing) Phases::timed(phases.store, [&] { writing->finish(); });
   r.interrupted = !islands.front().done(gens.front());
   if (transport.writer()) r.last = merge(base, problem, last);
@@ -455,9 +459,9 @@ StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, con
   char line[400];
   std::snprintf(line, sizeof line,
                 "islands %s: evaluations %ld wall %.4f cpu %.4f evaluate %.4f migrate %.4f gather %.4f store %.4f"
-                " stop %.4f",
+                " stop %.4f end %.4f",
                 (std::to_string(mine.front()) + (mine.size() > 1 ? "-" + std::to_string(mine.back()) : "")).c_str(), local_evals, elapsed(), process_cpu_seconds() - cpu0,
-                phases.evaluate, phases.migrate, phases.gather, phases.store, phases.stop);
+                phases.evaluate, phases.migrate, phases.gather, phases.store, phases.stop, phases.end);
   std::string mine_line = line;
   if (writing) {
     const IslandWriter::Times w = writing->times();
