@@ -132,6 +132,9 @@ Command add_optimize_command(CLI::App& app) {
       ->capture_default_str()->check(CLI::Range(1, 100000000));
   sub->add_option("--migrants", o->islands.migrants, "islands: members each island sends (ES: its best; SMS-EMOA: front\n"
                   "members of largest hypervolume contribution)")->capture_default_str()->check(CLI::Range(0, 100000));
+  sub->add_option("--migration-delay", o->islands.migration_delay, "islands: migrations between a send and its\n"
+                  "arrival (0: in lockstep); ranks wait only for migrants this old")->capture_default_str()
+      ->check(CLI::Range(0, 1000));
   sub->add_option("--topology", o->topology, "islands: ring or fully-connected")->capture_default_str()
       ->check(CLI::IsMember({"ring", "fully-connected"}));
   return {sub, [o] {

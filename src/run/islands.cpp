@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <deque>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -43,6 +44,10 @@ class Island {
     const int n = pareto_ ? g.index / mu_ : g.index;
     return n > 0 && n % every == 0;
   }
+  // The number of the migration at (or last before) the generation `g`: 1 for the first.
+  int migration(const opt::Generation& g, int every) const { return (pareto_ ? g.index / mu_ : g.index) / every; }
+  // The generation index of migration `j`.
+  int migration_generation(int j, int every) const { return (pareto_ ? mu_ : 1) * j * every; }
   std::vector<opt::Individual> emigrants(const opt::Generation& g, int k) const {
     return pareto_ ? sms_.emigrants(g, k) : opt::best_emigrants(g, k);
   }
@@ -92,6 +97,7 @@ opt::Generation merge(const MoldOptimizer& base, const opt::Problem& problem, co
 // unstored, what a kill -9 loses and how long a stop waits stay small.
 constexpr std::size_t kMaxStretch = 10;
 
+// All islands in this process: each message is queued, and received from the queue in order.
 class ThreadTransport final : public IslandTransport {
  public:
   std::vector<int> local(int islands) const override {
@@ -100,23 +106,39 @@ class ThreadTransport final : public IslandTransport {
     return all;
   }
   bool writer() const override { return true; }
-  std::vector<std::vector<opt::Individual>> migrate(const std::vector<std::vector<opt::Individual>>& outgoing, int islands,
-                                                    opt::Topology topology) override {
+  void send_migrants(const std::vector<std::vector<opt::Individual>>& outgoing, int islands,
+                     opt::Topology topology) override {
     std::vector<std::vector<opt::Individual>> arrivals(static_cast<std::size_t>(islands));
     for (int i = 0; i < islands; ++i)
       for (const int s : opt::migration_sources(topology, islands, i))
         arrivals[std::size_t(i)].insert(arrivals[std::size_t(i)].end(), outgoing[std::size_t(s)].begin(),
                                         outgoing[std::size_t(s)].end());
-    return arrivals;
+    migrants_.push_back(std::move(arrivals));
   }
-  std::vector<std::vector<opt::Generation>> gather(std::vector<std::vector<opt::Generation>> local, int) override {
-    return local;
+  std::vector<std::vector<opt::Individual>> receive_migrants(int, opt::Topology) override { return pop(migrants_); }
+  void send_stretch(std::vector<std::vector<opt::Generation>> local, int) override { stretches_.push_back(std::move(local)); }
+  std::vector<std::vector<opt::Generation>> receive_stretch(int) override { return pop(stretches_); }
+  void send_stop(bool value) override { stops_.push_back(value); }
+  bool receive_stop() override { return pop(stops_); }
+  std::vector<std::vector<opt::Generation>> scatter(const std::vector<std::vector<opt::Generation>>& all, int) override {
+    return all;
   }
-  std::vector<opt::Generation> scatter(const std::vector<opt::Generation>& all, int) override { return all; }
   bool broadcast(bool value) override { return value; }
   std::string broadcast(const std::string& value) override { return value; }
   bool all(bool value) override { return value; }
   std::vector<std::string> gather_text(const std::string& local) override { return {local}; }
+
+ private:
+  template <class T>
+  static T pop(std::deque<T>& queue) {
+    if (queue.empty()) throw std::logic_error("islands: a message received before it was sent");
+    T front = std::move(queue.front());
+    queue.pop_front();
+    return front;
+  }
+  std::deque<std::vector<std::vector<opt::Individual>>> migrants_;
+  std::deque<std::vector<std::vector<opt::Generation>>> stretches_;
+  std::deque<bool> stops_;
 };
 
 }  // namespace
@@ -143,11 +165,13 @@ int threads_per_rank() {
 
 std::string IslandSettings::to_text() const {
   return "islands: " + std::to_string(islands) + "\nmigration_every: " + std::to_string(migration_every) +
-         "\nmigrants: " + std::to_string(migrants) + "\ntopology: " + opt::topology_name(topology) + "\n";
+         "\nmigrants: " + std::to_string(migrants) + "\ntopology: " + opt::topology_name(topology) +
+         "\nmigration_delay: " + std::to_string(migration_delay) + "\n";
 }
 
 IslandSettings IslandSettings::parse(const std::string& text, const std::string& origin) {
   IslandSettings s;
+  s.migration_delay = 0;  // stores made before the delay existed migrated in lockstep
   std::istringstream in(text);
   std::string line;
   int row = 0;
@@ -160,13 +184,15 @@ IslandSettings IslandSettings::parse(const std::string& text, const std::string&
       if (key == "islands") s.islands = std::stoi(value);
       else if (key == "migration_every") s.migration_every = std::stoi(value);
       else if (key == "migrants") s.migrants = std::stoi(value);
+      else if (key == "migration_delay") s.migration_delay = std::stoi(value);
       else if (key == "topology") s.topology = opt::parse_topology(value);
     } catch (const std::exception& e) {
       throw io::InputError(origin, row, colon + 3, key, "not a valid value: " + value);
     }
   }
-  if (s.islands < 1 || s.migration_every < 1 || s.migrants < 0)
-    throw io::InputError(origin, 0, 0, "islands", "needs islands >= 1, migration_every >= 1, migrants >= 0");
+  if (s.islands < 1 || s.migration_every < 1 || s.migrants < 0 || s.migration_delay < 0)
+    throw io::InputError(origin, 0, 0, "islands",
+                         "needs islands >= 1, migration_every >= 1, migrants >= 0, migration_delay >= 0");
   return s;
 }
 
@@ -200,6 +226,7 @@ double thread_cpu_seconds() { return cpu_seconds(CLOCK_THREAD_CPUTIME_ID); }
 // thread a rank, what the rank would take on a core of its own), for experiments/islands/speedup.py.
 struct Phases {
   double evaluate = 0, migrate = 0, gather = 0, store = 0, stop = 0;
+  double end = 0;  // waiting at the end for the last meetings and migrants (the slowest island's finish)
   std::vector<double> work;
   double work_start = thread_cpu_seconds(), waiting_cpu = 0;
   void met() {
@@ -238,33 +265,56 @@ StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, con
   const auto t0 = std::chrono::steady_clock::now();
   const double cpu0 = process_cpu_seconds();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
-  const int P = s.islands;
+  const int P = s.islands, delay = s.migration_delay;
   const std::vector<int> mine = transport.local(P);
   std::vector<Island> islands;
   for (const int i : mine) islands.emplace_back(base, problem, i, P);
 
   // Where to start: the store's last generation of every island (the writer reads, the others
-  // receive theirs), or fresh populations.
+  // receive theirs), or fresh populations. Before it, each island's generations at the last
+  // `delay` migrations: the migrants then sent have not arrived at the last generation, and are
+  // sent again (chosen from the same stored generations, so the same members).
   double seconds_before = 0;
   long evals_before = 0;
-  std::vector<opt::Generation> all;
+  std::vector<std::vector<opt::Generation>> all;
   if (db) {
     if (const auto last = db->last()) {
       seconds_before = db->summaries().back().seconds;
       evals_before = last->evaluations;
+      const Island& any = islands.front();
+      const int sent = P > 1 ? any.migration(*last, s.migration_every) : 0;
+      std::vector<int> indices;
+      for (int j = std::max(1, sent - delay + 1); j <= sent && delay > 0; ++j)
+        indices.push_back(any.migration_generation(j, s.migration_every));
+      indices.push_back(last->index);
       for (int i = 0; i < P; ++i) {
-        auto g = db->island_generation(i, last->index);
-        if (!g) throw std::runtime_error("run store: island " + std::to_string(i) + " has no generation " +
-                                         std::to_string(last->index) + " (not an island run of " + std::to_string(P) + ")");
-        all.push_back(std::move(*g));
+        std::vector<opt::Generation> island;
+        for (const int index : indices) {
+          auto g = db->island_generation(i, index);
+          if (!g) throw std::runtime_error("run store: island " + std::to_string(i) + " has no generation " +
+                                           std::to_string(index) + " (not an island run of " + std::to_string(P) + ")");
+          island.push_back(std::move(*g));
+        }
+        all.push_back(std::move(island));
       }
     }
   }
   const bool resuming = transport.broadcast(!all.empty());
   std::vector<opt::Generation> gens(islands.size());
   Phases phases;
+  long migrations_sent = 0, migrations_received = 0;
   if (resuming) {
-    gens = transport.scatter(all, P);
+    std::vector<std::vector<opt::Generation>> stored = transport.scatter(all, P);
+    for (std::size_t k = 0; k < islands.size(); ++k) {
+      gens[k] = std::move(stored[k].back());
+      stored[k].pop_back();
+    }
+    for (std::size_t j = 0; j < stored.front().size(); ++j) {
+      std::vector<std::vector<opt::Individual>> out;
+      for (std::size_t k = 0; k < islands.size(); ++k) out.push_back(islands[k].emigrants(stored[k][j], s.migrants));
+      transport.send_migrants(out, P, s.topology);
+      ++migrations_sent;
+    }
   } else {
     Phases::timed(phases.evaluate, [&] {
       tbb::parallel_for(std::size_t(0), islands.size(), [&](std::size_t k) { gens[k] = islands[k].initial(); });
@@ -285,41 +335,61 @@ StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, con
   // local island (island 0 at the writer) had each.
   std::vector<std::vector<opt::Generation>> stretch(islands.size());
   std::vector<double> stretch_seconds;
-  // At a meeting: the writer stores the stretch of every island, generation by generation, and
-  // tells the live line (resuming: takes the last generation as the run's). Returns whether to
-  // stop: the writer's stop(), told everywhere before the writer's work, which the others need
-  // not wait for.
-  auto meet = [&](bool resumed) {
+  // The writer's meetings whose generations it has not received yet: their seconds, and whether
+  // the meeting is where a resumed run starts (stored already).
+  struct Meeting {
+    std::vector<double> seconds;
+    bool resumed = false;
+  };
+  std::deque<Meeting> meetings;
+  long meetings_sent = 0, meetings_received = 0;
+  // The generations and the stop of the oldest meeting not received: the writer stores the
+  // stretch of every island, generation by generation, and tells the live line (a resumed
+  // meeting: takes its last generation as the run's). Returns whether to stop.
+  auto receive_meeting = [&] {
     std::vector<std::vector<opt::Generation>> every =
-        phases.waited(phases.gather, [&] { return transport.gather(std::move(stretch), P); });
-    stretch.assign(islands.size(), {});
-    const bool stopping = phases.waited(phases.stop, [&] { return transport.broadcast(stop && stop()); });
-    if (transport.writer()) {
-      Phases::timed(phases.store, [&] {
-        const std::size_t n = every.front().size();
-        std::vector<store::IslandsGeneration> stored;
-        for (const auto& island : every)
-          if (island.size() != n) throw std::logic_error("islands: islands met at different generations");
-        for (std::size_t k = 0; k < n; ++k) {
-          store::IslandsGeneration gen;
-          for (auto& island : every) gen.islands.push_back(std::move(island[k]));
-          if (k + 1 == n) last = gen.islands;
-          if (resumed) continue;
-          const double sec = stretch_seconds[k];
-          if (on_line)
-            on_line(gen.islands.front().index, [&] {
-              const opt::Generation merged = merge(base, problem, gen.islands);
-              return island_progress_line(base, merged, gen.islands, sec, merged.evaluations - evals_before);
-            });
-          if (writing) {
-            gen.seconds = seconds_before + sec;
-            stored.push_back(std::move(gen));
-          }
+        phases.waited(phases.gather, [&] { return transport.receive_stretch(P); });
+    const bool stopping = phases.waited(phases.stop, [&] { return transport.receive_stop(); });
+    ++meetings_received;
+    if (!transport.writer()) return stopping;
+    const Meeting meeting = std::move(meetings.front());
+    meetings.pop_front();
+    Phases::timed(phases.store, [&] {
+      const std::size_t n = every.front().size();
+      std::vector<store::IslandsGeneration> stored;
+      for (const auto& island : every)
+        if (island.size() != n) throw std::logic_error("islands: islands met at different generations");
+      for (std::size_t k = 0; k < n; ++k) {
+        store::IslandsGeneration gen;
+        for (auto& island : every) gen.islands.push_back(std::move(island[k]));
+        if (k + 1 == n) last = gen.islands;
+        if (meeting.resumed) continue;
+        const double sec = meeting.seconds[k];
+        if (on_line)
+          on_line(gen.islands.front().index, [&] {
+            const opt::Generation merged = merge(base, problem, gen.islands);
+            return island_progress_line(base, merged, gen.islands, sec, merged.evaluations - evals_before);
+          });
+        if (writing) {
+          gen.seconds = seconds_before + sec;
+          stored.push_back(std::move(gen));
         }
-        if (writing && !stored.empty()) writing->push(std::move(stored));
-      });
-    }
+      }
+      if (writing && !stored.empty()) writing->push(std::move(stored));
+    });
+    return stopping;
+  };
+  // At a meeting: this process's stretch goes to the writer, the writer's stop() to every process,
+  // without waiting; then the meeting `delay` meetings ago is received (the writer stores it).
+  // Returns whether to stop here: the writer's stop() of that meeting.
+  auto meet = [&](bool resumed) {
+    phases.waited(phases.gather, [&] { transport.send_stretch(std::move(stretch), P); });
+    stretch.assign(islands.size(), {});
+    transport.send_stop(transport.writer() && stop && stop());
+    if (transport.writer()) meetings.push_back({std::move(stretch_seconds), resumed});
     stretch_seconds.clear();
+    ++meetings_sent;
+    const bool stopping = meetings_sent - meetings_received > delay && receive_meeting();
     phases.met();
     return stopping;
   };
@@ -334,29 +404,47 @@ StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, con
     return !island.done(gens[k]) && !island.migrates_after(gens[k], s.migration_every) &&
            stretch[k].size() < kMaxStretch;
   };
+  auto run_on = [&](std::size_t k, bool moves_messages) {
+    do {
+      gens[k] = islands[k].advance(gens[k]);
+      stretch[k].push_back(gens[k]);
+      if (k == 0) stretch_seconds.push_back(elapsed());
+      if (moves_messages) transport.progress();
+    } while (runs_on(k));
+  };
+  auto arrive = [&] {
+    const auto arrivals = phases.waited(phases.migrate, [&] { return transport.receive_migrants(P, s.topology); });
+    ++migrations_received;
+    for (std::size_t k = 0; k < islands.size(); ++k) gens[k] = islands[k].immigrate(gens[k], arrivals[k]);
+  };
   while (!islands.front().done(gens.front()) && !stopping) {
     Phases::timed(phases.evaluate, [&] {
-      tbb::parallel_for(std::size_t(0), islands.size(), [&](std::size_t k) {
-        do {
-          gens[k] = islands[k].advance(gens[k]);
-          stretch[k].push_back(gens[k]);
-          if (k == 0) stretch_seconds.push_back(elapsed());
-        } while (runs_on(k));
-      });
+      // One island (a rank's): in this thread, which moves the rank's messages on between generations.
+      if (islands.size() == 1) run_on(0, true);
+      else tbb::parallel_for(std::size_t(0), islands.size(), [&](std::size_t k) { run_on(k, false); });
     });
     if (islands.front().migrates_after(gens.front(), s.migration_every) && P > 1) {
-      phases.waited(phases.migrate, [&] {
-        std::vector<std::vector<opt::Individual>> out;
-        for (std::size_t k = 0; k < islands.size(); ++k) out.push_back(islands[k].emigrants(gens[k], s.migrants));
-        const auto arrivals = transport.migrate(out, P, s.topology);
-        for (std::size_t k = 0; k < islands.size(); ++k) {
-          gens[k] = islands[k].immigrate(gens[k], arrivals[k]);
-          stretch[k].back() = gens[k];
-        }
-      });
+      // Delayed: the arrivals of migration j - delay come in first, and the emigrants are chosen
+      // after them (from the generation stored, so that a resume can choose them again).
+      if (delay > 0 && islands.front().migration(gens.front(), s.migration_every) > delay) arrive();
+      std::vector<std::vector<opt::Individual>> out;
+      for (std::size_t k = 0; k < islands.size(); ++k) out.push_back(islands[k].emigrants(gens[k], s.migrants));
+      transport.send_migrants(out, P, s.topology);
+      ++migrations_sent;
+      if (delay == 0) arrive();
+      for (std::size_t k = 0; k < islands.size(); ++k) stretch[k].back() = gens[k];
     }
     stopping = meet(false);
   }
+  // The last meetings (the writer stores them) and the migrants still on their way (sent by every
+  // island alike, so as many to receive as this process sent).
+  const double gather_before = phases.gather, stop_before = phases.stop;  // the end's waits go to `end` only
+  Phases::timed(phases.end, [&] {
+    while (meetings_received < meetings_sent) receive_meeting();
+    for (; migrations_received < migrations_sent; ++migrations_received) transport.receive_migrants(P, s.topology);
+    transport.finish_sends();
+  });
+  phases.gather = gather_before, phases.stop = stop_before;
   if (writing) Phases::timed(phases.store, [&] { writing->finish(); });
   r.interrupted = !islands.front().done(gens.front());
   if (transport.writer()) r.last = merge(base, problem, last);
@@ -371,9 +459,9 @@ StoredRun run_islands(const MoldOptimizer& base, const MoldProblem& problem, con
   char line[400];
   std::snprintf(line, sizeof line,
                 "islands %s: evaluations %ld wall %.4f cpu %.4f evaluate %.4f migrate %.4f gather %.4f store %.4f"
-                " stop %.4f",
+                " stop %.4f end %.4f",
                 (std::to_string(mine.front()) + (mine.size() > 1 ? "-" + std::to_string(mine.back()) : "")).c_str(), local_evals, elapsed(), process_cpu_seconds() - cpu0,
-                phases.evaluate, phases.migrate, phases.gather, phases.store, phases.stop);
+                phases.evaluate, phases.migrate, phases.gather, phases.store, phases.stop, phases.end);
   std::string mine_line = line;
   if (writing) {
     const IslandWriter::Times w = writing->times();

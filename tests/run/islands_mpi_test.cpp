@@ -88,3 +88,39 @@ TEST_CASE("islands on MPI: a run interrupted in threads resumes on 4 ranks to th
   // mpirun with a number of islands other than its ranks: refused, exit 2.
   CHECK(shell(mpirun(2) + MTCS_BINARY + " optimize " + kMold + " --islands 3 --out " + scratch("mismatch").string()) == 2);
 }
+
+TEST_CASE("islands on MPI: with a migration delay, 2 and 4 ranks store what 2 and 4 islands in threads store",
+          "[run][islands][mpi]") {
+  // Delayed migration (ranks send without waiting, receive the migrants of `delay` migrations
+  // ago): the same rows as the same schedule in threads, for both topologies; and a run
+  // interrupted in threads with migrants on their way, resumed on ranks, ends as the whole run.
+  for (const int islands : {2, 4})
+    for (const std::string args : {" --seed 6 --evaluations 1200 --migration-every 1 --migration-delay 2",
+                                   " --seed 8 --evaluations 1000 --migration-every 2 --migration-delay 1 --algorithm sms-emoa"
+                                   " --topology fully-connected"}) {
+      INFO(islands << " islands," << args);
+      const std::string n = std::to_string(islands);
+      const fs::path threads = scratch("delay_threads_" + n), ranks = scratch("delay_ranks_" + n);
+      const std::string optimize =
+          std::string(MTCS_BINARY) + " optimize " + kMold + " --islands " + n + args + " --out ";
+      REQUIRE(shell(optimize + threads.string()) == 0);
+      REQUIRE(shell(mpirun(islands) + optimize + ranks.string()) == 0);
+      const auto t = rows(threads, islands);
+      CHECK(t.size() > 200);
+      CHECK(rows(ranks, islands) == t);
+    }
+  const fs::path whole = scratch("delay_whole"), parts = scratch("delay_parts");
+  REQUIRE(shell(std::string(MTCS_BINARY) + " optimize " + kMold +
+                " --islands 4 --seed 9 --evaluations 1600 --migration-every 1 --migration-delay 2 --out " +
+                whole.string()) == 0);
+  run::OptimizeRequest r;
+  r.mold = kMold, r.out = parts.string(), r.overrides.seed = 9, r.overrides.evaluations = 1600;
+  r.islands.islands = 4, r.islands.migration_every = 1, r.islands.migration_delay = 2;
+  r.prepare_out = [](const std::string& dir) { fs::create_directories(dir); };
+  int calls = 0;
+  const auto stopped =
+      run::optimize_mold(r, [](const run::MoldOptimizer&, int) { return run::ProgressSink(); }, [&] { return ++calls > 2; });
+  REQUIRE(stopped.interrupted);
+  REQUIRE(shell(mpirun(4) + MTCS_BINARY + " optimize --resume " + parts.string()) == 0);
+  CHECK(rows(parts, 4) == rows(whole, 4));
+}

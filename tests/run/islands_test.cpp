@@ -123,25 +123,54 @@ TEST_CASE("islands: one island is the plain run of the same seed", "[run][island
 }
 
 TEST_CASE("islands: an interrupted archipelago resumed ends as the uninterrupted one", "[run][islands]") {
-  for (const std::string algorithm : {"es", "sms-emoa"}) {
-    const fs::path whole = scratch("whole_" + algorithm), parts = scratch("parts_" + algorithm);
-    auto r = request(whole, 4, algorithm);
-    r.islands.topology = opt::Topology::fully_connected;
-    const run::OptimizeResult done = optimize(r);
-    CHECK_FALSE(done.interrupted);
-    // Stopped at the islands' 4th meeting (stop() is read where they meet), then resumed.
-    r.out = parts.string();
-    int calls = 0;
-    const run::OptimizeResult stopped = optimize(r, [&] { return ++calls > 3; });
-    CHECK(stopped.interrupted);
-    CHECK(stopped.last_generation < done.last_generation);
-    run::OptimizeRequest again;
-    again.resume = parts.string();
-    const run::OptimizeResult resumed = optimize(again);
-    CHECK_FALSE(resumed.interrupted);
-    CHECK(resumed.last_generation == done.last_generation);
-    CHECK(rows(parts, 4) == rows(whole, 4));
-  }
+  // Migration delays 0 (lockstep), 1 and 2: a resume sends again the migrants then on their way.
+  for (const int delay : {0, 1, 2})
+    for (const std::string algorithm : {"es", "sms-emoa"}) {
+      INFO(algorithm << ", migration delay " << delay);
+      const std::string name = algorithm + "_" + std::to_string(delay);
+      const fs::path whole = scratch("whole_" + name), parts = scratch("parts_" + name);
+      auto r = request(whole, 4, algorithm);
+      r.islands.topology = opt::Topology::fully_connected;
+      r.islands.migration_delay = delay;
+      const run::OptimizeResult done = optimize(r);
+      CHECK_FALSE(done.interrupted);
+      // stop() is read where the islands meet and ends the run `delay` meetings later: stopped at
+      // the islands' 4th meeting, then resumed.
+      r.out = parts.string();
+      int calls = 0;
+      const run::OptimizeResult stopped = optimize(r, [&] { return ++calls > 3 - delay; });
+      CHECK(stopped.interrupted);
+      CHECK(stopped.last_generation < done.last_generation);
+      run::OptimizeRequest again;
+      again.resume = parts.string();
+      const run::OptimizeResult resumed = optimize(again);
+      CHECK_FALSE(resumed.interrupted);
+      CHECK(resumed.last_generation == done.last_generation);
+      CHECK(rows(parts, 4) == rows(whole, 4));
+    }
+}
+
+TEST_CASE("islands: a migration delay changes the run; resuming twice still ends as the uninterrupted run",
+          "[run][islands]") {
+  // The delay is part of the run (its arrivals come at other generations), and a resume in the
+  // middle of the migrants' way, stopped again, still ends where the whole run ends.
+  const fs::path lockstep = scratch("delay_0"), delayed = scratch("delay_3"), parts = scratch("delay_3_parts");
+  auto r = request(lockstep, 3);
+  r.islands.migration_every = 1;
+  r.islands.migration_delay = 0;
+  optimize(r);
+  r.out = delayed.string(), r.islands.migration_delay = 3;
+  optimize(r);
+  CHECK(rows(lockstep, 3) != rows(delayed, 3));
+  r.out = parts.string();
+  int calls = 0;
+  CHECK(optimize(r, [&] { return ++calls > 1; }).interrupted);
+  run::OptimizeRequest again;
+  again.resume = parts.string();
+  calls = 0;
+  CHECK(optimize(again, [&] { return ++calls > 0; }).interrupted);
+  CHECK_FALSE(optimize(again).interrupted);
+  CHECK(rows(parts, 3) == rows(delayed, 3));
 }
 
 TEST_CASE("islands: kill -9 while the store thread writes; every resume ends as the uninterrupted run",
@@ -171,7 +200,12 @@ TEST_CASE("islands: kill -9 while the store thread writes; every resume ends as 
 TEST_CASE("islands: settings survive the store's text; bad ones name the field", "[run][islands]") {
   run::IslandSettings s;
   s.islands = 5, s.migration_every = 3, s.migrants = 4, s.topology = opt::Topology::fully_connected;
+  s.migration_delay = 2;
   const auto back = run::IslandSettings::parse(s.to_text(), "meta");
+  CHECK(back.migration_delay == 2);
+  // A store made before the delay existed migrated in lockstep.
+  CHECK(run::IslandSettings::parse("islands: 2\nmigration_every: 3\n", "meta").migration_delay == 0);
+  CHECK_THROWS_WITH(run::IslandSettings::parse("islands: 2\nmigration_delay: -1\n", "meta"), Catch::Contains("delay"));
   CHECK(back.islands == 5);
   CHECK(back.migration_every == 3);
   CHECK(back.migrants == 4);
