@@ -27,15 +27,27 @@ class Island {
  public:
   Island(const MoldOptimizer& base, const opt::Problem& problem, int index, int islands)
       : problem_(problem), es_(problem, config(base.es().config(), index, islands)),
-        sms_(problem, config(base.sms().config(), index, islands)), pareto_(base.pareto()), mu_(base.mu()) {}
+        sms_(problem, config(base.sms().config(), index, islands)), pareto_(base.pareto()), mu_(base.mu()),
+        alone_(islands == 1) {}
 
   opt::Generation initial() const { return pareto_ ? sms_.initial() : es_.initial(); }
-  bool done(const opt::Generation& g) const { return pareto_ ? sms_.done(g) : es_.done(g); }
+  // The island's end. Alone, the plain run's. With others, where its budget ends for the
+  // offspring alone: what mutations spend besides (the reach move's evaluations) differs from
+  // island to island, and every island must end at the same meeting (on MPI each rank decides
+  // alone).
+  bool done(const opt::Generation& g) const {
+    if (alone_) return pareto_ ? sms_.done(g) : es_.done(g);
+    opt::Generation offspring_only;
+    offspring_only.index = g.index;
+    offspring_only.evaluations = pareto_ ? sms_.config().mu + long(g.index) * sms_.config().lambda
+                                         : es_.config().mu + long(g.index) * es_.config().lambda;
+    return pareto_ ? sms_.done(offspring_only) : es_.done(offspring_only);
+  }
   // One stored generation on: an ES generation, or SMS-EMOA's steps to the next multiple of mu.
   opt::Generation advance(const opt::Generation& g) const {
     if (!pareto_) return es_.step(g);
     opt::Generation next = sms_.step(g);
-    while (next.index % mu_ != 0 && !sms_.done(next)) next = sms_.step(next);
+    while (next.index % mu_ != 0 && !done(next)) next = sms_.step(next);
     return next;
   }
   // Whether the generation `g` ends with a migration.
@@ -68,6 +80,7 @@ class Island {
   opt::SmsEmoa sms_;
   bool pareto_;
   int mu_;
+  bool alone_;  // the only island: it ends where the plain run ends
 };
 
 // Every island's members in one generation (the archipelago's): ES best first (stable), SMS-EMOA

@@ -105,7 +105,11 @@ TEST_CASE("islands: the same seed and P give the same store with 1 thread or all
     const auto db = store::RunStore::open((a / "run.sqlite").string());
     for (int i = 0; i < 3; ++i) CHECK(db.island_summaries(i).size() == db.summaries().size());
     CHECK(db.island_summaries(3).empty());
-    CHECK(db.summaries().back().evaluations == 3 * db.island_summaries(0).back().evaluations);
+    // The archipelago's count is its islands' (which differ: the reach move's evaluations count).
+    long sum = 0;
+    for (int i = 0; i < 3; ++i) sum += db.island_summaries(i).back().evaluations;
+    CHECK(db.summaries().back().evaluations == sum);
+    CHECK(sum >= 1200);
   }
 }
 
