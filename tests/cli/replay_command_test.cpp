@@ -41,7 +41,8 @@ double prism_volume(const fs::path& bores_csv) {
 TEST_CASE("mtcs replay writes a front plot per generation and an STL per final front member", "[cli][replay]") {
   const fs::path dir = scratch("run");
   fs::remove_all(dir);
-  REQUIRE(run_mtcs("optimize " MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml --algorithm sms-emoa --evaluations 400 --seed 2 --out " +
+  REQUIRE(run_mtcs("optimize " MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml --algorithm sms-emoa --evaluations 400 --seed 2 --config " MTCS_TEST_DATA
+                   "/configs/no_reach.yaml --out " +
                    dir.string() + " --quiet") == 0);
   REQUIRE(run_mtcs("replay " + dir.string()) == 0);
   const fs::path replay = dir / "replay";

@@ -83,6 +83,7 @@ TEST_CASE("issue 16: replay writes DIR/replay whole or not at all", "[run][repla
   o.algorithm = "sms-emoa";
   o.seed = 3;
   o.evaluations = 300;
+  o.config = MTCS_TEST_DATA "/configs/no_reach.yaml";  // a fixed number of steps per budget
   const run::Session session(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml", o);
   const run::MoldOptimizer optimizer(session.problem(), session.scene(), session.config());
   store::RunStore db = store::RunStore::create((dir / "run.sqlite").string(), {{"mold", "plate"}});

@@ -6,8 +6,9 @@ the hypervolume of the feasible non-dominated layouts evaluated (scaled objectiv
 reference point of mtcs-bench) against es's.
 
 Usage: /usr/bin/python3 experiments/optimize/peers_moves/compare.py [BUDGET]
-Reads results_MOLD_BUDGET.csv (es, nsga2, moead) and results_MOLD_BUDGET_blend*.csv (es with
-es_blend*.yaml: labelled es+blend*); writes compare_BUDGET.md next to them.
+Reads results_MOLD_BUDGET.csv (es, nsga2, moead) and results_MOLD_BUDGET_VARIANT.csv (the ES of
+another config or binary, labelled es+VARIANT: blend* with es_blend*.yaml, reach after the reach
+move); writes compare_BUDGET.md next to them.
 """
 import csv
 import glob
@@ -26,7 +27,7 @@ def runs(path, rename=None):
     out = {}
     with open(path) as f:
         for r in csv.DictReader(f):
-            a = rename or r["algorithm"]
+            a = rename if rename and r["algorithm"] == "es" else r["algorithm"]  # a peer's file keeps its name
             out.setdefault(a, []).append((float(r["best_objective"]) if r["feasible"] == "1" else math.inf,
                                           float(r["seconds"]), float(r["hypervolume"])))
     return out
@@ -46,13 +47,13 @@ def p(a, b):
     return mannwhitneyu([min(x, big) for x in a], [min(x, big) for x in b], alternative="two-sided").pvalue
 
 
-lines = [f"# ES with and without mutation.blend against NSGA-II and MOEA/D, {budget} evaluations, 11 seeds", ""]
-for mold in ["cup", "plate_wall_distance", "gear"]:
+lines = [f"# ES variants against NSGA-II and MOEA/D, {budget} evaluations, 11 seeds", ""]
+for mold in ["cup", "plate_wall_distance", "gear", "thermal_block"]:
     base = os.path.join(here, f"results_{mold}_{budget}.csv")
     if not os.path.exists(base) or not os.path.getsize(base):
         continue
     algs = runs(base)
-    for path in sorted(glob.glob(os.path.join(here, f"results_{mold}_{budget}_blend*.csv"))):
+    for path in sorted(glob.glob(os.path.join(here, f"results_{mold}_{budget}_*.csv"))):
         label = "es+" + os.path.basename(path)[len(f"results_{mold}_{budget}_"):-4]
         algs.update(runs(path, label))
     order = ["es"] + sorted(a for a in algs if a.startswith("es+")) + [a for a in ["nsga2", "moead"] if a in algs]
@@ -75,11 +76,11 @@ for mold in ["cup", "plate_wall_distance", "gear"]:
     # The anytime course from the traces: median best feasible objective at fractions of the
     # budget (a seed without a feasible layout yet counts as inf), rank-sum against nsga2.
     traces = {}
-    for path in [os.path.join(here, f"trace_{mold}_{budget}.csv")] + sorted(glob.glob(os.path.join(here, f"trace_{mold}_{budget}_blend*.csv"))):
+    for path in [os.path.join(here, f"trace_{mold}_{budget}.csv")] + sorted(glob.glob(os.path.join(here, f"trace_{mold}_{budget}_*.csv"))):
         label = None if path.endswith(f"_{budget}.csv") else "es+" + os.path.basename(path)[len(f"trace_{mold}_{budget}_"):-4]
         with open(path) as f:
             for r in csv.DictReader(f):
-                a = label or r["algorithm"]
+                a = label if label and r["algorithm"] == "es" else r["algorithm"]
                 traces.setdefault(a, {}).setdefault(r["seed"], []).append((int(r["evaluations"]), float(r["best_feasible"])))
     marks = [int(int(budget) * q) for q in (0.1, 0.25, 0.5, 1.0)]
 
