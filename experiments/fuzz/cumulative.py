@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Cumulative executions per fuzz target: the total before a round plus the round's lines.
-  python3 experiments/fuzz/cumulative.py [--before 0601|0915] ROUND.tsv [OTHER.tsv...]
+  python3 experiments/fuzz/cumulative.py [--before 0601|0915|1036] ROUND.tsv [OTHER.tsv...]
 ROUND.tsv: long_run.sh's lines (target, seconds, executions, exit code, tree); OTHER.tsv: other
 runs of the same readers, executions in the 4th column (side_by_side.sh's lines, smoke runs). Prints the
 README's markdown table: this round, cumulative, left to 10 M and the time that takes at the
@@ -15,7 +15,11 @@ ROUNDS = {"0601": {"mold_spec": 53369, "layout": 769460, "pairs_csv": 1522217, "
           "mesh_obj": 2065307, "mesh_ply": 1521617, "run_store": 1298946},
           "0915": {"mold_spec": 970220, "layout": 1647541, "pairs_csv": 2720737, "cylinders_csv": 3086947,
                    "points_csv": 3833007, "front_file": 2446798, "mesh_stl": 1596885, "mesh_off": 3317746,
-                   "mesh_obj": 3764318, "mesh_ply": 3092947, "run_store": 2472620}}
+                   "mesh_obj": 3764318, "mesh_ply": 3092947, "run_store": 2472620},
+          # until 10:36 UTC (the round of 10:00-10:36 and CI's smoke run of 09:53 included)
+          "1036": {"mold_spec": 976776, "layout": 1681932, "pairs_csv": 5086166, "cylinders_csv": 5075541,
+                   "points_csv": 10827485, "front_file": 3204510, "mesh_stl": 1608646, "mesh_off": 6813115,
+                   "mesh_obj": 9136185, "mesh_ply": 6662006, "run_store": 2497102}}
 args = sys.argv[1:]
 BEFORE = ROUNDS["0601"]
 if args[:1] == ["--before"]:

@@ -17,8 +17,10 @@
 namespace mtcs::mesh {
 
 TriangleMesh read_mesh(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw MeshError("mesh file not found: " + path);
-  if (!std::filesystem::is_regular_file(path)) throw MeshError("not a regular file: " + path);
+  std::error_code unreadable;  // a name too long, a folder without access: no exception, a clear error
+  if (!std::filesystem::exists(path, unreadable))
+    throw MeshError("mesh file not found: " + path + (unreadable ? " (" + unreadable.message() + ")" : ""));
+  if (!std::filesystem::is_regular_file(path, unreadable)) throw MeshError("not a regular file: " + path);
   // Refused before reading: CGAL's readers hold the whole polygon soup in memory.
   if (std::filesystem::file_size(path) > kMaxMeshFileBytes)
     throw MeshError(path + ": " + std::to_string(std::filesystem::file_size(path)) + " bytes, more than the " +

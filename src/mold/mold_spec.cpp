@@ -107,7 +107,9 @@ MeshSource parse_mesh(const YamlReader& r, const YAML::Node& n, const std::strin
   if (n["translate"]) m.translate = r.vec3(n["translate"], prefix + ".translate");
   const Vec3 scale = n["scale"] ? parse_scale(r, n["scale"], prefix + ".scale") : Vec3(1, 1, 1);
   const Eigen::Matrix3d rotate = n["rotate"] ? parse_rotate(r, n["rotate"], prefix + ".rotate") : Eigen::Matrix3d::Identity();
-  if (!std::filesystem::exists(m.path)) r.fail(file, path, "mesh file not found: " + m.path);
+  std::error_code unreadable;  // a name too long, a folder without access: no exception, a clear error
+  if (!std::filesystem::exists(m.path, unreadable))
+    r.fail(file, path, "mesh file not found: " + m.path + (unreadable ? " (" + unreadable.message() + ")" : ""));
   try {
     m.mesh = mesh::read_mesh(m.path);
   } catch (const mesh::MeshError& e) {

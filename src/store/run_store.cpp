@@ -198,7 +198,8 @@ bool RunStore::in_use(const std::string& path) {
 
 RunStore RunStore::create(const std::string& path, const std::map<std::string, std::string>& meta) {
   const int lock = lock_store(path);
-  if (std::filesystem::exists(path)) {
+  std::error_code unreadable;
+  if (std::filesystem::exists(path, unreadable)) {
     ::close(lock);
     throw io::InputError(path, 0, 0, "", "a run store exists here already");
   }
@@ -237,14 +238,16 @@ RunStore RunStore::create(const std::string& path, const std::map<std::string, s
 }
 
 RunStore RunStore::open(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw io::InputError(path, 0, 0, "", "no run store here");
+  std::error_code unreadable;
+  if (!std::filesystem::is_regular_file(path, unreadable)) throw io::InputError(path, 0, 0, "", "no run store here");
   RunStore s(open_db(path, SQLITE_OPEN_READONLY), path, -1);
   check_store(s.db_, path);
   return s;
 }
 
 RunStore RunStore::resume(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw io::InputError(path, 0, 0, "", "no run store here");
+  std::error_code unreadable;
+  if (!std::filesystem::is_regular_file(path, unreadable)) throw io::InputError(path, 0, 0, "", "no run store here");
   const int lock = lock_store(path);
   RunStore s(nullptr, path, lock);
   // Checked through a read-only connection first: nothing is written to a file that is no store.

@@ -203,3 +203,9 @@ TEST_CASE("mesh reader defect: a PLY halfedge element needs uint source and targ
   const auto empty = write("halfedge_empty.ply", tetra + "element halfedge 0\nproperty float u\nend_header\n" + kTetraVertices + "3 0 1 2\n");
   CHECK(read_mesh(empty).triangles.size() == 1);
 }
+
+// The reader's side of fuzz crash #16: a path the file system refuses to look up is a MeshError.
+TEST_CASE("mesh reader defect: a file name too long for the file system is a MeshError", "[mesh][fuzz-defect]") {
+  const std::string path = fs::temp_directory_path() / (std::string(300, 'b') + ".off");
+  CHECK_THAT(error_of(path), Catch::Contains("mesh file not found") && Catch::Contains("too long"));
+}

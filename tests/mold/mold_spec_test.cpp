@@ -142,3 +142,13 @@ TEST_CASE("issue 16: without circuits.min a part gets one circuit per 40 mm of i
   CHECK(limits("cavity: {box: {min: [50, 50, 40], max: [250, 110, 50]}}\n", "circuits: {min: 1}\n").min == 1);
   CHECK(mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml").circuits.min == 1);
 }
+
+// Fuzz crash #16 (mold_spec, crash-b9a2fcf4): a mesh path with a name longer than the file system
+// allows made std::filesystem::exists throw filesystem_error ("File name too long"), which ended
+// the process instead of an InputError at the field.
+TEST_CASE("mold spec defect: a mesh name too long for the file system is an error at its field", "[mold][fuzz-defect]") {
+  const auto e = error_of(kBlock + "cavity:\n  mesh: " + std::string(300, 'b') + ".off\n");
+  CHECK(e.field() == "cavity.mesh");
+  CHECK(e.line() == 3);
+  CHECK_THAT(std::string(e.what()), Catch::Contains("mesh file not found") && Catch::Contains("too long"));
+}
