@@ -10,35 +10,10 @@
 
 #include "eval/surface_samples.h"
 #include "eval/tiled_samples.h"
+#include "support/plain_nearest_squared.h"
 
 using namespace mtcs;
 using geometry::Vec3;
-
-namespace {
-
-// The plain loop the tiles stand for (the thermal stage's before the tiles).
-std::vector<float> plain_nearest_squared(const eval::SurfaceSamples& s, const Vec3& origin,
-                                         const std::vector<eval::FlowSegment>& segments) {
-  std::vector<float> m(s.size(), std::numeric_limits<float>::infinity());
-  for (const auto& g : segments) {
-    const Vec3 a = g.start - origin, d = g.end - g.start;
-    const float ax = float(a.x()), ay = float(a.y()), az = float(a.z());
-    const float dx = float(d.x()), dy = float(d.y()), dz = float(d.z());
-    const float dd = dx * dx + dy * dy + dz * dz, inv = dd > 0 ? 1 / dd : 0;
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      const float px = float(s.x[i] - origin.x()) - ax, py = float(s.y[i] - origin.y()) - ay,
-                  pz = float(s.z[i] - origin.z()) - az;
-      float t = (px * dx + py * dy + pz * dz) * inv;
-      t = t < 0.f ? 0.f : (t > 1.f ? 1.f : t);
-      const float qx = px - t * dx, qy = py - t * dy, qz = pz - t * dz;
-      const float d2 = qx * qx + qy * qy + qz * qz;
-      m[i] = d2 < m[i] ? d2 : m[i];
-    }
-  }
-  return m;
-}
-
-}  // namespace
 
 TEST_CASE("tiled nearest squared distances equal the plain loop bit for bit", "[eval][tiles]") {
   // Samples on a box cavity and scattered in the block (no tile shape is assumed).
@@ -70,7 +45,7 @@ TEST_CASE("tiled nearest squared distances equal the plain loop bit for bit", "[
     // Near copies: equal distances from several bores.
     if (n > 1) segments.push_back(segments.front());
     tiles.nearest_squared(segments.data(), segments.data() + segments.size(), m.data());
-    const auto plain = plain_nearest_squared(samples, origin, segments);
+    const auto plain = mtcs_test::plain_nearest_squared(samples, origin, segments);
     INFO("trial " << trial << ", " << segments.size() << " bores");
     int differ = 0;
     for (std::size_t i = 0; i < samples.size(); ++i) differ += m[tiles.slot(i)] != plain[i];

@@ -15,6 +15,7 @@
 #include "mtcs/mold/decoder.h"
 #include "mtcs/opt/rng.h"
 #include "mtcs/run/session.h"
+#include "support/plain_nearest_squared.h"
 
 using namespace mtcs;
 
@@ -144,22 +145,7 @@ TEST_CASE("The thermal objectives equal the plain loop's bit for bit", "[run][in
       std::vector<eval::FlowSegment> segments;
       for (std::size_t k = first; k < b; ++k) segments.push_back({layout.bores[k].flow_start, layout.bores[k].flow_end});
       const double r = layout.bores[first].diameter / 2;
-      std::vector<float> m(s.size(), std::numeric_limits<float>::infinity());
-      for (const auto& g : segments) {
-        const geometry::Vec3 a = g.start - origin, d = g.end - g.start;
-        const float ax = float(a.x()), ay = float(a.y()), az = float(a.z());
-        const float dx = float(d.x()), dy = float(d.y()), dz = float(d.z());
-        const float dd = dx * dx + dy * dy + dz * dz, inv = dd > 0 ? 1 / dd : 0;
-        for (std::size_t i = 0; i < s.size(); ++i) {
-          const float px = float(s.x[i] - origin.x()) - ax, py = float(s.y[i] - origin.y()) - ay,
-                      pz = float(s.z[i] - origin.z()) - az;
-          float t = (px * dx + py * dy + pz * dz) * inv;
-          t = t < 0.f ? 0.f : (t > 1.f ? 1.f : t);
-          const float qx = px - t * dx, qy = py - t * dy, qz = pz - t * dz;
-          const float d2 = qx * qx + qy * qy + qz * qz;
-          m[i] = d2 < m[i] ? d2 : m[i];
-        }
-      }
+      const std::vector<float> m = mtcs_test::plain_nearest_squared(s, origin, segments);
       for (std::size_t i = 0; i < s.size(); ++i) {
         const double e = std::sqrt(double(m[i])) - r;
         if (e < best[i]) best[i] = e, target[i] = target_at.at(2 * r);
