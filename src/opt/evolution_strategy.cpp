@@ -51,8 +51,42 @@ std::vector<Individual> EvolutionStrategy::screened(std::vector<Individual>& off
   return kept;
 }
 
-Generation EvolutionStrategy::step(const Generation& prev) const {
-  const int mu = int(prev.population.size());
+std::vector<Individual> EvolutionStrategy::restarted(const Generation& prev, long& evaluations) const {
+  std::vector<Individual> pop = prev.population;
+  if (!restarts_after(prev) || pop.empty()) return pop;
+  if (config_.restart == EsConfig::Restart::steps) {
+    for (auto& ind : pop) ind.steps = problem_.initial_steps(ind.x);
+    return pop;
+  }
+  // Fresh samples from generators the offspring never use (index lambda and up).
+  std::vector<Genotype> xs;
+  for (std::size_t i = 1; i < pop.size(); ++i) {
+    Rng rng = Rng::for_individual(config_.seed, std::uint64_t(prev.index + 1), std::uint64_t(config_.lambda) + i);
+    xs.push_back(problem_.sample(rng));
+  }
+  const auto scores = evaluate_all(problem_, xs);
+  evaluations += long(xs.size());
+  for (std::size_t i = 1; i < pop.size(); ++i) pop[i] = {xs[i - 1], problem_.initial_steps(xs[i - 1]), scores[i - 1]};
+  return pop;
+}
+
+bool EvolutionStrategy::improved(const Generation& next, const Generation& prev) const {
+  if (next.population.empty() || prev.population.empty()) return false;
+  const Score& a = next.population.front().score;
+  const Score& b = prev.population.front().score;
+  if (!problem_.better(a, b)) return false;
+  const bool same_standing = a.feasible == b.feasible && a.violation == b.violation;
+  return !same_standing || b.value - a.value > config_.restart_tolerance * std::abs(b.value);
+}
+
+Generation EvolutionStrategy::step(const Generation& prev_generation) const {
+  long spent_by_restart = 0;
+  Generation prev;  // prev_generation, or its restart
+  prev.index = prev_generation.index;
+  prev.population = restarted(prev_generation, spent_by_restart);
+  // Parents are drawn from prev.population[first_parent...]: the best rests in a restart's run.
+  const int first_parent = best_rests(prev_generation) ? 1 : 0;
+  const int mu = int(prev.population.size()) - first_parent;
   const int lambda = config_.lambda;
   std::vector<Individual> offspring(static_cast<std::size_t>(lambda));
   std::vector<Genotype> xs(static_cast<std::size_t>(lambda));
@@ -67,11 +101,12 @@ Generation EvolutionStrategy::step(const Generation& prev) const {
       offspring[std::size_t(i)] = std::move(fresh);
       continue;
     }
-    const Individual& a = prev.population[std::size_t(rng.below(mu))];
+    const Individual* parents = prev.population.data() + first_parent;
+    const Individual& a = parents[rng.below(mu)];
     const Individual* b = &a;
     if (config_.recombination && config_.rho >= 2 && mu > 1) {
       int j = rng.below(mu - 1);
-      b = &prev.population[std::size_t(j >= int(&a - prev.population.data()) ? j + 1 : j)];
+      b = &parents[j >= int(&a - parents) ? j + 1 : j];
     }
     Individual child;
     child.x = b == &a ? a.x : problem_.recombine(a.x, b->x, rng);
@@ -112,12 +147,13 @@ Generation EvolutionStrategy::step(const Generation& prev) const {
 
   Generation next;
   next.index = prev.index + 1;
-  next.evaluations = prev.evaluations + lambda + spent_by_moves;
+  next.evaluations = prev_generation.evaluations + spent_by_restart + lambda + spent_by_moves;
   std::vector<Individual> pool = config_.plus ? prev.population : std::vector<Individual>{};
   pool.insert(pool.end(), offspring.begin(), offspring.end());
   sort_population(problem_, pool);
   pool.resize(std::min<std::size_t>(pool.size(), std::size_t(config_.mu)));
   next.population = std::move(pool);
+  next.stalled = improved(next, prev_generation) ? 0 : prev_generation.stalled + 1;
   return next;
 }
 

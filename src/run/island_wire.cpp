@@ -83,13 +83,14 @@ std::vector<opt::Individual> decode_individuals(const std::string& bytes) { retu
 namespace {
 
 void put(Writer& w, const opt::Generation& g) {
-  w.put(std::int64_t(g.index)), w.put(std::int64_t(g.evaluations)), w.put(g.population);
+  w.put(std::int64_t(g.index)), w.put(std::int64_t(g.evaluations)), w.put(std::int64_t(g.stalled)), w.put(g.population);
 }
 
 opt::Generation get(Reader& r) {
   opt::Generation g;
   g.index = int(r.get<std::int64_t>());
   g.evaluations = long(r.get<std::int64_t>());
+  g.stalled = int(r.get<std::int64_t>());
   g.population = r.population();
   return g;
 }

@@ -36,13 +36,22 @@ RunConfig parse_run_config(const std::string& text, const std::string& origin,
   }
   if (root["es"]) {
     const YAML::Node& es = root["es"];
-    r.expect_map(es, "es", {"mu", "lambda", "rho", "plus", "recombination"});
+    r.expect_map(es, "es", {"mu", "lambda", "rho", "plus", "recombination", "restart_after", "restart", "restart_tolerance"});
     if (es["mu"]) c.es.mu = r.integer(es["mu"], "es.mu", 1, 100000);
     if (es["lambda"]) c.es.lambda = r.integer(es["lambda"], "es.lambda", 1, 1000000);
     if (es["rho"]) c.es.rho = r.integer(es["rho"], "es.rho", 1, 2);
     if (es["plus"]) c.es.plus = r.boolean(es["plus"], "es.plus");
     if (es["recombination"]) c.es.recombination = r.boolean(es["recombination"], "es.recombination");
     if (!c.es.plus && c.es.lambda < c.es.mu) r.fail(es, "es.lambda", "a comma strategy needs lambda >= mu");
+    if (es["restart_after"]) c.es.restart_after = r.integer(es["restart_after"], "es.restart_after", 0, 1000000000);
+    if (es["restart_tolerance"])
+      c.es.restart_tolerance = r.number(es["restart_tolerance"], "es.restart_tolerance", 0, 1);
+    if (es["restart"]) {
+      const std::string mode = r.text(es["restart"], "es.restart");
+      if (mode == "steps") c.es.restart = opt::EsConfig::Restart::steps;
+      else if (mode == "population") c.es.restart = opt::EsConfig::Restart::population;
+      else r.fail(es["restart"], "es.restart", "must be steps or population, not '" + mode + "'");
+    }
   }
   if (root["evaluations"]) c.es.evaluations = r.integer(root["evaluations"], "evaluations", 1, 2000000000);
   if (root["seed"]) c.es.seed = std::uint64_t(r.number(root["seed"], "seed", 0, 9.007199254740992e15));
@@ -120,7 +129,9 @@ std::string RunConfig::to_yaml(const std::vector<std::string>& objective_names) 
   out << YAML::Key << "es" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "mu" << YAML::Value << es.mu
       << YAML::Key << "lambda" << YAML::Value << es.lambda << YAML::Key << "rho" << YAML::Value << es.rho << YAML::Key
       << "plus" << YAML::Value << es.plus << YAML::Key << "recombination" << YAML::Value << es.recombination
-      << YAML::EndMap;
+      << YAML::Key << "restart_after" << YAML::Value << es.restart_after << YAML::Key << "restart" << YAML::Value
+      << (es.restart == opt::EsConfig::Restart::population ? "population" : "steps") << YAML::Key
+      << "restart_tolerance" << YAML::Value << es.restart_tolerance << YAML::EndMap;
   out << YAML::Key << "evaluations" << YAML::Value << es.evaluations;
   out << YAML::Key << "seed" << YAML::Value << es.seed;
   out << YAML::Key << "log_every" << YAML::Value << log_every;

@@ -136,6 +136,25 @@ int lock_store(const std::string& path) {
   return fd;
 }
 
+bool has_column(sqlite3* db, const char* table, const char* column) {
+  Statement q(db, "SELECT count(*) FROM pragma_table_info(?) WHERE name = ?");
+  q.bind(1, std::string(table)).bind(2, std::string(column));
+  q.step();
+  return q.integer(0) > 0;
+}
+
+// Stores made before 2026-11-25 have no `stalled` column (the ES's generations since its best
+// improved, which its restart reads): added, 0 for the generations they hold.
+void add_stalled_columns(sqlite3* db) {
+  for (const char* table : {"generation", "island_generation"}) {
+    Statement exists(db, "SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = ?");
+    exists.bind(1, std::string(table));
+    exists.step();
+    if (exists.integer(0) > 0 && !has_column(db, table, "stalled"))
+      exec(db, (std::string("ALTER TABLE ") + table + " ADD COLUMN stalled INTEGER NOT NULL DEFAULT 0;").c_str());
+  }
+}
+
 // The public reads turn SQLite's errors (a page corrupted after the open's check) into bad input.
 template <class F>
 auto reading(const std::string& path, F&& read) {
@@ -150,6 +169,9 @@ auto reading(const std::string& path, F&& read) {
 
 }  // namespace
 
+constexpr const char* kInsertGeneration =
+    "INSERT INTO generation(idx, evaluations, best, feasible_share, seconds, stalled) VALUES(?, ?, ?, ?, ?, ?)";
+
 // The statements of save_islands, prepared once a connection (preparing them per commit cost
 // the writer thread a few percent of an island run's CPU).
 struct RunStore::Prepared {
@@ -160,9 +182,9 @@ struct RunStore::Prepared {
                                     : "INSERT INTO island_individual(island, generation, rank, genotype, steps, objectives,"
                                       " violation, feasible, value, violations) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"),
         island_generation(db,
-                          "INSERT INTO island_generation(island, idx, evaluations, best, feasible_share, seconds)"
-                          " VALUES(?, ?, ?, ?, ?, ?)"),
-        generation(db, "INSERT INTO generation(idx, evaluations, best, feasible_share, seconds) VALUES(?, ?, ?, ?, ?)") {}
+                          "INSERT INTO island_generation(island, idx, evaluations, best, feasible_share, seconds,"
+                          " stalled) VALUES(?, ?, ?, ?, ?, ?, ?)"),
+        generation(db, kInsertGeneration) {}
   Statement island_row, island_generation, generation;
 };
 
@@ -216,7 +238,7 @@ RunStore RunStore::create(const std::string& path, const std::map<std::string, s
          "BEGIN;"
          "CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);"
          "CREATE TABLE generation(idx INTEGER PRIMARY KEY, evaluations INTEGER, best REAL,"
-         "  feasible_share REAL, seconds REAL);"
+         "  feasible_share REAL, seconds REAL, stalled INTEGER NOT NULL DEFAULT 0);"
          "CREATE TABLE individual(generation INTEGER, rank INTEGER, genotype BLOB, steps BLOB,"
          "  objectives BLOB, violation REAL, feasible INTEGER, value REAL, violations TEXT,"
          "  PRIMARY KEY(generation, rank));");
@@ -254,6 +276,7 @@ RunStore RunStore::resume(const std::string& path) {
   check_store(RunStore::open(path).db_, path);
   s.db_ = open_db(path, SQLITE_OPEN_READWRITE);
   exec(s.db_, kWriting);
+  add_stalled_columns(s.db_);
   return s;
 }
 
@@ -275,7 +298,8 @@ void insert_summary(Statement& gen, const opt::Generation& g, double seconds) {
   gen.reset();
   gen.bind(1, g.index).bind(2, g.evaluations);
   gen.bind(3, g.population.empty() ? 0.0 : g.population.front().score.value);
-  gen.bind(4, g.population.empty() ? 0.0 : double(feasible) / double(g.population.size())).bind(5, seconds).step();
+  gen.bind(4, g.population.empty() ? 0.0 : double(feasible) / double(g.population.size())).bind(5, seconds);
+  gen.bind(6, g.stalled).step();
 }
 
 // One generation's members in the run's table (inside the caller's transaction).
@@ -296,7 +320,7 @@ void insert_members(sqlite3* db, const opt::Generation& g) {
 // One generation's rows in the run's tables (inside the caller's transaction).
 void insert_generation(sqlite3* db, const opt::Generation& g, double seconds) {
   insert_members(db, g);
-  Statement gen(db, "INSERT INTO generation(idx, evaluations, best, feasible_share, seconds) VALUES(?, ?, ?, ?, ?)");
+  Statement gen(db, kInsertGeneration);
   insert_summary(gen, g, seconds);
 }
 
@@ -392,7 +416,8 @@ void RunStore::insert_islands(const IslandsGeneration& gen) {
     row.reset();
     row.bind(1, int(i)).bind(2, g.index).bind(3, g.evaluations);
     row.bind(4, g.population.empty() ? 0.0 : g.population.front().score.value);
-    row.bind(5, g.population.empty() ? 0.0 : double(feasible) / double(g.population.size())).bind(6, gen.seconds).step();
+    row.bind(5, g.population.empty() ? 0.0 : double(feasible) / double(g.population.size())).bind(6, gen.seconds);
+    row.bind(7, g.stalled).step();
   }
   if (!archipelago_by_reference_) insert_members(db_, gen.merged);
   insert_summary(p.generation, gen.merged, gen.seconds);
@@ -412,7 +437,7 @@ void RunStore::save_islands(const std::vector<IslandsGeneration>& batch) {
       // (appended, one b-tree); tables of an older store keep their schema and its copies.
       exec(db_,
            "CREATE TABLE IF NOT EXISTS island_generation(island INTEGER, idx INTEGER, evaluations INTEGER, best REAL,"
-           "  feasible_share REAL, seconds REAL, PRIMARY KEY(island, idx));"
+           "  feasible_share REAL, seconds REAL, stalled INTEGER NOT NULL DEFAULT 0, PRIMARY KEY(island, idx));"
            "CREATE TABLE IF NOT EXISTS island_individual(island INTEGER, generation INTEGER, rank INTEGER, genotype BLOB,"
            "  steps BLOB, objectives BLOB, violation REAL, feasible INTEGER, value REAL, violations TEXT,"
            "  archipelago_rank INTEGER, PRIMARY KEY(generation, island, rank)) WITHOUT ROWID;");
@@ -453,12 +478,15 @@ void read_members(Statement& q, opt::Generation& out) {
 std::optional<opt::Generation> RunStore::island_generation(int island, int index) const {
   return reading(path_, [&]() -> std::optional<opt::Generation> {
     if (!has_island_tables(db_)) return std::nullopt;
-    Statement g(db_, "SELECT evaluations FROM island_generation WHERE island = ? AND idx = ?");
+    Statement g(db_, has_column(db_, "island_generation", "stalled")
+                         ? "SELECT evaluations, stalled FROM island_generation WHERE island = ? AND idx = ?"
+                         : "SELECT evaluations, 0 FROM island_generation WHERE island = ? AND idx = ?");
     g.bind(1, island).bind(2, index);
     if (!g.step()) return std::nullopt;
     opt::Generation out;
     out.index = index;
     out.evaluations = g.integer(0);
+    out.stalled = int(g.integer(1));
     Statement q(db_,
                 "SELECT genotype, steps, objectives, violation, feasible, value, violations FROM island_individual"
                 " WHERE island = ? AND generation = ? ORDER BY rank");
@@ -483,12 +511,14 @@ std::vector<GenerationSummary> RunStore::island_summaries(int island) const {
 
 std::optional<opt::Generation> RunStore::generation(int index) const {
   return reading(path_, [&]() -> std::optional<opt::Generation> {
-    Statement g(db_, "SELECT evaluations FROM generation WHERE idx = ?");
+    Statement g(db_, has_column(db_, "generation", "stalled") ? "SELECT evaluations, stalled FROM generation WHERE idx = ?"
+                                                               : "SELECT evaluations, 0 FROM generation WHERE idx = ?");
     g.bind(1, index);
     if (!g.step()) return std::nullopt;
     opt::Generation out;
     out.index = index;
     out.evaluations = g.integer(0);
+    out.stalled = int(g.integer(1));
     Statement q(db_,
                 "SELECT genotype, steps, objectives, violation, feasible, value, violations FROM individual"
                 " WHERE generation = ? ORDER BY rank");

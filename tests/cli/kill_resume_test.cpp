@@ -181,3 +181,41 @@ TEST_CASE("run store faults: kill -9 at 20 moments; outputs whole or absent, eve
   }
   CHECK(killed_first >= 16);  // the 16 planned places at least
 }
+
+TEST_CASE("run store faults: with the ES's restart on, runs killed in a generation's write resume as the uninterrupted run",
+          "[cli][store][faults][kill][restart]") {
+  // A restart after 3 stalled generations: it fires several times in this short run, and the
+  // kills fall before and after restarts, so the stall count must come back from the store.
+  const fs::path config = scratch("kill_resume_restart", "restart.yaml"), err = scratch("kill_resume_restart", "run.err");
+  { std::ofstream(config) << "es: {restart_after: 3, restart: population}\n"; }
+  const auto with_restart = [&](const fs::path& dir) {
+    auto a = fresh_run(dir);
+    a.insert(a.end(), {"--config", config.string()});
+    return a;
+  };
+  const fs::path full = scratch("kill_resume_restart", "full");
+  fs::remove_all(full);
+  REQUIRE(wait_for(start(with_restart(full), "", err)).code == 0);
+  long rows_total = 0;
+  int restarts = 0;
+  {
+    const RunStore db = RunStore::open((full / "run.sqlite").string());
+    for (const auto& s : db.summaries()) {
+      const auto g = db.generation(s.index);
+      rows_total += long(g->population.size());
+      restarts += g->stalled > 0 && g->stalled % 3 == 0 ? 1 : 0;
+    }
+  }
+  REQUIRE(restarts >= 2);
+  for (const long cut : {rows_total / 5, rows_total / 2, rows_total * 4 / 5}) {
+    const std::string when = "killed at store-row:" + std::to_string(cut);
+    const fs::path dir = scratch("kill_resume_restart", "cut");
+    fs::remove_all(dir);
+    REQUIRE(wait_for(start(with_restart(dir), "store-row:" + std::to_string(cut), err)).killed);
+    const Ended resumed = wait_for(start(resume_run(dir), "", err));
+    INFO(when << ": " << read_text(err));
+    REQUIRE(resumed.code == 0);
+    check_same_result(dir, full, when);
+    fs::remove_all(dir);
+  }
+}

@@ -9,14 +9,14 @@
 
 namespace mtcs_test {
 
-// Every stored row, flattened in order: per generation its summary (not the wall time) and each
-// member's genome, step sizes and objectives, as exact doubles.
+// Every stored row, flattened in order: per generation its summary (not the wall time; with the
+// ES's stall count) and each member's genome, step sizes and objectives, as exact doubles.
 inline std::vector<std::vector<double>> stored_rows(const std::filesystem::path& dir) {
   const auto db = mtcs::store::RunStore::open((dir / "run.sqlite").string());
   std::vector<std::vector<double>> out;
   for (const auto& s : db.summaries()) {
-    out.push_back({double(s.index), double(s.evaluations), s.best, s.feasible_share});
     const auto g = db.generation(s.index);
+    out.push_back({double(s.index), double(s.evaluations), s.best, s.feasible_share, double(g->stalled)});
     for (const auto& ind : g->population) {
       out.push_back(ind.x);
       out.push_back(ind.steps);

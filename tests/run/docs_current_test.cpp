@@ -33,6 +33,9 @@ TEST_CASE("issue 16: configs/es_default.yaml gives exactly the defaults the code
   CHECK(file.es.rho == code.es.rho);
   CHECK(file.es.plus == code.es.plus);
   CHECK(file.es.recombination == code.es.recombination);
+  CHECK(file.es.restart_after == code.es.restart_after);
+  CHECK(file.es.restart == code.es.restart);
+  CHECK(file.es.restart_tolerance == code.es.restart_tolerance);
   CHECK(file.es.evaluations == code.es.evaluations);
   CHECK(file.es.seed == code.es.seed);
   CHECK(file.log_every == code.log_every);

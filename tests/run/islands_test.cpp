@@ -273,12 +273,13 @@ TEST_CASE("islands: SMS-EMOA sends front members by hypervolume contribution and
 
 TEST_CASE("islands: messages between ranks keep every bit", "[run][islands]") {
   opt::Generation g;
-  g.index = 12, g.evaluations = 1234567890123L;
+  g.index = 12, g.evaluations = 1234567890123L, g.stalled = 77;
   g.population.push_back({{-0.0, 4.9e-324, 1e308}, {std::nan("")}, {{1, 2}, 0.5, false, 3.25, "bore 2 too close"}});
   g.population.push_back({{}, {}, {{}, 0, true, -1, ""}});
   const opt::Generation back = run::wire::decode_generation(run::wire::encode(g));
   CHECK(back.index == 12);
   CHECK(back.evaluations == 1234567890123L);
+  CHECK(back.stalled == 77);
   REQUIRE(back.population.size() == 2);
   CHECK(bits(back.population[0].x) == bits(g.population[0].x));
   CHECK(bits(back.population[0].steps) == bits(g.population[0].steps));

@@ -161,3 +161,47 @@ TEST_CASE("island rows: island tables of an older store (a copy of the archipela
   CHECK(read.last()->population[3].score.value == 5);
   CHECK(read.island_generation(1, 0)->population[2].score.value == 7);
 }
+
+TEST_CASE("run store: the ES's stall count survives the store, in the run's rows and the islands'; older stores read 0",
+          "[store][islands][restart]") {
+  const std::string path = fresh("stalled.sqlite");
+  {
+    RunStore s = RunStore::create(path, {{"program", "mtcs test"}});
+    opt::Generation g = generation(0, 3, 1);
+    g.stalled = 41;
+    s.save(g, 0.1);
+    std::vector<opt::Generation> islands{generation(1, 6, 2), generation(1, 6, 3)};
+    islands[0].stalled = 7, islands[1].stalled = 300;
+    opt::Generation merged = islands[0];
+    merged.evaluations = 12;
+    merged.population.insert(merged.population.end(), islands[1].population.begin(), islands[1].population.end());
+    s.save_islands(islands, merged, 0.2);
+  }
+  {
+    const RunStore read = RunStore::open(path);
+    CHECK(read.generation(0)->stalled == 41);
+    CHECK(read.island_generation(0, 1)->stalled == 7);
+    CHECK(read.island_generation(1, 1)->stalled == 300);
+  }
+  const std::string old = fresh("stalled_old.sqlite");
+  {
+    RunStore s = RunStore::create(old, {{"program", "mtcs test"}});
+    s.save(generation(0, 3, 1), 0.1);
+  }
+  {  // the generation table as stores made before 2026-11-25 have it: no stall count
+    sqlite3* db = nullptr;
+    REQUIRE(sqlite3_open(old.c_str(), &db) == SQLITE_OK);
+    REQUIRE(sqlite3_exec(db, "ALTER TABLE generation DROP COLUMN stalled;", nullptr, nullptr, nullptr) == SQLITE_OK);
+    sqlite3_close(db);
+  }
+  CHECK(RunStore::open(old).generation(0)->stalled == 0);
+  {
+    RunStore s = RunStore::resume(old);  // adds the column
+    opt::Generation g = generation(1, 6, 0.5);
+    g.stalled = 3;
+    s.save(g, 0.2);
+  }
+  const RunStore read = RunStore::open(old);
+  CHECK(read.generation(0)->stalled == 0);
+  CHECK(read.generation(1)->stalled == 3);
+}

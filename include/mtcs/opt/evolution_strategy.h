@@ -4,6 +4,16 @@
 // exp(tau0 N(0,1) + tau N_i(0,1)), then mutates with them. Each generation is a pure function of
 // the previous one and the run's seed (per-individual generators), so a run resumed from any
 // stored generation continues exactly as it would have.
+//
+// Restart on stall: Generation::stalled counts the generations since the best last improved by
+// more than `restart_tolerance` (relative); each time it reaches a multiple of `restart_after`,
+// the ES restarts. `population` (an elitist restart): the best stays, every other member is
+// replaced by a fresh sample (their evaluations count in the budget), and until the best
+// improves again the best is no parent (plus strategies), so the fresh members evolve on their own instead of
+// being displaced by the best's offspring: a new run of restart_after generations, the best
+// kept. `steps`: every member's step sizes go back to their initial values (a local restart
+// around the same members). The decisions read only the previous generation, so they are the
+// same with any thread count and after a resume.
 
 #include <cstdint>
 #include <functional>
@@ -29,6 +39,12 @@ struct EsConfig {
   // `survivors` of them are scored by Problem::evaluate and enter selection; the population
   // holds evaluate's scores only. 0: every offspring is evaluated.
   int survivors = 0;
+  // Restart on stall (above): generations without improvement of the best before a restart;
+  // 0: never.
+  int restart_after = 0;
+  double restart_tolerance = 1e-3;  // relative: smaller gains of the best count as a stall
+  enum class Restart { steps, population };
+  Restart restart = Restart::population;
 };
 
 class EvolutionStrategy {
@@ -39,9 +55,23 @@ class EvolutionStrategy {
   Generation step(const Generation& previous) const;
   bool done(const Generation& g) const { return g.evaluations + config_.lambda > config_.evaluations; }
   const EsConfig& config() const { return config_; }
+  // Whether the generation after `g` starts from a restarted population.
+  bool restarts_after(const Generation& g) const {
+    return config_.restart_after > 0 && g.stalled > 0 && g.stalled % config_.restart_after == 0;
+  }
+  // Whether the best of `g` is no parent of the next generation (a population restart's run).
+  bool best_rests(const Generation& g) const {
+    return config_.restart == EsConfig::Restart::population && config_.plus && config_.restart_after > 0 &&
+           g.stalled >= config_.restart_after && g.population.size() > 1;
+  }
 
  private:
   // The offspring that survive screening, with evaluate's scores.
+  // The population the generation after `prev` starts from: prev's, or its restart (above);
+  // adds the restart's evaluations to `evaluations`.
+  std::vector<Individual> restarted(const Generation& prev, long& evaluations) const;
+  // Whether `next` improved on `prev`'s best by more than the restart's tolerance.
+  bool improved(const Generation& next, const Generation& prev) const;
   std::vector<Individual> screened(std::vector<Individual>& offspring, const std::vector<Genotype>& xs) const;
 
   const Problem& problem_;

@@ -15,6 +15,9 @@ namespace mtcs::run {
 struct RunConfig {
   std::string algorithm = "es";  // or sms-emoa: a Pareto front over the mold's objectives
   opt::EsConfig es;              // es.mu, es.evaluations and es.seed serve SMS-EMOA too
+  // The mold runs restart the ES after 200 stalled generations (configs/README.md, "es.restart");
+  // opt's own default stays off.
+  RunConfig() { es.restart_after = 200; }
   std::vector<double> ref;       // SMS-EMOA: reference point in scaled objectives (default 4 each)
   std::vector<double> weights;  // per objective, in the spec's order; empty: all 1
   MutationRates mutation;

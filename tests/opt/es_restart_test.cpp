@@ -1,0 +1,150 @@
+// The ES's restart on stall (issue 14). On a plateau (the sphere flattened to 0 inside the unit
+// ball), the best stops improving as soon as a member is inside, so the restart must fire every
+// restart_after generations; it is seen from outside: the restart's fresh members cost mu - 1
+// evaluations at exactly those generations, the steps restart puts every member back at its
+// initial step sizes, and the best is never lost. A run resumed from any generation, or run on
+// 2 threads, repeats the uninterrupted run bit for bit (the stall count is in the Generation).
+
+#include <catch2/catch.hpp>
+#include <algorithm>
+#include <cstring>
+#include <tbb/global_control.h>
+
+#include "mtcs/opt/evolution_strategy.h"
+#include "opt/test_functions.h"
+
+using namespace mtcs::opt;
+
+namespace {
+
+class Plateau final : public Problem {
+ public:
+  explicit Plateau(const Problem& f) : f_(f) {}
+  std::string name() const override { return "plateau"; }
+  Genotype sample(Rng& rng) const override { return f_.sample(rng); }
+  std::vector<double> initial_steps(const Genotype& g) const override { return f_.initial_steps(g); }
+  long mutate(Genotype& g, const std::vector<double>& steps, Rng& rng) const override { return f_.mutate(g, steps, rng); }
+  Score evaluate(const Genotype& g) const override {
+    Score s = f_.evaluate(g);
+    s.value = std::max(0.0, s.value - 1);
+    return s;
+  }
+
+ private:
+  const Problem& f_;
+};
+
+EsConfig restarting(EsConfig::Restart mode, long evaluations = 4000) {
+  EsConfig c;
+  c.evaluations = evaluations;
+  c.seed = 3;
+  c.restart_after = 5;
+  c.restart = mode;
+  return c;
+}
+
+std::vector<Generation> all_generations(const EvolutionStrategy& es, const Generation* start = nullptr) {
+  std::vector<Generation> seen;
+  if (start) seen.push_back(*start);
+  run(es, start, [&](const Generation& g) { seen.push_back(g); });
+  return seen;
+}
+
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+}
+
+bool same_generation(const Generation& a, const Generation& b) {
+  if (a.index != b.index || a.evaluations != b.evaluations || a.stalled != b.stalled ||
+      a.population.size() != b.population.size())
+    return false;
+  for (std::size_t i = 0; i < a.population.size(); ++i) {
+    const auto &x = a.population[i], &y = b.population[i];
+    if (!same_bits(x.x, y.x) || !same_bits(x.steps, y.steps) || !same_bits({x.score.value}, {y.score.value})) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("ES restart: on a plateau a population restart fires every restart_after stalled generations, the best kept",
+          "[opt][es][restart]") {
+  const auto sphere = make_test_function("sphere", 2);
+  const Plateau plateau(*sphere);
+  const EsConfig c = restarting(EsConfig::Restart::population);
+  const EvolutionStrategy es(plateau, c);
+  const auto gens = all_generations(es);
+  REQUIRE(gens.back().population.front().score.value == 0);  // on the plateau
+  int restarts = 0, fresh_after_converged = 0;
+  for (std::size_t k = 0; k + 1 < gens.size(); ++k) {
+    const Generation &g = gens[k], &next = gens[k + 1];
+    INFO("generation " << next.index);
+    const bool restart = g.stalled > 0 && g.stalled % c.restart_after == 0;
+    restarts += restart ? 1 : 0;
+    // The sphere's mutations evaluate nothing: lambda offspring, and mu - 1 fresh members at a restart.
+    CHECK(next.evaluations - g.evaluations == c.lambda + (restart ? c.mu - 1 : 0));
+    CHECK(next.population.front().score.value <= g.population.front().score.value);  // elitist
+    if (g.population.front().score.value == 0) CHECK(next.stalled == g.stalled + 1);  // nothing beats 0
+    // A converged population (all on the plateau) has members off it after a restart: fresh ones.
+    const auto off = [](const Generation& x) {
+      return std::count_if(x.population.begin(), x.population.end(), [](const Individual& i) { return i.score.value > 0; });
+    };
+    if (restart && off(g) == 0 && off(next) > 0) ++fresh_after_converged;
+  }
+  CHECK(restarts >= 10);
+  CHECK(fresh_after_converged >= 1);
+}
+
+TEST_CASE("ES restart: a steps restart puts every member back at its initial step sizes", "[opt][es][restart]") {
+  const auto sphere = make_test_function("sphere", 2);
+  const Plateau plateau(*sphere);
+  const EsConfig c = restarting(EsConfig::Restart::steps);
+  const EvolutionStrategy es(plateau, c);
+  const auto gens = all_generations(es);
+  int restarts = 0, adapted_before = 0;
+  for (std::size_t k = 0; k + 1 < gens.size(); ++k) {
+    const Generation &g = gens[k], &next = gens[k + 1];
+    if (!(g.stalled > 0 && g.stalled % c.restart_after == 0)) continue;
+    ++restarts;
+    CHECK(next.evaluations - g.evaluations == c.lambda);  // no fresh members
+    for (const auto& ind : g.population) adapted_before += ind.steps != plateau.initial_steps(ind.x) ? 1 : 0;
+    // On the plateau the offspring only tie with their parents, and ties keep the parents first:
+    // the members that stay are the restarted parents.
+    for (const auto& ind : next.population)
+      for (const auto& parent : g.population)
+        if (same_bits(parent.x, ind.x)) CHECK(ind.steps == plateau.initial_steps(ind.x));
+  }
+  CHECK(restarts >= 10);
+  CHECK(adapted_before > 0);  // the check above is no tautology: steps had moved
+}
+
+TEST_CASE("ES restart: resumed from any generation, or on 2 threads, the run repeats bit for bit",
+          "[opt][es][restart][determinism]") {
+  const auto ellipsoid = make_test_function("ellipsoid", 4);
+  const Plateau plateau(*ellipsoid);
+  for (const auto mode : {EsConfig::Restart::population, EsConfig::Restart::steps}) {
+    const EvolutionStrategy es(plateau, restarting(mode, 3000));
+    const auto full = all_generations(es);
+    REQUIRE(std::any_of(full.begin(), full.end(), [&](const Generation& g) { return es.restarts_after(g); }));
+    for (std::size_t from = 0; from + 1 < full.size(); from += 3) {
+      INFO("resumed from generation " << from);
+      const auto resumed = all_generations(es, &full[from]);
+      REQUIRE(resumed.size() == full.size() - from);
+      for (std::size_t k = 0; k < resumed.size(); ++k) CHECK(same_generation(resumed[k], full[from + k]));
+    }
+    const tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
+    const auto threaded = all_generations(es);
+    REQUIRE(threaded.size() == full.size());
+    for (std::size_t k = 0; k < full.size(); ++k) CHECK(same_generation(threaded[k], full[k]));
+  }
+}
+
+TEST_CASE("ES restart: off (restart_after 0) the stall is counted and nothing restarts", "[opt][es][restart]") {
+  const auto sphere = make_test_function("sphere", 2);
+  const Plateau plateau(*sphere);
+  EsConfig c = restarting(EsConfig::Restart::population);
+  c.restart_after = 0;
+  const auto gens = all_generations(EvolutionStrategy(plateau, c));
+  REQUIRE(gens.back().stalled > 20);
+  for (std::size_t k = 0; k + 1 < gens.size(); ++k) CHECK(gens[k + 1].evaluations - gens[k].evaluations == c.lambda);
+}
