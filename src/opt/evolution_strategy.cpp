@@ -75,6 +75,9 @@ bool EvolutionStrategy::improved(const Generation& next, const Generation& prev)
   const Score& a = next.population.front().score;
   const Score& b = prev.population.front().score;
   if (!problem_.better(a, b)) return false;
+  // While the kept best rests, any lead of the new run ends the rest: the member that leads is
+  // then the one a restart would keep, and the converged best must not rest in its place.
+  if (best_rests(prev)) return true;
   const bool same_standing = a.feasible == b.feasible && a.violation == b.violation;
   return !same_standing || b.value - a.value > config_.restart_tolerance * std::abs(b.value);
 }

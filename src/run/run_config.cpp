@@ -108,6 +108,14 @@ RunConfig parse_run_config(const std::string& text, const std::string& origin,
   return c;
 }
 
+RunConfig parse_stored_run_config(const std::string& text, const std::string& origin,
+                                  const std::vector<std::string>& objective_names) {
+  RunConfig c = parse_run_config(text, origin, objective_names);
+  const YAML::Node root = YAML::Load(text);  // parsed above, so it loads
+  if (!root.IsMap() || !root["es"] || !root["es"]["restart_after"]) c.es.restart_after = 0;
+  return c;
+}
+
 RunConfig load_run_config(const std::string& path, const std::vector<std::string>& objective_names) {
   std::ifstream in(path);
   if (!in) throw io::InputError(path, 0, 0, "", "cannot open file");

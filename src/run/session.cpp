@@ -48,7 +48,7 @@ Session::Session(mold::MoldSpec spec, const RunOverrides& overrides)
 
 Session::Session(mold::MoldSpec spec, const std::string& config_yaml, const std::string& origin)
     : Session(std::move(spec),
-              [&](const std::vector<std::string>& names) { return parse_run_config(config_yaml, origin, names); }) {}
+              [&](const std::vector<std::string>& names) { return parse_stored_run_config(config_yaml, origin, names); }) {}
 
 long Session::scenes_built() { return scenes; }
 

@@ -167,6 +167,14 @@ auto reading(const std::string& path, F&& read) {
   }
 }
 
+// A generation's stall count (the ES's restart reads it): at most its index.
+int stalled_count(long stored, int index) {
+  if (stored < 0 || stored > index)
+    throw std::runtime_error("generation " + std::to_string(index) + " has a stall count of " + std::to_string(stored) +
+                             ", not 0.." + std::to_string(index));
+  return int(stored);
+}
+
 }  // namespace
 
 constexpr const char* kInsertGeneration =
@@ -486,7 +494,7 @@ std::optional<opt::Generation> RunStore::island_generation(int island, int index
     opt::Generation out;
     out.index = index;
     out.evaluations = g.integer(0);
-    out.stalled = int(g.integer(1));
+    out.stalled = stalled_count(g.integer(1), index);
     Statement q(db_,
                 "SELECT genotype, steps, objectives, violation, feasible, value, violations FROM island_individual"
                 " WHERE island = ? AND generation = ? ORDER BY rank");
@@ -518,7 +526,7 @@ std::optional<opt::Generation> RunStore::generation(int index) const {
     opt::Generation out;
     out.index = index;
     out.evaluations = g.integer(0);
-    out.stalled = int(g.integer(1));
+    out.stalled = stalled_count(g.integer(1), index);
     Statement q(db_,
                 "SELECT genotype, steps, objectives, violation, feasible, value, violations FROM individual"
                 " WHERE generation = ? ORDER BY rank");

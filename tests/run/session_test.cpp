@@ -83,6 +83,22 @@ TEST_CASE("run config: penalty is read, written back, and checked", "[run][sessi
   }
 }
 
+TEST_CASE("run config: a store made before the ES's restart resumes without it; today's runs restart after 200",
+          "[run][session][restart]") {
+  const std::vector<std::string> names{"a", "b"};
+  const std::string before = "es: {mu: 10, lambda: 40, rho: 2, plus: true, recombination: true}\nseed: 3\n";
+  CHECK(run::parse_run_config(before, "cfg.yaml", names).es.restart_after == 200);  // a new run's default
+  CHECK(run::parse_stored_run_config(before, "run.sqlite:config", names).es.restart_after == 0);
+  const run::RunConfig today = run::parse_run_config("seed: 3\n", "cfg.yaml", names);
+  const run::RunConfig stored = run::parse_stored_run_config(today.to_yaml(names), "run.sqlite:config", names);
+  CHECK(stored.es.restart_after == 200);
+  CHECK(stored.es.restart == today.es.restart);
+  CHECK(stored.es.restart_tolerance == today.es.restart_tolerance);
+  run::RunConfig off = today;
+  off.es.restart_after = 0;
+  CHECK(run::parse_stored_run_config(off.to_yaml(names), "run.sqlite:config", names).es.restart_after == 0);
+}
+
 TEST_CASE("SMS-EMOA on the mold: same seed, same populations, with 1 thread or 2", "[run][sms-emoa][determinism]") {
   run::RunOverrides o;
   o.algorithm = "sms-emoa";

@@ -9,6 +9,7 @@
 #include <sqlite3.h>
 #include <unistd.h>
 
+#include "mtcs/io/input_error.h"
 #include "mtcs/store/run_store.h"
 
 using mtcs::store::RunStore;
@@ -167,10 +168,10 @@ TEST_CASE("run store: the ES's stall count survives the store, in the run's rows
   const std::string path = fresh("stalled.sqlite");
   {
     RunStore s = RunStore::create(path, {{"program", "mtcs test"}});
-    opt::Generation g = generation(0, 3, 1);
+    opt::Generation g = generation(41, 3, 1);
     g.stalled = 41;
     s.save(g, 0.1);
-    std::vector<opt::Generation> islands{generation(1, 6, 2), generation(1, 6, 3)};
+    std::vector<opt::Generation> islands{generation(300, 6, 2), generation(300, 6, 3)};
     islands[0].stalled = 7, islands[1].stalled = 300;
     opt::Generation merged = islands[0];
     merged.evaluations = 12;
@@ -179,9 +180,9 @@ TEST_CASE("run store: the ES's stall count survives the store, in the run's rows
   }
   {
     const RunStore read = RunStore::open(path);
-    CHECK(read.generation(0)->stalled == 41);
-    CHECK(read.island_generation(0, 1)->stalled == 7);
-    CHECK(read.island_generation(1, 1)->stalled == 300);
+    CHECK(read.generation(41)->stalled == 41);
+    CHECK(read.island_generation(0, 300)->stalled == 7);
+    CHECK(read.island_generation(1, 300)->stalled == 300);
   }
   const std::string old = fresh("stalled_old.sqlite");
   {
@@ -198,10 +199,37 @@ TEST_CASE("run store: the ES's stall count survives the store, in the run's rows
   {
     RunStore s = RunStore::resume(old);  // adds the column
     opt::Generation g = generation(1, 6, 0.5);
-    g.stalled = 3;
+    g.stalled = 1;
     s.save(g, 0.2);
   }
   const RunStore read = RunStore::open(old);
   CHECK(read.generation(0)->stalled == 0);
-  CHECK(read.generation(1)->stalled == 3);
+  CHECK(read.generation(1)->stalled == 1);
+}
+
+TEST_CASE("run store: a stall count beyond its generation's index, or negative, is a bad store, not an overflow",
+          "[store][restart]") {
+  for (const long bad : {-1L, 6L, 2147483647L, 9223372036854775807L}) {
+    const std::string path = fresh("stalled_bad.sqlite");
+    {
+      RunStore s = RunStore::create(path, {{"program", "mtcs test"}});
+      s.save(generation(5, 30, 1), 0.1);
+    }
+    {
+      sqlite3* db = nullptr;
+      REQUIRE(sqlite3_open(path.c_str(), &db) == SQLITE_OK);
+      const std::string sql = "UPDATE generation SET stalled = " + std::to_string(bad) + " WHERE idx = 5;";
+      REQUIRE(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, nullptr) == SQLITE_OK);
+      sqlite3_close(db);
+    }
+    INFO("stalled = " << bad);
+    try {
+      (void)RunStore::open(path).generation(5);
+      FAIL("no error");
+    } catch (const io::InputError& e) {
+      const std::string what = e.what();
+      CHECK(what.find(path) != std::string::npos);
+      CHECK(what.find("stall count") != std::string::npos);
+    }
+  }
 }

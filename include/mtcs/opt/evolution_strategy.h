@@ -11,7 +11,9 @@
 // replaced by a fresh sample (their evaluations count in the budget), and until the best
 // improves again the best is no parent (plus strategies), so the fresh members evolve on their own instead of
 // being displaced by the best's offspring: a new run of restart_after generations, the best
-// kept. `steps`: every member's step sizes go back to their initial values (a local restart
+// kept; the rest ends as soon as any member leads it. A comma strategy drops the kept best at
+// its next selection, and with mu = 1 there is nothing to replace: there a population restart
+// keeps only the count. `steps`: every member's step sizes go back to their initial values (a local restart
 // around the same members). The decisions read only the previous generation, so they are the
 // same with any thread count and after a resume.
 
@@ -53,7 +55,13 @@ class EvolutionStrategy {
 
   Generation initial() const;
   Generation step(const Generation& previous) const;
-  bool done(const Generation& g) const { return g.evaluations + config_.lambda > config_.evaluations; }
+  // The next generation would pass the budget (its offspring, and a restart's fresh members).
+  bool done(const Generation& g) const {
+    const long fresh = restarts_after(g) && config_.restart == EsConfig::Restart::population
+                           ? long(g.population.size()) - 1
+                           : 0;
+    return g.evaluations + fresh + config_.lambda > config_.evaluations;
+  }
   const EsConfig& config() const { return config_; }
   // Whether the generation after `g` starts from a restarted population.
   bool restarts_after(const Generation& g) const {

@@ -18,8 +18,9 @@ struct Individual {
 struct Generation {
   int index = 0;          // 0: the initial population
   long evaluations = 0;   // spent so far
-  // Generations since the best last improved or the ES last restarted: the ES's restart on
-  // stall decides from it, so the run store keeps it (resume continues the count).
+  // Generations since the best last improved (a restart does not reset it: restarts fire at
+  // each multiple of restart_after): the ES's restart on stall decides from it, so the run
+  // store keeps it (resume continues the count).
   int stalled = 0;
   std::vector<Individual> population;  // after selection, best first
 };

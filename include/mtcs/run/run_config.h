@@ -37,5 +37,10 @@ struct RunConfig {
 RunConfig load_run_config(const std::string& path, const std::vector<std::string>& objective_names);
 RunConfig parse_run_config(const std::string& yaml_text, const std::string& origin,
                            const std::vector<std::string>& objective_names);
+// The config a run store keeps (resume, replay, report): a key added since the store was made
+// takes the value that repeats the run as it was made, not today's default (a store made before
+// the ES's restart on stall has no es.restart_after: its run never restarted).
+RunConfig parse_stored_run_config(const std::string& yaml_text, const std::string& origin,
+                                  const std::vector<std::string>& objective_names);
 
 }  // namespace mtcs::run
