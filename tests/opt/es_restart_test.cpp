@@ -17,21 +17,29 @@ using namespace mtcs::opt;
 
 namespace {
 
-class Plateau final : public Problem {
+// A test function seen through one change (the rest forwards to it).
+class Forwarding : public Problem {
  public:
-  explicit Plateau(const Problem& f) : f_(f) {}
-  std::string name() const override { return "plateau"; }
+  explicit Forwarding(const Problem& f) : f_(f) {}
+  std::string name() const override { return "forwarding " + f_.name(); }
   Genotype sample(Rng& rng) const override { return f_.sample(rng); }
   std::vector<double> initial_steps(const Genotype& g) const override { return f_.initial_steps(g); }
   long mutate(Genotype& g, const std::vector<double>& steps, Rng& rng) const override { return f_.mutate(g, steps, rng); }
-  Score evaluate(const Genotype& g) const override {
-    Score s = f_.evaluate(g);
-    s.value = std::max(0.0, s.value - 1);
-    return s;
-  }
+  Score evaluate(const Genotype& g) const override { return f_.evaluate(g); }
 
  private:
   const Problem& f_;
+};
+
+// Flat at 0 inside the unit ball.
+class Plateau final : public Forwarding {
+ public:
+  using Forwarding::Forwarding;
+  Score evaluate(const Genotype& g) const override {
+    Score s = Forwarding::evaluate(g);
+    s.value = std::max(0.0, s.value - 1);
+    return s;
+  }
 };
 
 EsConfig restarting(EsConfig::Restart mode, long evaluations = 4000) {
@@ -156,36 +164,22 @@ namespace {
 
 // Offspring are their parents' copies: whatever enters a population came from a parent, so a
 // resting best (no parent) can only be seen once.
-class Frozen final : public Problem {
+class Frozen final : public Forwarding {
  public:
-  explicit Frozen(const Problem& f) : f_(f) {}
-  std::string name() const override { return "frozen"; }
-  Genotype sample(Rng& rng) const override { return f_.sample(rng); }
-  std::vector<double> initial_steps(const Genotype& g) const override { return f_.initial_steps(g); }
+  using Forwarding::Forwarding;
   long mutate(Genotype&, const std::vector<double>&, Rng&) const override { return 0; }
-  Score evaluate(const Genotype& g) const override { return f_.evaluate(g); }
-
- private:
-  const Problem& f_;
 };
 
 // The sphere lifted to 1000: every gain is below the restart's 0.1 % tolerance, so the ES
 // stalls and restarts while its members still improve a little.
-class Lifted final : public Problem {
+class Lifted final : public Forwarding {
  public:
-  explicit Lifted(const Problem& f) : f_(f) {}
-  std::string name() const override { return "lifted"; }
-  Genotype sample(Rng& rng) const override { return f_.sample(rng); }
-  std::vector<double> initial_steps(const Genotype& g) const override { return f_.initial_steps(g); }
-  long mutate(Genotype& g, const std::vector<double>& steps, Rng& rng) const override { return f_.mutate(g, steps, rng); }
+  using Forwarding::Forwarding;
   Score evaluate(const Genotype& g) const override {
-    Score s = f_.evaluate(g);
+    Score s = Forwarding::evaluate(g);
     s.value = 1000 + 1e-3 * s.value;
     return s;
   }
-
- private:
-  const Problem& f_;
 };
 
 }  // namespace
