@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Cumulative executions per fuzz target: the total before a round plus the round's lines.
-  python3 experiments/fuzz/cumulative.py [--before 0601|0915|1036] ROUND.tsv [OTHER.tsv...]
+  python3 experiments/fuzz/cumulative.py [--before 0601|0915|1036|1325] ROUND.tsv [OTHER.tsv...]
 ROUND.tsv: long_run.sh's lines (target, seconds, executions, exit code, tree); OTHER.tsv: other
 runs of the same readers, executions in the 4th column (side_by_side.sh's lines, smoke runs). Prints the
 README's markdown table: this round, cumulative, left to 10 M and the time that takes at the
@@ -19,7 +19,11 @@ ROUNDS = {"0601": {"mold_spec": 53369, "layout": 769460, "pairs_csv": 1522217, "
           # until 10:36 UTC (the round of 10:00-10:36 and CI's smoke run of 09:53 included)
           "1036": {"mold_spec": 976776, "layout": 1681932, "pairs_csv": 5086166, "cylinders_csv": 5075541,
                    "points_csv": 10827485, "front_file": 3204510, "mesh_stl": 1608646, "mesh_off": 6813115,
-                   "mesh_obj": 9136185, "mesh_ply": 6662006, "run_store": 2497102}}
+                   "mesh_obj": 9136185, "mesh_ply": 6662006, "run_store": 2497102},
+          # until 13:25 UTC (the rounds d and e of 11:00-13:25; smoke runs since 10:36 not added)
+          "1325": {"mold_spec": 1997387, "layout": 4394513, "pairs_csv": 9048476, "cylinders_csv": 11261915,
+                   "points_csv": 10827485, "front_file": 13591036, "mesh_stl": 9088593, "mesh_off": 10244370,
+                   "mesh_obj": 10798031, "mesh_ply": 10015833, "run_store": 9911128}}
 args = sys.argv[1:]
 BEFORE = ROUNDS["0601"]
 if args[:1] == ["--before"]:
