@@ -136,6 +136,13 @@ int lock_store(const std::string& path) {
   return fd;
 }
 
+bool has_table(sqlite3* db, const char* table) {
+  Statement q(db, "SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = ?");
+  q.bind(1, std::string(table));
+  q.step();
+  return q.integer(0) > 0;
+}
+
 bool has_column(sqlite3* db, const char* table, const char* column) {
   Statement q(db, "SELECT count(*) FROM pragma_table_info(?) WHERE name = ?");
   q.bind(1, std::string(table)).bind(2, std::string(column));
@@ -147,10 +154,7 @@ bool has_column(sqlite3* db, const char* table, const char* column) {
 // improved, which its restart reads): added, 0 for the generations they hold.
 void add_stalled_columns(sqlite3* db) {
   for (const char* table : {"generation", "island_generation"}) {
-    Statement exists(db, "SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = ?");
-    exists.bind(1, std::string(table));
-    exists.step();
-    if (exists.integer(0) > 0 && !has_column(db, table, "stalled"))
+    if (has_table(db, table) && !has_column(db, table, "stalled"))
       exec(db, (std::string("ALTER TABLE ") + table + " ADD COLUMN stalled INTEGER NOT NULL DEFAULT 0;").c_str());
   }
 }
@@ -353,19 +357,11 @@ void RunStore::save(const opt::Generation& g, double seconds) {
 
 namespace {
 
-bool has_island_tables(sqlite3* db) {
-  Statement q(db, "SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = 'island_generation'");
-  q.step();
-  return q.integer(0) > 0;
-}
+bool has_island_tables(sqlite3* db) { return has_table(db, "island_generation"); }
 
 // Whether the island rows carry the archipelago's ranks (island tables made since 2026-11-25),
 // and the run's table no copy of the archipelago's members.
-bool has_archipelago_rank(sqlite3* db) {
-  Statement q(db, "SELECT count(*) FROM pragma_table_info('island_individual') WHERE name = 'archipelago_rank'");
-  q.step();
-  return q.integer(0) > 0;
-}
+bool has_archipelago_rank(sqlite3* db) { return has_column(db, "island_individual", "archipelago_rank"); }
 
 }  // namespace
 
