@@ -1,4 +1,5 @@
 #include "mtcs/opt/evolution_strategy.h"
+#include "mtcs/opt/migration.h"
 
 #include "run_to_budget.h"
 
@@ -80,6 +81,12 @@ bool EvolutionStrategy::improved(const Generation& next, const Generation& prev)
   if (best_rests(prev)) return true;
   const bool same_standing = a.feasible == b.feasible && a.violation == b.violation;
   return !same_standing || b.value - a.value > config_.restart_tolerance * std::abs(b.value);
+}
+
+Generation EvolutionStrategy::immigrate(const Generation& g, const std::vector<Individual>& arrivals) const {
+  Generation out = replace_worst(problem_, g, arrivals);
+  if (improved(out, g)) out.stalled = 0;
+  return out;
 }
 
 Generation EvolutionStrategy::step(const Generation& prev_generation) const {

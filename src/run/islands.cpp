@@ -26,7 +26,7 @@ namespace {
 class Island {
  public:
   Island(const MoldOptimizer& base, const opt::Problem& problem, int index, int islands)
-      : problem_(problem), es_(problem, config(base.es().config(), index, islands)),
+      : es_(problem, config(base.es().config(), index, islands)),
         sms_(problem, config(base.sms().config(), index, islands)), pareto_(base.pareto()), mu_(base.mu()),
         alone_(islands == 1) {}
 
@@ -65,7 +65,7 @@ class Island {
   }
   opt::Generation immigrate(const opt::Generation& g, const std::vector<opt::Individual>& arrivals) const {
     if (arrivals.empty()) return g;
-    return pareto_ ? sms_.immigrate(g, arrivals) : opt::replace_worst(problem_, g, arrivals);
+    return pareto_ ? sms_.immigrate(g, arrivals) : es_.immigrate(g, arrivals);
   }
 
  private:
@@ -75,7 +75,6 @@ class Island {
     c.evaluations /= islands;
     return c;
   }
-  const opt::Problem& problem_;
   opt::EvolutionStrategy es_;
   opt::SmsEmoa sms_;
   bool pareto_;

@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <tbb/global_control.h>
 
@@ -225,4 +226,35 @@ TEST_CASE("ES restart: the rest ends when the new run leads, even by less than t
   }
   CHECK(ended > 0);
   CHECK(stalled_on > 0);
+}
+
+TEST_CASE("ES restart: an island's arrival that leads resets the stall count; others leave it", "[opt][es][restart][islands]") {
+  const auto sphere = make_test_function("sphere", 2);
+  const EvolutionStrategy es(*sphere, restarting(EsConfig::Restart::population));
+  auto member = [&](double x) {
+    const Genotype g{x, 0};
+    return Individual{g, sphere->initial_steps(g), sphere->evaluate(g)};
+  };
+  Generation g;
+  g.index = 12;
+  for (const double x : {1.0, 1.5, 2.0, 2.5}) g.population.push_back(member(x));  // best 1, worst 6.25
+  for (const int stalled : {2, 5, 7}) {  // counting; resting (restart_after 5); resting after a restart
+    g.stalled = stalled;
+    INFO("stalled " << stalled);
+    const bool resting = es.best_rests(g);
+    // A clear lead (value 0.25 against 1): a gain, so the count starts again and the rest ends.
+    const Generation lead = es.immigrate(g, {member(0.5)});
+    CHECK(lead.population.front().x[0] == 0.5);
+    CHECK(lead.stalled == 0);
+    CHECK_FALSE(es.best_rests(lead));
+    // A lead under the tolerance (0.1 %): a gain only while the best rests (as in step()).
+    const Generation slight = es.immigrate(g, {member(std::sqrt(0.9995))});
+    CHECK(slight.population.front().x[0] == std::sqrt(0.9995));
+    CHECK(slight.stalled == (resting ? 0 : stalled));
+    // No lead: the arrival replaces the worst, the count goes on.
+    const Generation behind = es.immigrate(g, {member(1.2)});
+    CHECK(behind.population.front().x[0] == 1.0);
+    CHECK(behind.population.back().x[0] == 2.0);
+    CHECK(behind.stalled == stalled);
+  }
 }

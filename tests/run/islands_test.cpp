@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <thread>
 #include <unistd.h>
 
@@ -199,6 +200,47 @@ TEST_CASE("islands: kill -9 while the store thread writes; every resume ends as 
             0);
     CHECK(rows(dir, 4) == expected);
   }
+}
+
+TEST_CASE("islands: restarts fire on the islands; resumed across them, or on one thread, the run is the same",
+          "[run][islands][restart]") {
+  // Stalls made frequent (2 generations without a 20 % gain): the stall counts travel in the store,
+  // and a resume between restarts must restart where the uninterrupted run did.
+  const fs::path config = scratch("restart_config") / "run.yaml";
+  fs::create_directories(config.parent_path());
+  std::ofstream(config) << "es:\n  restart_after: 2\n  restart_tolerance: 0.2\n";
+  const fs::path whole = scratch("restart_whole"), parts = scratch("restart_parts"), one = scratch("restart_one");
+  auto r = request(whole, 3);
+  r.overrides.config = config.string();
+  r.overrides.evaluations = 2400;
+  const run::OptimizeResult done = optimize(r);
+  auto stall_counts = [](const fs::path& dir) {
+    const auto db = store::RunStore::open((dir / "run.sqlite").string());
+    std::vector<int> out;
+    for (int i = 0; i < 3; ++i)
+      for (const auto& s : db.island_summaries(i)) out.push_back(db.island_generation(i, s.index)->stalled);
+    return out;
+  };
+  const std::vector<int> stalls = stall_counts(whole);
+  // A restart follows every positive multiple of 2 that is not an island's last generation.
+  const auto restarts = std::count_if(stalls.begin(), stalls.end(), [](int k) { return k > 0 && k % 2 == 0; });
+  CHECK(restarts >= 3);
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    r.out = one.string();
+    optimize(r);
+  }
+  CHECK(rows(one, 3) == rows(whole, 3));
+  CHECK(stall_counts(one) == stalls);
+  r.out = parts.string();
+  int calls = 0;
+  CHECK(optimize(r, [&] { return ++calls > 3; }).interrupted);
+  run::OptimizeRequest again;
+  again.resume = parts.string();
+  const run::OptimizeResult resumed = optimize(again);
+  CHECK(resumed.last_generation == done.last_generation);
+  CHECK(rows(parts, 3) == rows(whole, 3));
+  CHECK(stall_counts(parts) == stalls);
 }
 
 TEST_CASE("islands: settings survive the store's text; bad ones name the field", "[run][islands]") {

@@ -63,6 +63,10 @@ class EvolutionStrategy {
     return g.evaluations + fresh + config_.lambda > config_.evaluations;
   }
   const EsConfig& config() const { return config_; }
+  // An island's arrivals (opt/migration.h, replace_worst). An arrival that leads as a gain of the
+  // best would (restart_tolerance; any lead during a rest) resets the stall count: the island's
+  // new best is a parent, and no restart discards it as converged.
+  Generation immigrate(const Generation& g, const std::vector<Individual>& arrivals) const;
   // Whether the generation after `g` starts from a restarted population.
   bool restarts_after(const Generation& g) const {
     return config_.restart_after > 0 && g.stalled > 0 && g.stalled % config_.restart_after == 0;
