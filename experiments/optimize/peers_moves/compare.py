@@ -17,9 +17,9 @@ import os
 import statistics
 import sys
 
-from scipy.stats import mannwhitneyu
-
 here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(here))
+from peers_stats import fmt, quartiles, rank_sum_p as p  # noqa: E402
 budget = sys.argv[1] if len(sys.argv) > 1 else "20000"
 
 
@@ -32,19 +32,6 @@ def runs(path, rename=None):
                                           float(r["seconds"]), float(r["hypervolume"])))
     return out
 
-
-def quartiles(v):
-    q = statistics.quantiles(sorted(v), n=4, method="inclusive")
-    return q[0], statistics.median(v), q[2]
-
-
-def fmt(x):
-    return "inf" if math.isinf(x) else f"{x:.4g}"
-
-
-def p(a, b):
-    big = 1e300
-    return mannwhitneyu([min(x, big) for x in a], [min(x, big) for x in b], alternative="two-sided").pvalue
 
 
 lines = [f"# ES variants against NSGA-II and MOEA/D, {budget} evaluations, 11 seeds", ""]

@@ -8,43 +8,18 @@ Usage: /usr/bin/python3 experiments/optimize/peers_restart/compare.py [LABEL ...
 Reads results_MOLD_BUDGET_LABEL.csv here (default: every label found) and the ES and peer rows
 of ../peers_moves/ (which do not depend on the ES's config); writes compare.md here.
 """
-import csv
 import glob
 import math
 import os
 import statistics
 import sys
 
-from scipy.stats import mannwhitneyu
-
 here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(here))
+from peers_stats import fmt, quartiles, rank_sum_p as p, results as rows  # noqa: E402
 moves = os.path.join(here, "..", "peers_moves")
 cells = [("cup", 20000), ("cup", 100000), ("plate_wall_distance", 20000), ("plate_wall_distance", 100000),
          ("gear", 20000), ("gear", 100000), ("thermal_block", 20000)]
-
-
-def rows(path):
-    out = {}
-    if not os.path.exists(path):
-        return out
-    with open(path) as f:
-        for r in csv.DictReader(f):
-            out.setdefault(r["algorithm"], []).append(float(r["best_objective"]) if r["feasible"] == "1" else math.inf)
-    return out
-
-
-def quartiles(v):
-    q = statistics.quantiles(sorted(v), n=4, method="inclusive")
-    return q[0], statistics.median(v), q[2]
-
-
-def fmt(x):
-    return "inf" if math.isinf(x) else f"{x:.4g}"
-
-
-def p(a, b):
-    big = 1e300
-    return mannwhitneyu([min(x, big) for x in a], [min(x, big) for x in b], alternative="two-sided").pvalue
 
 
 def arms(mold, budget):
