@@ -11,10 +11,12 @@ import csv
 import math
 import os
 import statistics
-
-from scipy.stats import mannwhitneyu
+import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+from peers_stats import fmt, quartiles as q, rank_sum_p as p_value  # noqa: E402
+
 FACTORS = [("pop", "population 20/80 (vs 10/40)"), ("rates", "mutation rates doubled"),
            ("moves", "mutation.moves 1 (vs 2)"), ("penalty", "penalty static_linear (vs constrained_domination)")]
 DEFAULT = "p0r0m0q0"
@@ -25,20 +27,6 @@ def metric(row):
         return float(row["best_objective"]) if row["feasible"] == "1" else math.inf
     return float(row["hypervolume"])
 
-
-def q(v):
-    v = sorted(v)
-    qs = statistics.quantiles(v, n=4, method="inclusive")
-    return qs[0], statistics.median(v), qs[2]
-
-
-def fmt(x):
-    return "inf" if math.isinf(x) else f"{x:.4g}"
-
-
-def p_value(a, b):
-    big = 1e300
-    return mannwhitneyu([min(x, big) for x in a], [min(x, big) for x in b], alternative="two-sided").pvalue
 
 
 def main():
