@@ -320,7 +320,7 @@ bool MoldProblem::reach_worst(mold::Genome& g, opt::Rng& rng, long& evaluations)
   const std::string mine = "c" + std::to_string(at) + ".";
   std::vector<std::size_t> gone;
   ++evaluations;
-  for (const auto& v : pipeline_.evaluate(g).violations) {
+  for (const auto& v : pipeline_.constraints(mold::decode(scene, g)).violations) {  // bore-bore pairs only
     if (v.kind != eval::ViolationKind::BoreBore || v.elements.size() < 2) continue;
     for (int e = 0; e < 2; ++e) {
       const std::string& other = v.elements[std::size_t(1 - e)];

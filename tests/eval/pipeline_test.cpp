@@ -235,3 +235,45 @@ TEST_CASE("pipeline: a mesh cavity gives the exact solid-cylinder clearance and 
   CHECK(v->distance == 0);
   CHECK_FALSE(find(pipeline.evaluate(mold::Genome{{straight(150, 40)}}), eval::ViolationKind::BoreCavity));
 }
+
+TEST_CASE("pipeline: constraints alone are evaluate's violations, objectives skipped", "[eval]") {
+  // The reach move asks only for feasibility (Pipeline::constraints): the same violations, in
+  // the same order, and the same CV as a full evaluation, on layouts with many violations.
+  const std::string mold = GENERATE(std::string("plate_wall_distance"), std::string("gear"));
+  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/" + mold + ".yaml");
+  const mold::Scene scene(spec);
+  const eval::Pipeline pipeline(scene);
+  std::mt19937 gen(5);
+  const geometry::Box& b = scene.block_bounds();
+  std::uniform_real_distribution<double> u(0, 1);
+  int violations = 0;
+  for (int i = 0; i < 30; ++i) {
+    mold::Genome g;
+    for (int c = 0; c < 3; ++c) {
+      mold::Circuit circuit{{}, spec.drilling.diameters.front()};
+      Vec3 p(b.min.x() + u(gen) * b.size().x(), b.min.y(), b.min.z() + u(gen) * b.size().z());
+      circuit.waypoints.push_back(p);
+      p.y() = b.min.y() + u(gen) * b.size().y();
+      circuit.waypoints.push_back(p);
+      p.x() = b.min.x() + u(gen) * b.size().x();
+      circuit.waypoints.push_back(p);
+      p.y() = b.min.y();
+      circuit.waypoints.push_back(p);
+      g.circuits.push_back(circuit);
+    }
+    const mold::Layout layout = mold::decode(scene, g);
+    const eval::Evaluation full = pipeline.evaluate(layout), alone = pipeline.constraints(layout);
+    violations += int(full.violations.size());
+    REQUIRE(alone.violations.size() == full.violations.size());
+    for (std::size_t k = 0; k < full.violations.size(); ++k) {
+      CHECK(alone.violations[k].kind == full.violations[k].kind);
+      CHECK(alone.violations[k].elements == full.violations[k].elements);
+      CHECK(alone.violations[k].distance == full.violations[k].distance);
+      CHECK(alone.violations[k].amount == full.violations[k].amount);
+    }
+    CHECK(alone.violation == full.violation);
+    CHECK(alone.feasible() == full.feasible());
+    CHECK(alone.objectives == std::vector<double>(full.objectives.size(), 0.0));
+  }
+  CHECK(violations > 30);  // the layouts do violate: the comparison is not of empty lists
+}
