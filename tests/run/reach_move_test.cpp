@@ -74,7 +74,7 @@ TEST_CASE("worst_covered_sample is the sample farthest from every flow bore", "[
   CHECK_FALSE(run::worst_covered_sample({}, layout).any);
 }
 
-TEST_CASE("worst_covered_sample's pruning picks the plain double loop's sample and distance", "[run][reach]") {
+TEST_CASE("worst_covered_sample's pruning picks the plain loop's sample and distance", "[run][reach]") {
   // The search stops scoring a sample once one bore is within the worst so far; the reference is
   // the plain loop over every sample and bore (wall above), first of equals. Samples on a coarse
   // grid around bores at integer places give exact ties, which must resolve to the earliest.
@@ -94,7 +94,8 @@ TEST_CASE("worst_covered_sample's pruning picks the plain double loop's sample a
     for (const auto& [points, l] : {std::pair{&samples, &layout}, std::pair{&grid_points, &trough}}) {
       run::WorstSample plain;
       for (const Vec3& p : *points) {
-        const double e = l->bores.empty() ? std::numeric_limits<double>::infinity() : wall(*l, p);  // no bores: infinity
+        // No bores: every sample at infinity (wall's 1e300 is only its start).
+        const double e = l->bores.empty() ? std::numeric_limits<double>::infinity() : wall(*l, p);
         if (!plain.any || e > plain.wall_distance) plain = {p, e, true};
       }
       const run::WorstSample w = run::worst_covered_sample(*points, *l);
