@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 #include <random>
+#include <thread>
 
 #include "../support/scratch_file.h"
 #include "mtcs/eval/pipeline.h"
@@ -276,4 +277,32 @@ TEST_CASE("pipeline: constraints alone are evaluate's violations, objectives ski
     CHECK(alone.objectives == std::vector<double>(full.objectives.size(), 0.0));
   }
   CHECK(violations > 30);  // the layouts do violate: the comparison is not of empty lists
+}
+
+TEST_CASE("pipeline: the thermal stage's reused arrays carry nothing from one layout to the next", "[eval]") {
+  // The stage keeps its per-slot arrays per thread and the first circuit overwrites them (no
+  // fill): a layout scored after others (more circuits, other diameters, none at all) must equal
+  // the same layout scored on a thread that has seen nothing (a new thread and pipeline per
+  // layout: the arrays are per thread, not per pipeline).
+  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml");
+  const mold::Scene scene(spec);
+  const eval::Pipeline warm(scene);
+  const geometry::Box& b = scene.block_bounds();
+  auto along_y = [&](double x, double z, double d) {
+    return mold::Circuit{{{x, b.min.y(), z}, {x, b.max.y(), z}}, d};
+  };
+  const double d0 = spec.drilling.diameters.front(), d1 = spec.drilling.diameters.back();
+  const double zc = (b.min.z() + b.max.z()) / 2, xc = (b.min.x() + b.max.x()) / 2;
+  const std::vector<mold::Genome> layouts{
+      mold::Genome{{along_y(xc - 40, zc, d0), along_y(xc, zc - 20, d1), along_y(xc + 40, zc, d0)}},
+      mold::Genome{},  // no bores: every sample at the block's diagonal
+      mold::Genome{{along_y(xc + 10, zc + 5, d1)}},
+      mold::Genome{{along_y(xc - 60, zc - 10, d0), along_y(xc + 60, zc + 10, d0)}},
+      mold::Genome{},
+  };
+  for (const auto& g : layouts) {
+    std::vector<double> cold;
+    std::thread([&] { cold = eval::Pipeline(scene).evaluate(g).objectives; }).join();
+    CHECK(warm.evaluate(g).objectives == cold);
+  }
 }
