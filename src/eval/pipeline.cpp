@@ -30,6 +30,7 @@ Pipeline::Pipeline(const mold::Scene& scene, const TemperatureSolverFactory& tem
     break;
   }
   if (uses(mold::Objective::Cost)) stages_.push_back(make_cost_stage(scene));
+  objective_stages_ = stages_.size();
   // Constraints: only those the scene has elements for.
   stages_.push_back(make_bore_bore_stage(scene));
   bool cylinders = false, meshes = false;
@@ -68,6 +69,14 @@ Evaluation Pipeline::evaluate(const mold::Layout& layout, bool timed) const {
     stage->run(layout, e);
     e.stages.push_back({stage->name(), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()});
   }
+  for (const Violation& v : e.violations) e.violation += std::pow(v.amount, scene_.spec().penalty.power);
+  return e;
+}
+
+Evaluation Pipeline::constraints(const mold::Layout& layout) const {
+  Evaluation e;
+  e.objectives.assign(scene_.spec().objectives.use.size(), 0.0);
+  for (std::size_t s = objective_stages_; s < stages_.size(); ++s) stages_[s]->run(layout, e);
   for (const Violation& v : e.violations) e.violation += std::pow(v.amount, scene_.spec().penalty.power);
   return e;
 }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 #include "mtcs/mold/decoder.h"
@@ -35,6 +36,31 @@ __attribute__((target_clones("avx2", "default"))) void take_nearer(const double*
   }
 }
 
+// take_nearer for a layout's first circuit, against no bore (e_i = none, target t0): the arrays
+// need no filling first, nor reading back.
+__attribute__((target_clones("avx2", "default"))) void take_first(const double* __restrict e, double t, double none,
+                                                                  double t0, double* __restrict best,
+                                                                  double* __restrict target, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool nearer = e[i] < none;
+    best[i] = nearer ? e[i] : none;
+    target[i] = nearer ? t : t0;
+  }
+}
+
+// The largest of x[0..n), n > 0, in four independent chains (one chain waits on every max). The
+// value is std::max_element's: the e_i are neither NaN nor -0 (roots minus radii), so max is exact
+// and does not depend on the order.
+double largest(const double* x, std::size_t n) {
+  if (n == 0) return -std::numeric_limits<double>::infinity();
+  double m[4] = {x[0], x[0], x[0], x[0]};
+  std::size_t i = 0;
+  for (; i + 4 <= n; i += 4)
+    for (int k = 0; k < 4; ++k) m[k] = x[i + std::size_t(k)] > m[k] ? x[i + std::size_t(k)] : m[k];
+  for (; i < n; ++i) m[0] = x[i] > m[0] ? x[i] : m[0];
+  return std::max(std::max(m[0], m[1]), std::max(m[2], m[3]));
+}
+
 class ThermalStage final : public Stage {
  public:
   ThermalStage(const mold::Scene& scene, SurfaceSamples samples)
@@ -56,15 +82,23 @@ class ThermalStage final : public Stage {
     // allocation per evaluation.
     const std::size_t slots = tiles_.slots();
     static thread_local std::vector<double> best, target;
-    best.assign(slots, no_bore_);
-    target.assign(slots, target_.at(0));
+    best.resize(slots);
+    target.resize(slots);
     std::size_t b = 0;
     while (b < layout.bores.size()) {
       const std::size_t first = b;
       const int circuit = layout.bores[b].circuit;
       while (b < layout.bores.size() && layout.bores[b].circuit == circuit) ++b;
       const double r = layout.bores[first].diameter / 2, t = target_.at(2 * r);
-      take_nearer(circuit_distances(layout, first, b, r).get(), t, best.data(), target.data(), slots);
+      const double* e = circuit_distances(layout, first, b, r).get();
+      if (first == 0)
+        take_first(e, t, no_bore_, target_.at(0), best.data(), target.data(), slots);
+      else
+        take_nearer(e, t, best.data(), target.data(), slots);
+    }
+    if (layout.bores.empty()) {
+      std::fill(best.begin(), best.end(), no_bore_);
+      std::fill(target.begin(), target.end(), target_.at(0));
     }
     // In the samples' order (a padded slot repeats a sample: the maximum is the samples').
     if (uniformity_slot_ >= 0) {
@@ -76,7 +110,7 @@ class ThermalStage final : public Stage {
       }
       out.objectives[std::size_t(uniformity_slot_)] = std::sqrt(sum / total_);
     }
-    if (worst_slot_ >= 0) out.objectives[std::size_t(worst_slot_)] = *std::max_element(best.begin(), best.end());
+    if (worst_slot_ >= 0) out.objectives[std::size_t(worst_slot_)] = largest(best.data(), slots);
   }
 
  private:

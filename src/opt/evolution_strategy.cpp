@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numeric>
 
 namespace mtcs::opt {
@@ -159,7 +160,9 @@ Generation EvolutionStrategy::step(const Generation& prev_generation) const {
   next.index = prev.index + 1;
   next.evaluations = prev_generation.evaluations + spent_by_restart + lambda + spent_by_moves;
   std::vector<Individual> pool = config_.plus ? prev.population : std::vector<Individual>{};
-  pool.insert(pool.end(), offspring.begin(), offspring.end());
+  // Moved, not copied (genotypes, steps, violation texts): the offspring are not used below.
+  pool.insert(pool.end(), std::make_move_iterator(offspring.begin()),
+              std::make_move_iterator(offspring.end()));
   sort_population(problem_, pool);
   pool.resize(std::min<std::size_t>(pool.size(), std::size_t(config_.mu)));
   next.population = std::move(pool);

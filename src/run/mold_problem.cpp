@@ -41,10 +41,12 @@ mold::Genome MoldProblem::genome(const opt::Genotype& g) const {
   std::size_t i = 0;
   const int circuits = int(g[i++]);
   const auto& diameters = spec_.drilling.diameters;
+  out.circuits.reserve(std::size_t(std::max(circuits, 0)));  // one allocation each, not one per doubling
   for (int c = 0; c < circuits; ++c) {
     mold::Circuit circuit;
     circuit.diameter = diameters[std::size_t(std::clamp(int(g[i++]), 0, int(diameters.size()) - 1))];
     const int n = int(g[i++]);
+    circuit.waypoints.reserve(std::size_t(std::max(n, 0)));
     for (int p = 0; p < n; ++p, i += 3) circuit.waypoints.emplace_back(g[i], g[i + 1], g[i + 2]);
     out.circuits.push_back(std::move(circuit));
   }
@@ -57,7 +59,11 @@ std::size_t MoldProblem::dimension(const opt::Genotype& g) const {
 }
 
 opt::Genotype MoldProblem::encode(const mold::Genome& genome) const {
-  opt::Genotype g{double(genome.circuits.size())};
+  std::size_t size = 1;
+  for (const auto& c : genome.circuits) size += 2 + 3 * c.waypoints.size();
+  opt::Genotype g;
+  g.reserve(size);  // the genotype's exact length: one allocation
+  g.push_back(double(genome.circuits.size()));
   const auto& diameters = spec_.drilling.diameters;
   for (const auto& c : genome.circuits) {
     const auto it = std::min_element(diameters.begin(), diameters.end(),
@@ -320,7 +326,7 @@ bool MoldProblem::reach_worst(mold::Genome& g, opt::Rng& rng, long& evaluations)
   const std::string mine = "c" + std::to_string(at) + ".";
   std::vector<std::size_t> gone;
   ++evaluations;
-  for (const auto& v : pipeline_.evaluate(g).violations) {
+  for (const auto& v : pipeline_.constraints(mold::decode(scene, g)).violations) {  // bore-bore pairs only
     if (v.kind != eval::ViolationKind::BoreBore || v.elements.size() < 2) continue;
     for (int e = 0; e < 2; ++e) {
       const std::string& other = v.elements[std::size_t(1 - e)];

@@ -103,10 +103,28 @@ std::optional<Vec3> clearing_shift(const eval::Violation& v, const geometry::Box
 }  // namespace
 
 WorstSample worst_covered_sample(const std::vector<Vec3>& samples, const mold::Layout& layout) {
+  // Max over samples of the min over bores: a sample is out of the running as soon as one bore
+  // comes within the worst found so far (it needs a strictly larger minimum to win), so most
+  // samples cost one distance, not one per bore. The bore that ruled out the previous sample is
+  // tried first (neighbouring samples share their near bores). A sample that stays in the
+  // running gets every bore, so the winner and its distance are those of the plain double loop
+  // (nearest_wall): min and max do not depend on the order.
   WorstSample worst;
+  const std::vector<mold::Bore>& bores = layout.bores;
+  std::size_t first = 0;
   for (const Vec3& p : samples) {
-    const double e = nearest_wall(layout, p);
-    if (!worst.any || e > worst.wall_distance) worst = {p, e, true};
+    double e = std::numeric_limits<double>::infinity();
+    bool out = false;
+    for (std::size_t i = 0; i < bores.size(); ++i) {
+      const std::size_t k = i == 0 ? first : (i <= first ? i - 1 : i);
+      const mold::Bore& b = bores[k];
+      e = std::min(e, geometry::point_segment_distance(p, {b.flow_start, b.flow_end}) - b.diameter / 2);
+      if (worst.any && e <= worst.wall_distance) {
+        first = k, out = true;
+        break;
+      }
+    }
+    if (!out && (!worst.any || e > worst.wall_distance)) worst = {p, e, true};
   }
   return worst;
 }
@@ -141,8 +159,9 @@ Reached circuit_reaching(const eval::Pipeline& pipeline, const ReachRequest& req
     // Pushed out of each clearance it violates, re-scored after every push.
     while (left > 0) {
       --left;
-      const eval::Evaluation e = pipeline.evaluate(mold::Genome{{c}});
+      // Only feasibility is asked: the constraint stages alone, on the one decoding.
       const mold::Layout layout = mold::decode(scene, mold::Genome{{c}});
+      const eval::Evaluation e = pipeline.constraints(layout);
       if (nearest_wall(layout, request.target) >= request.better_than) break;  // pushed too far: a new start
       if (e.feasible()) return {c, request.evaluations - left};
       Vec3 shift = Vec3::Zero();

@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 #include <random>
+#include <thread>
 
 #include "../support/scratch_file.h"
 #include "mtcs/eval/pipeline.h"
@@ -234,4 +235,74 @@ TEST_CASE("pipeline: a mesh cavity gives the exact solid-cylinder clearance and 
   REQUIRE(v);
   CHECK(v->distance == 0);
   CHECK_FALSE(find(pipeline.evaluate(mold::Genome{{straight(150, 40)}}), eval::ViolationKind::BoreCavity));
+}
+
+TEST_CASE("pipeline: constraints alone are evaluate's violations, objectives skipped", "[eval]") {
+  // The reach move asks only for feasibility (Pipeline::constraints): the same violations, in
+  // the same order, and the same CV as a full evaluation, on layouts with many violations.
+  const std::string mold = GENERATE(std::string("plate_wall_distance"), std::string("gear"));
+  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/" + mold + ".yaml");
+  const mold::Scene scene(spec);
+  const eval::Pipeline pipeline(scene);
+  std::mt19937 gen(5);
+  const geometry::Box& b = scene.block_bounds();
+  std::uniform_real_distribution<double> u(0, 1);
+  int violations = 0;
+  for (int i = 0; i < 30; ++i) {
+    mold::Genome g;
+    for (int c = 0; c < 3; ++c) {
+      mold::Circuit circuit{{}, spec.drilling.diameters.front()};
+      Vec3 p(b.min.x() + u(gen) * b.size().x(), b.min.y(), b.min.z() + u(gen) * b.size().z());
+      circuit.waypoints.push_back(p);
+      p.y() = b.min.y() + u(gen) * b.size().y();
+      circuit.waypoints.push_back(p);
+      p.x() = b.min.x() + u(gen) * b.size().x();
+      circuit.waypoints.push_back(p);
+      p.y() = b.min.y();
+      circuit.waypoints.push_back(p);
+      g.circuits.push_back(circuit);
+    }
+    const mold::Layout layout = mold::decode(scene, g);
+    const eval::Evaluation full = pipeline.evaluate(layout), alone = pipeline.constraints(layout);
+    violations += int(full.violations.size());
+    REQUIRE(alone.violations.size() == full.violations.size());
+    for (std::size_t k = 0; k < full.violations.size(); ++k) {
+      CHECK(alone.violations[k].kind == full.violations[k].kind);
+      CHECK(alone.violations[k].elements == full.violations[k].elements);
+      CHECK(alone.violations[k].distance == full.violations[k].distance);
+      CHECK(alone.violations[k].amount == full.violations[k].amount);
+    }
+    CHECK(alone.violation == full.violation);
+    CHECK(alone.feasible() == full.feasible());
+    CHECK(alone.objectives == std::vector<double>(full.objectives.size(), 0.0));
+  }
+  CHECK(violations > 30);  // the layouts do violate: the comparison is not of empty lists
+}
+
+TEST_CASE("pipeline: the thermal stage's reused arrays carry nothing from one layout to the next", "[eval]") {
+  // The stage keeps its per-slot arrays per thread and the first circuit overwrites them (no
+  // fill): a layout scored after others (more circuits, other diameters, none at all) must equal
+  // the same layout scored on a thread that has seen nothing (a new thread and pipeline per
+  // layout: the arrays are per thread, not per pipeline).
+  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml");
+  const mold::Scene scene(spec);
+  const eval::Pipeline warm(scene);
+  const geometry::Box& b = scene.block_bounds();
+  auto along_y = [&](double x, double z, double d) {
+    return mold::Circuit{{{x, b.min.y(), z}, {x, b.max.y(), z}}, d};
+  };
+  const double d0 = spec.drilling.diameters.front(), d1 = spec.drilling.diameters.back();
+  const double zc = (b.min.z() + b.max.z()) / 2, xc = (b.min.x() + b.max.x()) / 2;
+  const std::vector<mold::Genome> layouts{
+      mold::Genome{{along_y(xc - 40, zc, d0), along_y(xc, zc - 20, d1), along_y(xc + 40, zc, d0)}},
+      mold::Genome{},  // no bores: every sample at the block's diagonal
+      mold::Genome{{along_y(xc + 10, zc + 5, d1)}},
+      mold::Genome{{along_y(xc - 60, zc - 10, d0), along_y(xc + 60, zc + 10, d0)}},
+      mold::Genome{},
+  };
+  for (const auto& g : layouts) {
+    std::vector<double> cold;
+    std::thread([&] { cold = eval::Pipeline(scene).evaluate(g).objectives; }).join();
+    CHECK(warm.evaluate(g).objectives == cold);
+  }
 }

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include <unistd.h>
 
@@ -17,6 +18,7 @@
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/scene.h"
 #include "mtcs/run/mold_problem.h"
+#include "mtcs/run/session.h"
 #include "run/reach_move.h"
 
 using namespace mtcs;
@@ -70,6 +72,38 @@ TEST_CASE("worst_covered_sample is the sample farthest from every flow bore", "[
   CHECK(w.point == Vec3(60, 60, 40));
   CHECK(w.wall_distance == Approx(std::sqrt(45.0 * 45 + 15 * 15) - 4).epsilon(1e-12));
   CHECK_FALSE(run::worst_covered_sample({}, layout).any);
+}
+
+TEST_CASE("worst_covered_sample's pruning picks the plain loop's sample and distance", "[run][reach]") {
+  // The search stops scoring a sample once one bore is within the worst so far; the reference is
+  // the plain loop over every sample and bore (wall above), first of equals. Samples on a coarse
+  // grid around bores at integer places give exact ties, which must resolve to the earliest.
+  const mold::MoldSpec spec = trough_spec();
+  const mold::Scene scene(spec);
+  const run::Session session(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml");
+  const run::MoldProblem problem(session.pipeline(), {}, session.config().mutation);
+  const std::vector<Vec3> samples = eval::thermal_samples(session.scene()).points;
+  std::vector<Vec3> grid;
+  for (int x = 0; x <= 120; x += 10)
+    for (int y = 0; y <= 120; y += 10) grid.emplace_back(x, y, 25);
+  opt::Rng rng(3);
+  for (int i = 0; i < 40; ++i) {
+    const mold::Layout layout = mold::decode(session.scene(), problem.genome(problem.sample(rng)));
+    const mold::Layout trough = mold::decode(scene, i % 2 ? beside() : mold::Genome{});
+    const std::vector<Vec3>& grid_points = grid;
+    for (const auto& [points, l] : {std::pair{&samples, &layout}, std::pair{&grid_points, &trough}}) {
+      run::WorstSample plain;
+      for (const Vec3& p : *points) {
+        // No bores: every sample at infinity (wall's 1e300 is only its start).
+        const double e = l->bores.empty() ? std::numeric_limits<double>::infinity() : wall(*l, p);
+        if (!plain.any || e > plain.wall_distance) plain = {p, e, true};
+      }
+      const run::WorstSample w = run::worst_covered_sample(*points, *l);
+      REQUIRE(w.any);
+      CHECK(w.point == plain.point);
+      CHECK(w.wall_distance == plain.wall_distance);  // bit for bit: the same distances, min and max
+    }
+  }
 }
 
 TEST_CASE("circuit_reaching lays a feasible circuit in the 1 mm band over the trough", "[run][reach]") {

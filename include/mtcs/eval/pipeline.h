@@ -34,6 +34,10 @@ class Pipeline {
   // Thread-safe: stages hold only data built at construction (and per-thread caches).
   Evaluation evaluate(const mold::Genome& genome, bool timed = false) const;
   Evaluation evaluate(const mold::Layout& layout, bool timed = false) const;
+  // The constraint stages alone: the violations (and CV) of evaluate, objectives left at 0. For
+  // callers that ask only whether a layout is feasible (the reach move tries circuits alone):
+  // the objective stages (the thermal proxies, the solver) are most of an evaluation's cost.
+  Evaluation constraints(const mold::Layout& layout) const;
 
   std::vector<std::string> stage_names() const;
   std::vector<std::string> objective_names() const;
@@ -45,7 +49,8 @@ class Pipeline {
  private:
   const mold::Scene& scene_;
   std::unique_ptr<DrillAccess> drill_access_;
-  std::vector<std::unique_ptr<Stage>> stages_;
+  std::vector<std::unique_ptr<Stage>> stages_;  // the objective stages first, then the constraints
+  std::size_t objective_stages_ = 0;
   std::size_t samples_ = 0;
 };
 

@@ -88,6 +88,8 @@ class RunStore {
   bool archipelago_by_reference_ = false;  // island rows carry archipelago_rank (new tables)
   struct Prepared;  // the island inserts, prepared once a connection
   std::unique_ptr<Prepared> prepared_;
+  struct RunRows;  // the run table's inserts (save), prepared once a connection
+  std::unique_ptr<RunRows> run_rows_;
 };
 
 }  // namespace mtcs::store
