@@ -100,10 +100,12 @@ SurfaceSamples sample_patch(const geometry::Box& patch, double spacing) {
   return s;
 }
 
-SurfaceSamples sample_cavity(const mold::Cavity& cavity) {
-  if (cavity.is_patch()) return sample_patch(*cavity.box, cavity.sample_spacing);
-  if (cavity.box) return sample_box(*cavity.box, cavity.sample_spacing);
-  return sample_mesh(cavity.mesh->mesh, cavity.sample_spacing);
+SurfaceSamples sample_cavity(const mold::Cavity& cavity) { return sample_cavity(cavity, cavity.sample_spacing); }
+
+SurfaceSamples sample_cavity(const mold::Cavity& cavity, double spacing) {
+  if (cavity.is_patch()) return sample_patch(*cavity.box, spacing);
+  if (cavity.box) return sample_box(*cavity.box, spacing);
+  return sample_mesh(cavity.mesh->mesh, spacing);
 }
 
 }  // namespace mtcs::eval

@@ -24,8 +24,9 @@ SurfaceSamples sample_mesh(const mesh::TriangleMesh& mesh, double spacing);
 // A patch (a flat box on a block face): a grid of cells at most `spacing` wide on the
 // rectangle, one sample at each cell's centre, the first in-plane axis (x, y, z order) fastest.
 SurfaceSamples sample_patch(const geometry::Box& patch, double spacing);
-// Whichever the cavity is, at its sample_spacing.
+// Whichever the cavity is, at its sample_spacing or at `spacing`.
 SurfaceSamples sample_cavity(const mold::Cavity& cavity);
+SurfaceSamples sample_cavity(const mold::Cavity& cavity, double spacing);
 
 // The two in-plane axes of a flat box (x, y, z order) and its normal axis.
 struct PatchAxes {

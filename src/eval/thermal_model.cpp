@@ -134,7 +134,8 @@ double cavity_flux_at(const mold::MoldSpec& spec, const Vec3& p) {
 thermal::Samples thermal_samples(const mold::Scene& scene) {
   const mold::MoldSpec& spec = scene.spec();
   if (!spec.cavity) throw std::invalid_argument("the thermal samples need a cavity");
-  const SurfaceSamples s = sample_cavity(*spec.cavity);
+  const mold::Cavity& cavity = *spec.cavity;
+  const SurfaceSamples s = sample_cavity(cavity, spec.thermal.sample_spacing.value_or(cavity.sample_spacing));
   thermal::Samples all, heated;
   for (std::size_t i = 0; i < s.size(); ++i) {
     const Vec3 p(s.x[i], s.y[i], s.z[i]);

@@ -14,6 +14,7 @@
 #include "mtcs/mesh/mesh_check.h"
 #include "mtcs/mesh/mesh_io.h"
 #include "scene_check.h"
+#include "mtcs/io/number_text.h"
 #include "mtcs/io/yaml_reader.h"
 
 namespace mtcs::mold {
@@ -358,7 +359,7 @@ Objectives parse_objectives(const YamlReader& r, const YAML::Node& n) {
 ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
   r.expect_map(n, "thermal", {"steel_conductivity", "coolant", "ambient", "adiabatic_faces", "heat_flux", "regions",
                               "polymer", "tier", "elements_per_bore", "cell_size", "objective_surface",
-                              "cavity_void"});
+                              "cavity_void", "sample_spacing"});
   constexpr double kPerM = 1e-3, kPerM2 = 1e-6;  // W/(m K) -> W/(mm K); W/m^2 -> W/mm^2
   constexpr double kCold = -273.15, kHot = 5000;  // degrees C
   ThermalSpec t;
@@ -431,6 +432,7 @@ ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
   }
   if (n["elements_per_bore"]) t.elements_per_bore = r.integer(n["elements_per_bore"], "thermal.elements_per_bore", 1, 1000);
   if (n["cell_size"]) t.cell_size = r.number(n["cell_size"], "thermal.cell_size", 1e-3, kHuge);
+  if (n["sample_spacing"]) t.sample_spacing = r.number(n["sample_spacing"], "thermal.sample_spacing", 1e-3, kHuge);
   if (n["objective_surface"]) {
     const std::string s = r.text(n["objective_surface"], "thermal.objective_surface");
     if (s == "heated") t.objective_surface = ObjectiveSurface::Heated;
@@ -503,6 +505,10 @@ MoldSpec load_mold_spec(const std::string& path) {
     s.circuits.min = std::min(s.circuits.max, default_min_circuits(s.cavity->bounds()));
   if (root["objectives"]) s.objectives = parse_objectives(r, root["objectives"]);
   if (root["thermal"]) s.thermal = parse_thermal(r, root["thermal"]);
+  // Coarser samples only: the cavity's count check then bounds the thermal set too.
+  if (s.thermal.sample_spacing && s.cavity && *s.thermal.sample_spacing < s.cavity->sample_spacing)
+    r.fail(root["thermal"]["sample_spacing"], "thermal.sample_spacing",
+           "must be at least the cavity's sample_spacing (" + io::shortest(s.cavity->sample_spacing) + " mm)");
   if (root["penalty"]) s.penalty = parse_penalty(r, root["penalty"]);
   check_scene(r, root, s);
   if (s.cavity) check_samples(r, root["cavity"], *s.cavity);

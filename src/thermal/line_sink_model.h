@@ -118,8 +118,10 @@ struct LineSinkModel::Impl {
   double heat_field(const Vec3& p) const { return heat_field(p, images); }
   double heat_field(const Vec3& p, std::span<const Image> of) const {
     double sum = 0;
+    // A region without flux (molds/plate.yaml's top face and rim) adds +-0 to the sum: skipped,
+    // the same bits at half the potentials on the plate.
     for (const HeatedTriangle& t : setting.heat_in)
-      sum += t.flux * triangle_image_potential(of, t.a, t.b, t.c, p);
+      if (t.flux != 0) sum += t.flux * triangle_image_potential(of, t.a, t.b, t.c, p);
     return sum * inv4pik;
   }
   // Field of a unit uniform loss (W/mm^2 out of the steel) over a face.

@@ -170,6 +170,34 @@ TEST_CASE("thermal model: the heated surface is the samples where heat enters", 
   CHECK(samples("cold.yaml", "thermal:\n  heat_flux: 0\n").size() == 68);
 }
 
+TEST_CASE("thermal model: thermal.sample_spacing coarsens the samples, not their area", "[eval][thermal]") {
+  // The cavity of the case above at 20 mm: x faces 2 (y) x 1 (z), y faces 1 (z) x 3 (x), z faces
+  // 3 (x) x 2 (y): 22 samples; without the top (6) and the -x face (2): 14 heated, of the same
+  // area as at 10 mm.
+  const std::string cavity = "block: {box: {min: [0, 0, 0], max: [100, 100, 50]}}\n"
+                             "cavity: {box: {min: [20, 20, 30], max: [80, 60, 36]}, sample_spacing: 10}\n"
+                             "thermal:\n  heat_flux: 20000\n"
+                             "  regions: [{box: {min: [0, 0, 35], max: [100, 100, 50]}, heat_flux: 0},\n"
+                             "            {box: {min: [0, 0, 0], max: [20, 100, 50]}, heat_flux: 0}]\n";
+  auto samples = [&](const std::string& name, const std::string& thermal) {
+    return eval::thermal_samples(mold::Scene(mold::load_mold_spec(write(name, cavity + thermal).string())));
+  };
+  auto total = [](const thermal::Samples& s) {
+    double a = 0;
+    for (double w : s.weights) a += w;
+    return a;
+  };
+  const thermal::Samples coarse = samples("coarse.yaml", "  sample_spacing: 20\n");
+  REQUIRE(coarse.size() == 14);
+  CHECK(total(coarse) == Approx(60 * 40 + 40 * 6 + 2 * 60 * 6).epsilon(1e-12));
+  for (const Vec3& p : coarse.points) CHECK((p.z() == 30 ? (p.x() == 30 || p.x() == 50 || p.x() == 70) : true));
+  CHECK(samples("all.yaml", "  sample_spacing: 20\n  objective_surface: all\n").size() == 22);
+  // The key at the cavity's spacing: the same samples, bit for bit.
+  const thermal::Samples same = samples("same.yaml", "  sample_spacing: 10\n"), fine = samples("fine.yaml", "");
+  CHECK(same.points == fine.points);
+  CHECK(same.weights == fine.weights);
+}
+
 TEST_CASE("thermal model: a mesh cavity's triangles face the melt inside the part", "[eval][thermal]") {
   write("tet.off", "OFF\n4 4 0\n0 0 0\n10 0 0\n0 10 0\n0 0 10\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
   const mold::Scene scene(mold::load_mold_spec(

@@ -71,6 +71,24 @@ TEST_CASE("thermal spec: cavity_void, ignore by default, plane on request", "[mo
   CHECK(e.column() == 16);
 }
 
+TEST_CASE("thermal spec: sample_spacing, the cavity's by default, coarser only", "[mold][thermal]") {
+  const std::string cavity = "cavity: {box: {min: [20, 20, 30], max: [80, 60, 36]}, sample_spacing: 4}\n";
+  CHECK_FALSE(load(kBlock + cavity).thermal.sample_spacing);
+  CHECK(*load(kBlock + cavity + "thermal: {sample_spacing: 11}\n").thermal.sample_spacing == 11);
+  CHECK(*load(kBlock + cavity + "thermal: {sample_spacing: 4}\n").thermal.sample_spacing == 4);
+  // Finer than the cavity's: refused at the key, naming the cavity's spacing.
+  const auto finer = error_of(kBlock + cavity + "thermal:\n  sample_spacing: 3.5\n");
+  CHECK(finer.field() == "thermal.sample_spacing");
+  CHECK(finer.line() == 4);
+  CHECK(finer.column() == 19);
+  CHECK(mentions(finer, "at least the cavity's sample_spacing (4 mm)"));
+  for (const std::string bad : {"0", "-2", "abc", "[1, 2]"}) {
+    const auto e = error_of(kBlock + cavity + "thermal:\n  sample_spacing: " + bad + "\n");
+    CHECK(e.field() == "thermal.sample_spacing");
+    CHECK(e.line() == 4);
+  }
+}
+
 TEST_CASE("thermal spec: SI values are converted to mm, W and degrees C", "[mold][thermal]") {
   const auto t = load(kBlock +
                       "thermal:\n"

@@ -33,10 +33,10 @@ std::vector<thermal::Channel> thermal_channels(const mold::Layout& layout, const
 // the default), or that of the last region holding the point.
 double cavity_flux_at(const mold::MoldSpec& spec, const geometry::Vec3& p);
 
-// The cavity-surface samples with their areas over which the temperature objectives are taken:
-// those of the tier-0 objectives (every sample) when thermal.objective_surface is `all`; with
-// `heated` (the default) only those where heat enters (cavity_flux_at > 0), or every one when
-// no sample is heated.
+// The cavity-surface samples with their areas over which the temperature objectives are taken,
+// at thermal.sample_spacing (default: the cavity's): those of the tier-0 objectives (every
+// sample) when thermal.objective_surface is `all`; with `heated` (the default) only those where
+// heat enters (cavity_flux_at > 0), or every one when no sample is heated.
 thermal::Samples thermal_samples(const mold::Scene& scene);
 
 }  // namespace mtcs::eval

@@ -178,6 +178,10 @@ struct ThermalSpec {
   ThermalTier tier = ThermalTier::T2d;
   int elements_per_bore = 4;               // M of T2/T2d
   double cell_size = 2;                    // mm, T3 (fd)
+  // mm between the samples of the temperature objectives (eval::thermal_samples); none: the
+  // cavity's sample_spacing. Coarser than the cavity's: the line sinks' work per new channel
+  // is proportional to the samples (experiments/thermal/plate_samples.md).
+  std::optional<double> sample_spacing;
   ObjectiveSurface objective_surface = ObjectiveSurface::Heated;
   // thermal.cavity_void: plane: the line-sink tiers cut the block at a box cavity's most heated
   // face (mtcs/thermal/void_plane.h); ignore (default): they see no void.
