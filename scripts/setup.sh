@@ -7,7 +7,7 @@ PACKAGES=(
   build-essential cmake ccache pkg-config
   libeigen3-dev libnlopt-cxx-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libyaml-cpp-dev libspdlog-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev
-  libsqlite3-dev libtbb-dev libfcl-dev libccd-dev libbenchmark-dev libpagmo-dev
+  libsqlite3-dev libtbb-dev libfcl-dev libccd-dev libbenchmark-dev libpagmo-dev libabsl-dev
   python3 python3-matplotlib
   clang-14 libfuzzer-14-dev
   nodejs chromium

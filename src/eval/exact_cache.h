@@ -5,12 +5,13 @@
 // bit, so a result looked up is the one a recomputation would give: a cached evaluation equals a
 // cold one exactly, whatever the thread or the order (tests/eval/incremental_test.cpp).
 
+#include <absl/container/flat_hash_map.h>
 #include <tbb/enumerable_thread_specific.h>
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <unordered_map>
+#include <cstring>
 #include <vector>
 
 #include "mtcs/geometry/exact_hash.h"
@@ -42,12 +43,22 @@ class ExactCache {
   const Value& get(const Key& key, Compute&& compute) const {
     auto& map = local_.local();
     if (const auto it = map.find(key); it != map.end()) return it->second;
-    if (map.size() >= capacity_) map.clear();
+    if (map.size() >= capacity_) {
+      map.clear();
+      map.reserve(capacity_);  // one table for the next round, not a growth by doublings
+    }
     return map.emplace(key, compute()).first->second;
   }
 
+  // How many entries this thread's cache holds: inside `compute`, the new entry's index, below
+  // the capacity (a stage may keep large values in rows of its own, reused after a start-over).
+  std::size_t entries() const { return local_.local().size(); }
+
  private:
-  using Map = std::unordered_map<Key, Value, ExactKeyOps<Key>, ExactKeyOps<Key>>;
+  // Open addressing (SwissTable): a lookup is a probe of a group of control bytes and a key
+  // compare in place. std::unordered_map's was a division by a prime and a chase through two
+  // nodes, each a cache miss in tables of megabytes, and an allocation per entry.
+  using Map = absl::flat_hash_map<Key, Value, ExactKeyOps<Key>, ExactKeyOps<Key>>;
   std::size_t capacity_;
   mutable tbb::enumerable_thread_specific<Map> local_;
 };

@@ -9,6 +9,8 @@
 #include <limits>
 #include <memory>
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include "mtcs/mold/decoder.h"
 #include "exact_cache.h"
 #include "stages.h"
@@ -90,7 +92,7 @@ class ThermalStage final : public Stage {
       const int circuit = layout.bores[b].circuit;
       while (b < layout.bores.size() && layout.bores[b].circuit == circuit) ++b;
       const double r = layout.bores[first].diameter / 2, t = target_.at(2 * r);
-      const double* e = circuit_distances(layout, first, b, r).get();
+      const double* e = circuit_distances(layout, first, b, r);
       if (first == 0)
         take_first(e, t, no_bore_, target_.at(0), best.data(), target.data(), slots);
       else
@@ -116,8 +118,7 @@ class ThermalStage final : public Stage {
  private:
   // e_i to the nearest bore of one circuit (bores [first, last) of the layout, radius r), per
   // slot. Bores of one circuit share a radius: squared distances are minimised, one root per sample.
-  const std::unique_ptr<double[]>& circuit_distances(const mold::Layout& layout, std::size_t first,
-                                                     std::size_t last, double r) const {
+  const double* circuit_distances(const mold::Layout& layout, std::size_t first, std::size_t last, double r) const {
     static thread_local std::vector<double> key;  // per thread: a lookup that hits allocates nothing
     key.assign(1, r);
     for (std::size_t b = first; b < last; ++b) {
@@ -135,8 +136,11 @@ class ThermalStage final : public Stage {
       for (std::size_t b = first; b < last; ++b) segments.push_back({layout.bores[b].flow_start, layout.bores[b].flow_end});
       near2.resize(slots);
       tiles_.nearest_squared(segments.data(), segments.data() + segments.size(), near2.data());
-      auto e = std::make_unique_for_overwrite<double[]>(slots);
-      wall_distances(near2.data(), r, e.get(), slots);
+      // The entry's own row of this thread's rows (a cache that starts over reuses them).
+      std::vector<double>& rows = rows_.local();
+      if (rows.empty()) rows.resize(kCircuits * slots);
+      double* e = rows.data() + circuits_.entries() * slots;
+      wall_distances(near2.data(), r, e, slots);
       return e;
     });
   }
@@ -147,8 +151,12 @@ class ThermalStage final : public Stage {
   double no_bore_;      // e_i without any bore: the block's diagonal
   TiledSamples tiles_;  // relative to the block's corner
   int uniformity_slot_ = -1, worst_slot_ = -1;
-  // Per thread, by exact geometry: a child's unchanged circuits are not recomputed.
-  ExactCache<std::vector<double>, std::unique_ptr<double[]>> circuits_{256};
+  // Per thread, by exact geometry: a child's unchanged circuits are not recomputed. The values
+  // point into rows allocated once per thread (a column is ~18 kB: a malloc and free of that
+  // size per new circuit was ~10 % of an ES run on the plate).
+  static constexpr std::size_t kCircuits = 256;
+  ExactCache<std::vector<double>, const double*> circuits_{kCircuits};
+  mutable tbb::enumerable_thread_specific<std::vector<double>> rows_;
 };
 
 }  // namespace

@@ -1,8 +1,8 @@
 #include "mtcs/run/mold_problem.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 
 #include "aim_bores.h"
 #include "holes.h"
@@ -380,10 +380,16 @@ opt::Score MoldProblem::score(const eval::Pipeline& pipeline, const opt::Genotyp
   for (const auto& v : e.violations) {
     if (!detail.empty()) detail += "; ";
     detail += eval::to_string(v.kind);
-    for (const auto& el : v.elements) detail += ' ' + el;
+    for (const auto& el : v.elements) (detail += ' ') += el;
+    // printf's " %.6g/%.6g" (to_chars with a precision is specified as printf's conversion),
+    // without its format parsing and locale: this runs for every violation of every child.
     char num[64];
-    std::snprintf(num, sizeof num, " %.6g/%.6g", v.distance, v.margin);
-    detail += num;
+    char* end = num;
+    *end++ = ' ';
+    end = std::to_chars(end, num + sizeof num, v.distance, std::chars_format::general, 6).ptr;
+    *end++ = '/';
+    end = std::to_chars(end, num + sizeof num, v.margin, std::chars_format::general, 6).ptr;
+    detail.append(num, end);
   }
   return {e.objectives, e.violation, e.feasible(), eval::scalar_fitness(e, ranking_, weights_), std::move(detail)};
 }

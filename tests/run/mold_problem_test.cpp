@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "mtcs/run/mold_problem.h"
 #include "mtcs/eval/pipeline.h"
@@ -125,4 +127,30 @@ TEST_CASE("MoldProblem blends the hole coordinates of parents that share a circu
     const auto w = problem.genome(problem.recombine(a, problem.encode(gc), rng)).circuits.at(0).waypoints;
     CHECK((w == ga.circuits[0].waypoints || w == gc.circuits[0].waypoints));
   }
+}
+
+TEST_CASE("MoldProblem's violation detail is printf's %.6g of each distance and margin", "[run][detail]") {
+  // The run store keeps this text; it is written without printf (it is built for every child).
+  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml");
+  const mold::Scene scene(spec);
+  const eval::Pipeline pipeline(scene);
+  const run::MoldProblem problem(pipeline, {}, {});
+  opt::Rng rng(20261128);
+  int violations = 0;
+  for (int k = 0; k < 200; ++k) {
+    const opt::Genotype g = problem.sample(rng);
+    const eval::Evaluation e = pipeline.evaluate(problem.genome(g));
+    std::string expected;
+    for (const auto& v : e.violations) {
+      if (!expected.empty()) expected += "; ";
+      expected += eval::to_string(v.kind);
+      for (const auto& el : v.elements) expected += ' ' + el;
+      char num[64];
+      std::snprintf(num, sizeof num, " %.6g/%.6g", v.distance, v.margin);
+      expected += num;
+      ++violations;
+    }
+    CHECK(problem.evaluate(g).detail == expected);
+  }
+  CHECK(violations > 100);
 }
