@@ -9,6 +9,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include <tbb/parallel_for.h>
+
 #include "line_sink_model.h"
 
 namespace mtcs::thermal {
@@ -16,6 +18,25 @@ namespace mtcs::thermal {
 namespace {
 
 constexpr double kInf = kInfiniteFilm;
+
+// f(p, values) for every node p of g, with the node's g.fields values to write; rows of nodes in
+// parallel. Each node's values are its own: the table is the same whatever the threads. The
+// tables cost nodes x heated triangles x images triangle potentials (seconds on a large block).
+template <class F>
+void fill_nodes(FieldGrid& g, const F& f) {
+  const int rows = g.nodes[1] * g.nodes[2];
+  tbb::parallel_for(0, rows, [&](int r) {
+    const int j = r % g.nodes[1], k = r / g.nodes[1];
+    double* values = g.values.data() + std::size_t(r) * std::size_t(g.nodes[0]) * std::size_t(g.fields);
+    for (int i = 0; i < g.nodes[0]; ++i, values += g.fields) f(g.origin + g.step.cwiseProduct(Vec3(i, j, k)), values);
+  });
+}
+
+// f(i) for i in [0, n), in parallel: per-sample fields, each written by its own index.
+template <class F>
+void for_each_index(std::size_t n, const F& f) {
+  tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) { f(i); });
+}
 
 // The six faces of a box as rectangles (two triangles each), in BlockFace order.
 std::array<std::array<Vec3, 4>, 6> face_corners(const Box& b) {
@@ -211,10 +232,10 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
   }
   m.far_samples.resize(m.n_samples, 4);
   m.far_samples_fixed.resize(m.n_samples, 4);
-  for (std::size_t s = 0; s < m.n_samples; ++s) {
+  for_each_index(m.n_samples, [&](std::size_t s) {
     m.far_samples.row(s) = m.far_kernel(samples.points[s], sample_far).transpose();
     m.far_samples_fixed.row(s) = m.far_kernel(samples.points[s]).transpose();
-  }
+  });
   m.far_face_means = MatrixXd::Zero(nf, 4);
   m.far_face_means_fixed = MatrixXd::Zero(nf, 4);
   for (std::size_t f = 0; f < nf; ++f) {
@@ -233,13 +254,9 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     g.nodes = {cells + 1, cells + 1, cells + 1};
     g.fields = int(nf);
     g.values.resize(std::size_t(cells + 1) * (cells + 1) * (cells + 1) * nf);
-    std::size_t n = 0;
-    for (int k = 0; k <= cells; ++k)
-      for (int j = 0; j <= cells; ++j)
-        for (int i = 0; i <= cells; ++i) {
-          const Vec3 p = box.min + g.step.cwiseProduct(Vec3(i, j, k));
-          for (std::size_t f = 0; f < nf; ++f) g.values[n++] = m.face_field(m.faces[f], p);
-        }
+    fill_nodes(g, [&](const Vec3& p, double* v) {
+      for (std::size_t f = 0; f < nf; ++f) v[f] = m.face_field(m.faces[f], p);
+    });
   }
   // Tabulated fields over the block: `heat_grid` mm, at most kCoarseCells per axis (a large
   // block gets a coarser spacing). Built once: nodes x heated triangles x images triangle
@@ -259,15 +276,11 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     g.values.resize(std::size_t(g.nodes[0]) * g.nodes[1] * g.nodes[2] * fields);
   };
   auto fill_heat = [&](FieldGrid& g) {  // per node: the whole field, the far images' part
-    std::size_t n = 0;
-    for (int k = 0; k < g.nodes[2]; ++k)
-      for (int j = 0; j < g.nodes[1]; ++j)
-        for (int i = 0; i < g.nodes[0]; ++i) {
-          const Vec3 p = g.origin + g.step.cwiseProduct(Vec3(i, j, k));
-          const double far = m.heat_field(p, m.far_heat_images);
-          g.values[n++] = m.heat_field(p, m.near_heat_images) + far;
-          g.values[n++] = far;
-        }
+    fill_nodes(g, [&](const Vec3& p, double* v) {
+      const double far = m.heat_field(p, m.far_heat_images);
+      v[0] = m.heat_field(p, m.near_heat_images) + far;
+      v[1] = far;
+    });
   };
   // Near images: those whose heated triangles come within 3 cells (of the grid interpolating
   // there) of heat_near; the others are smooth there and join the tables.
@@ -291,13 +304,10 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
   if (!m.far_images.empty() && grids && !kept) {
     FieldGrid& g = m.far_grid;
     grid_over(g, box, 4, kCoarseCells);
-    std::size_t n = 0;
-    for (int k = 0; k < g.nodes[2]; ++k)
-      for (int j = 0; j < g.nodes[1]; ++j)
-        for (int i = 0; i < g.nodes[0]; ++i) {
-          const Eigen::Vector4d v = m.far_kernel(box.min + g.step.cwiseProduct(Vec3(i, j, k)));
-          for (int c = 0; c < 4; ++c) g.values[n++] = v[c];
-        }
+    fill_nodes(g, [&](const Vec3& p, double* v) {
+      const Eigen::Vector4d k = m.far_kernel(p);
+      for (int c = 0; c < 4; ++c) v[c] = k[c];
+    });
   }
   if (!setting.heat_in.empty() && grids && !kept) {
     Box bounds = Box::empty();
@@ -326,10 +336,10 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     keep_tables(key, {m.far_grid, m.heat_grid, m.heat_fine, m.heat_fine_box, m.heat_near, m.near_heat_images, m.far_heat_images});
   m.heat_samples.resize(m.n_samples);
   m.face_samples.resize(m.n_samples, nf);
-  for (std::size_t s = 0; s < m.n_samples; ++s) {
+  for_each_index(m.n_samples, [&](std::size_t s) {
     m.heat_samples[s] = m.heat_field(samples.points[s]);
     for (std::size_t f = 0; f < nf; ++f) m.face_samples(s, f) = m.face_field(m.faces[f], samples.points[s]);
-  }
+  });
   m.heat_face_means.resize(nf);
   m.face_face_means.resize(nf, nf);
   for (std::size_t f = 0; f < nf; ++f) {
