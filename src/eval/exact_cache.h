@@ -47,7 +47,10 @@ class ExactCache {
       map.clear();
       map.reserve(capacity_);  // one table for the next round, not a growth by doublings
     }
-    return map.emplace(key, compute()).first->second;
+    // Key and value made before the insert: a flat table's slot must not see a throwing copy.
+    Key k(key);
+    Value v = compute();
+    return map.emplace(std::move(k), std::move(v)).first->second;
   }
 
   // How many entries this thread's cache holds: inside `compute`, the new entry's index, below

@@ -1,7 +1,6 @@
 #include "mtcs/run/mold_problem.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 
 #include "aim_bores.h"
@@ -9,6 +8,7 @@
 #include "mtcs/eval/thermal_model.h"
 #include "mtcs/mold/decoder.h"
 #include "reach_move.h"
+#include "violation_text.h"
 
 namespace mtcs::run {
 
@@ -381,15 +381,10 @@ opt::Score MoldProblem::score(const eval::Pipeline& pipeline, const opt::Genotyp
     if (!detail.empty()) detail += "; ";
     detail += eval::to_string(v.kind);
     for (const auto& el : v.elements) (detail += ' ') += el;
-    // printf's " %.6g/%.6g" (to_chars with a precision is specified as printf's conversion),
-    // without its format parsing and locale: this runs for every violation of every child.
-    char num[64];
-    char* end = num;
-    *end++ = ' ';
-    end = std::to_chars(end, num + sizeof num, v.distance, std::chars_format::general, 6).ptr;
-    *end++ = '/';
-    end = std::to_chars(end, num + sizeof num, v.margin, std::chars_format::general, 6).ptr;
-    detail.append(num, end);
+    detail += ' ';
+    append_general6(detail, v.distance);
+    detail += '/';
+    append_general6(detail, v.margin);
   }
   return {e.objectives, e.violation, e.feasible(), eval::scalar_fitness(e, ranking_, weights_), std::move(detail)};
 }

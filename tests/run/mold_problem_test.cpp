@@ -6,11 +6,13 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "mtcs/run/mold_problem.h"
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/mold/scene.h"
+#include "run/violation_text.h"
 
 using namespace mtcs;
 
@@ -153,4 +155,19 @@ TEST_CASE("MoldProblem's violation detail is printf's %.6g of each distance and 
     CHECK(problem.evaluate(g).detail == expected);
   }
   CHECK(violations > 100);
+}
+
+TEST_CASE("append_general6 writes what printf's %.6g writes", "[run][detail]") {
+  const double values[] = {0.0, -0.0, 1.0, 2.5, 999999.5, 9999995.0, 1e6, 1e-5, 1.234565e-5, 0.1 + 0.2,
+                           -123.456789, 6.02214076e23, std::numeric_limits<double>::denorm_min(),
+                           std::numeric_limits<double>::min(), -std::numeric_limits<double>::max(),
+                           std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                           std::numeric_limits<double>::quiet_NaN(), -std::numeric_limits<double>::quiet_NaN()};
+  for (const double x : values) {
+    char expected[64];
+    std::snprintf(expected, sizeof expected, "%.6g", x);
+    std::string got = "x";
+    run::append_general6(got, x);
+    CHECK(got == "x" + std::string(expected));
+  }
 }
