@@ -152,8 +152,8 @@ class ThermalStage final : public Stage {
   TiledSamples tiles_;  // relative to the block's corner
   int uniformity_slot_ = -1, worst_slot_ = -1;
   // Per thread, by exact geometry: a child's unchanged circuits are not recomputed. The values
-  // point into rows allocated once per thread (a column is ~18 kB: a malloc and free of that
-  // size per new circuit was ~10 % of an ES run on the plate).
+  // point into rows allocated once per thread (a column is ~18 kB on the plate: no malloc and
+  // free of that size per new circuit, nor per start-over of the cache).
   static constexpr std::size_t kCircuits = 256;
   ExactCache<std::vector<double>, const double*> circuits_{kCircuits};
   mutable tbb::enumerable_thread_specific<std::vector<double>> rows_;
