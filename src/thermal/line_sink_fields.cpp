@@ -134,10 +134,9 @@ void element_fields(const ChannelAxis& axis, const Vec3& s, double* phi, double*
   }
 }
 
-double triangle_image_potential(std::span<const Image> images, const Vec3& a, const Vec3& b,
-                                const Vec3& c, const Vec3& s) {
+double triangle_image_potential(std::span<const Image> images, const TriangleSource& triangle, const Vec3& s) {
   double sum = 0;
-  for (const Image& g : images) sum += g.sign * triangle_potential(a, b, c, g.mult.cwiseProduct(s) + g.offset);
+  for (const Image& g : images) sum += g.sign * triangle.potential(g.mult.cwiseProduct(s) + g.offset);
   return sum;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "mtcs/thermal/model.h"
+#include "segment_potential.h"
 
 namespace mtcs::thermal {
 
@@ -73,7 +74,6 @@ void element_fields_float_slots(const ChannelAxis& axis, const Vec3& origin, int
 void accumulate_float_columns(const float* cols, std::size_t n, int ncols, const double* x, double* T);
 
 // The potential of a uniform unit source on a triangle, summed over the images at s.
-double triangle_image_potential(std::span<const Image> images, const Vec3& a, const Vec3& b,
-                                const Vec3& c, const Vec3& s);
+double triangle_image_potential(std::span<const Image> images, const TriangleSource& triangle, const Vec3& s);
 
 }  // namespace mtcs::thermal

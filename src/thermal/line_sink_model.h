@@ -54,6 +54,7 @@ struct ConvectiveFace {
   double film = 0, ambient = 0;
   double area = 0, convective_area = 0;
   std::array<Vec3, 4> corners;
+  std::array<TriangleSource, 2> halves;  // corners 0 1 2 and 0 2 3
   std::vector<Vec3> cool;           // the grid points off the heated triangles
   Vec3 center;
 };
@@ -115,20 +116,23 @@ struct LineSinkModel::Impl {
   VectorXd heat_face_means;                  // per face: heat input's field, face mean
   MatrixXd face_face_means;                  // faces x faces
 
+  // The heated triangles with a flux (a region without flux, molds/plate.yaml's top face and
+  // rim, adds +-0 to the sum: left out, the same bits at half the potentials on the plate).
+  struct HeatSource {
+    TriangleSource triangle;
+    double flux = 0;  // W/mm^2
+  };
+  std::vector<HeatSource> heat_sources;
   double heat_field(const Vec3& p) const { return heat_field(p, images); }
   double heat_field(const Vec3& p, std::span<const Image> of) const {
     double sum = 0;
-    // A region without flux (molds/plate.yaml's top face and rim) adds +-0 to the sum: skipped,
-    // the same bits at half the potentials on the plate.
-    for (const HeatedTriangle& t : setting.heat_in)
-      if (t.flux != 0) sum += t.flux * triangle_image_potential(of, t.a, t.b, t.c, p);
+    for (const HeatSource& h : heat_sources) sum += h.flux * triangle_image_potential(of, h.triangle, p);
     return sum * inv4pik;
   }
   // Field of a unit uniform loss (W/mm^2 out of the steel) over a face.
   double face_field(const ConvectiveFace& f, const Vec3& p) const {
-    const auto& c = f.corners;
-    return -inv4pik * (triangle_image_potential(images, c[0], c[1], c[2], p) +
-                       triangle_image_potential(images, c[0], c[2], c[3], p));
+    return -inv4pik * (triangle_image_potential(images, f.halves[0], p) +
+                       triangle_image_potential(images, f.halves[1], p));
   }
 
 

@@ -161,6 +161,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     m.heat_in += q;
     m.heat_moments[0] += q;
     m.heat_moments.tail<3>() += q * ((t.a + t.b + t.c) / 3 - m.center);
+    if (t.flux != 0) m.heat_sources.push_back({TriangleSource(t.a, t.b, t.c), t.flux});
   }
 
   // Convective faces: one unknown uniform loss each, collocated on a grid of the face's part
@@ -175,6 +176,8 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     cf.film = fc.film;
     cf.ambient = fc.ambient;
     cf.corners = corners[f];
+    cf.halves = {TriangleSource(cf.corners[0], cf.corners[1], cf.corners[2]),
+                 TriangleSource(cf.corners[0], cf.corners[2], cf.corners[3])};
     const int axis = f / 2;
     const double plane = (f % 2) ? box.max[axis] : box.min[axis];
     cf.area = (corners[f][1] - corners[f][0]).norm() * (corners[f][3] - corners[f][0]).norm();

@@ -38,56 +38,59 @@ double segment_potential(const Vec3& a, const Vec3& b, const Vec3& s) {
   return segment_field(a, b, s).phi;
 }
 
-namespace {
-
-// log((R+ + l+) / (R- + l-)) of one edge, R = sqrt(R0^2 + l^2): the sums are formed only where
-// no cancellation happens ((R + l)(R - l) = R0^2 turns a negative l into a positive one).
-double edge_log(double l_minus, double l_plus, double R_minus, double R_plus, double R0) {
-  if (l_minus >= 0) return std::log((R_plus + l_plus) / (R_minus + l_minus));
-  if (l_plus <= 0) return std::log((R_minus - l_minus) / (R_plus - l_plus));
-  return std::asinh(l_plus / R0) - std::asinh(l_minus / R0);
+TriangleSource::TriangleSource(const Vec3& a, const Vec3& b, const Vec3& c) : corner_{a, b, c} {
+  const Vec3 normal_area = (b - a).cross(c - a);
+  twice_area_ = normal_area.norm();
+  if (twice_area_ == 0) return;
+  normal_ = normal_area / twice_area_;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 edge = corner_[(i + 1) % 3] - corner_[i];
+    length_[i] = edge.norm();
+    if (length_[i] == 0) continue;
+    along_[i] = edge / length_[i];
+    out_[i] = along_[i].cross(normal_);
+  }
 }
 
-}  // namespace
+double TriangleSource::potential(const Vec3& s) const {
+  // Wilton et al. (1984) / Graglia (1993): at height d over the triangle's plane, the sum over
+  // the edges of P0 log((R+ + l+)/(R- + l-)) minus |d| times the solid angle the triangle
+  // subtends at s. The solid angle in one atan2 (Van Oosterom & Strackee 1983) rather than two
+  // atans per edge: half the time, the same accuracy (relative 1e-7 at worst, near an edge's
+  // line, as before; checked against long double).
+  if (twice_area_ == 0) return 0;
+  const Vec3 corner[3] = {corner_[0] - s, corner_[1] - s, corner_[2] - s};
+  const double d = -corner[0].dot(normal_);
+  const double ad = std::abs(d);
+  const double r[3] = {corner[0].norm(), corner[1].norm(), corner[2].norm()};
+  double sum_log = 0;
+  for (int i = 0; i < 3; ++i) {
+    if (length_[i] == 0) continue;
+    const int j = (i + 1) % 3;
+    const double P0 = corner[i].dot(out_[i]);  // > 0 when s projects on the inner side
+    const double l_minus = corner[i].dot(along_[i]), l_plus = corner[j].dot(along_[i]);
+    const double R0sq = P0 * P0 + d * d;
+    // s on this edge's line (a corner of the triangle, or on an edge) to rounding: the term
+    // vanishes (P0 log(1/P0) -> 0); left in, a corner's log(x / 0) would give inf or NaN.
+    if (P0 == 0 || R0sq <= 1e-24 * length_[i] * length_[i]) continue;
+    // (R+ + l+)/(R- + l-), each sum formed only where it does not cancel: (R + l)(R - l) = R0^2
+    // turns a negative l's sum into a quotient.
+    double ratio;
+    if (l_minus >= 0) ratio = (r[j] + l_plus) / (r[i] + l_minus);
+    else if (l_plus <= 0) ratio = (r[i] - l_minus) / (r[j] - l_plus);
+    else ratio = (r[j] + l_plus) * (r[i] - l_minus) / R0sq;
+    sum_log += P0 * std::log(ratio);
+  }
+  if (ad == 0) return sum_log;
+  // tan(omega / 2) = |R1 . (R2 x R3)| / (r1 r2 r3 + (R1.R2) r3 + (R1.R3) r2 + (R2.R3) r1), and
+  // the triple product is |d| times twice the area, free of cancellation.
+  const double den = r[0] * r[1] * r[2] + corner[0].dot(corner[1]) * r[2] + corner[0].dot(corner[2]) * r[1] +
+                     corner[1].dot(corner[2]) * r[0];
+  return sum_log - ad * 2 * std::atan2(ad * twice_area_, den);
+}
 
 double triangle_potential(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& s) {
-  // Wilton et al. (1984) / Graglia (1993): for the projection p of s on the plane at height d,
-  // sum over the edges of P0 log((R+ + l+)/(R- + l-)) - |d| (atan terms: the solid angle).
-  const Vec3 normal_area = (b - a).cross(c - a);
-  const double twice_area = normal_area.norm();
-  if (twice_area == 0) return 0;
-  const Vec3 n = normal_area / twice_area;
-  const double d = (s - a).dot(n);
-  const double ad = std::abs(d);
-  const Vec3 p = s - d * n;
-  const Vec3 corners[3] = {a, b, c};
-  double sum_log = 0, sum_angle = 0;
-  for (int i = 0; i < 3; ++i) {
-    const Vec3& p0 = corners[i];
-    const Vec3& p1 = corners[(i + 1) % 3];
-    const Vec3 edge = p1 - p0;
-    const double edge_length = edge.norm();
-    if (edge_length == 0) continue;
-    const Vec3 t = edge / edge_length;
-    const Vec3 m = t.cross(n);                  // in-plane, pointing out of the triangle
-    const double P0 = (p0 - p).dot(m);          // > 0 when p is on the inner side of the edge
-    const double l_minus = (p0 - p).dot(t);
-    const double l_plus = (p1 - p).dot(t);
-    const double R0sq = P0 * P0 + d * d;
-    const double R_minus = (s - p0).norm();
-    const double R_plus = (s - p1).norm();
-    // s on this edge's line (a corner of the triangle, or on an edge) to rounding: P0 and d
-    // vanish and so does the term (P0 log(1/P0) -> 0); left in, rounding turns a corner's
-    // log(x / 0) into inf, and two such edges into NaN.
-    if (R0sq <= 1e-24 * edge_length * edge_length) continue;
-    const double R0 = std::sqrt(R0sq);
-    if (P0 != 0) sum_log += P0 * edge_log(l_minus, l_plus, R_minus, R_plus, R0);
-    if (ad != 0 && P0 != 0) {
-      sum_angle += std::atan(P0 * l_plus / (R0sq + ad * R_plus)) -
-                   std::atan(P0 * l_minus / (R0sq + ad * R_minus));
-    }
-  }
-  return sum_log - ad * sum_angle;
+  return TriangleSource(a, b, c).potential(s);
 }
 
 }  // namespace mtcs::thermal

@@ -26,8 +26,26 @@ struct SegmentField {
 SegmentField segment_field(const Vec3& a, const Vec3& b, const Vec3& s);
 
 // Integral over the triangle of dA / |s - y|: the potential of a unit uniform surface source.
-// Closed form (edge sums of asinh-type logs and a solid-angle term), finite everywhere,
-// including points in the triangle's plane and on the triangle; 0 for a degenerate triangle.
+// Closed form (edge sums of logs and a solid-angle term), finite everywhere, including points
+// in the triangle's plane and on the triangle; 0 for a degenerate triangle.
 double triangle_potential(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& s);
+
+// The same for one triangle at many points: its plane and edges are taken once.
+class TriangleSource {
+ public:
+  TriangleSource() = default;  // degenerate: potential 0 everywhere
+  TriangleSource(const Vec3& a, const Vec3& b, const Vec3& c);
+  double potential(const Vec3& s) const;
+
+ private:
+  Vec3 corner_[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+  Vec3 normal_ = Vec3::Zero();
+  // Per edge i (corner i to corner i + 1): unit direction, in-plane normal pointing out of the
+  // triangle, length.
+  Vec3 along_[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+  Vec3 out_[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+  double length_[3] = {0, 0, 0};
+  double twice_area_ = 0;
+};
 
 }  // namespace mtcs::thermal

@@ -163,6 +163,64 @@ TEST_CASE("triangle potential: a square's centre, the closed form 8 a asinh(1)")
         Approx(triangle_potential(p00, p10, p11, Vec3(1, 2, 0.5))).epsilon(1e-14));
 }
 
+// Wilton's form with the solid angle as two atans per edge (the kernel's form before 2026-11-29):
+// an independent check of the single atan2 (Van Oosterom & Strackee) the kernel takes now.
+double triangle_potential_per_edge(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& s) {
+  const Vec3 normal_area = (b - a).cross(c - a);
+  const Vec3 n = normal_area.normalized();
+  const double d = (s - a).dot(n), ad = std::abs(d);
+  const Vec3 p = s - d * n;
+  const Vec3 corners[3] = {a, b, c};
+  double sum_log = 0, sum_angle = 0;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 &p0 = corners[i], &p1 = corners[(i + 1) % 3];
+    const Vec3 t = (p1 - p0).normalized(), m = t.cross(n);
+    const double P0 = (p0 - p).dot(m), l_minus = (p0 - p).dot(t), l_plus = (p1 - p).dot(t);
+    const double R0sq = P0 * P0 + d * d, R_minus = (s - p0).norm(), R_plus = (s - p1).norm();
+    if (R0sq <= 1e-24 * (p1 - p0).squaredNorm() || P0 == 0) continue;
+    const double R0 = std::sqrt(R0sq);
+    double lg;
+    if (l_minus >= 0) lg = std::log((R_plus + l_plus) / (R_minus + l_minus));
+    else if (l_plus <= 0) lg = std::log((R_minus - l_minus) / (R_plus - l_plus));
+    else lg = std::asinh(l_plus / R0) - std::asinh(l_minus / R0);
+    sum_log += P0 * lg;
+    if (ad != 0)
+      sum_angle += std::atan(P0 * l_plus / (R0sq + ad * R_plus)) - std::atan(P0 * l_minus / (R0sq + ad * R_minus));
+  }
+  return sum_log - ad * sum_angle;
+}
+
+TEST_CASE("triangle potential: the one-atan2 solid angle against two atans per edge") {
+  // Random triangles and points: above, 1e-9 off the plane, near an edge's line, far, offset by
+  // 1e4; sizes over six decades. Both forms agree to 1e-7 relative at worst (near an edge's line,
+  // where both lose the same digits), 1e-12 typically.
+  std::mt19937_64 rng(20261129);
+  std::uniform_real_distribution<double> u(-1, 1);
+  double worst = 0;
+  std::vector<double> errors;
+  for (int k = 0; k < 20000; ++k) {
+    Vec3 a(u(rng), u(rng), u(rng) * 0.1), b(u(rng), u(rng), u(rng) * 0.1), c(u(rng), u(rng), u(rng) * 0.1);
+    Vec3 s(u(rng), u(rng), u(rng));
+    const Vec3 n = (b - a).cross(c - a).normalized();
+    switch (k % 5) {
+      case 1: s -= (s - a).dot(n) * n - 1e-9 * u(rng) * n; break;     // in the plane, nearly
+      case 2: s = a + (b - a) * (0.5 + u(rng)) + 1e-6 * u(rng) * n; break;  // near an edge's line
+      case 3: s *= 100; break;
+      case 4: for (Vec3* v : {&a, &b, &c, &s}) *v += Vec3(1e4, -3e3, 50); break;
+    }
+    const double scale = std::pow(10.0, 3 * u(rng));
+    a *= scale, b *= scale, c *= scale, s *= scale;
+    const double mine = triangle_potential(a, b, c, s), ref = triangle_potential_per_edge(a, b, c, s);
+    REQUIRE(std::isfinite(mine));
+    const double e = std::abs(mine - ref) / std::abs(ref);
+    worst = std::max(worst, e);
+    errors.push_back(e);
+  }
+  std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
+  CHECK(worst < 3e-7);
+  CHECK(errors[errors.size() / 2] < 1e-13);
+}
+
 // The float slot kernel alone (hidden: a measurement): 720 targets x 6 image slots, 4 elements.
 TEST_CASE("element fields: float slot kernel, best time", "[.bench]") {
   using namespace mtcs::thermal;

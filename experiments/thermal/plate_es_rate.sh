@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Issue 11's loop target on molds/plate.yaml (physics objectives, T2d): the ES run's own
+# evaluations per second on one thread (the model's build excluded: the run's figure starts
+# after it), old binary against new, alternating; and the user seconds of the whole command
+# (the build included). Seeds 1-3, 20 000 evaluations.
+# Prints CSV: round,binary,seed,evaluations,run_seconds,evaluations_per_second,user_seconds,load1
+# usage: bash experiments/thermal/plate_es_rate.sh OLD_MTCS NEW_MTCS [rounds] [evaluations]
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+old=$1 new=$2 rounds=${3:-2} budget=${4:-20000}
+out=$(mktemp -d)
+echo "round,binary,seed,evaluations,run_seconds,evaluations_per_second,user_seconds,load1"
+for r in $(seq 1 "$rounds"); do
+  for s in 1 2 3; do
+    for b in old new; do
+      bin=$old; [ "$b" = new ] && bin=$new
+      rm -rf "$out/run"
+      /usr/bin/time -f "%U" -o "$out/user" nice -n 5 "$bin" optimize molds/plate.yaml --out "$out/run" --seed "$s" \
+        --threads 1 --evaluations "$budget" > "$out/log" 2>&1
+      line=$(grep "feasible best\|best layout" "$out/log" | tail -1)
+      evals=$(echo "$line" | sed -E 's/.* ([0-9]+) evaluations in ([0-9.]+) s.*/\1/')
+      secs=$(echo "$line" | sed -E 's/.* ([0-9]+) evaluations in ([0-9.]+) s.*/\2/')
+      rate=$(python3 -c "print(round($evals / $secs))")
+      echo "$r,$b,$s,$evals,$secs,$rate,$(tail -1 "$out/user"),$(cut -d' ' -f1 /proc/loadavg)"
+    done
+  done
+done
+rm -rf "$out"
