@@ -125,7 +125,9 @@ std::map<std::string, double> stage_split(const eval::Pipeline& pipeline, const 
 
 int bench_evaluate_rows(const std::string& mold_path, int threads, int evaluations, int circuits, int bores,
                         std::uint64_t seed, bool mutations, const std::string& config) {
-  const run::Session session(mold_path, run::RunOverrides{.config = config});
+  run::RunOverrides overrides;
+  overrides.config = config;
+  const run::Session session(mold_path, overrides);
   const mold::Scene& scene = session.scene();
   // Every pass gets layouts no earlier pass evaluated: the stages' caches start as cold for
   // random layouts as in a run, and hold the parents for children.
