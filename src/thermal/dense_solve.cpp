@@ -25,38 +25,47 @@ bool has_avx2_fma() {
   return yes;
 }
 
-// Gaussian elimination with partial pivoting (the pivots of Eigen's partialPivLu).
-VectorXd solve_unblocked(MatrixXd& A, VectorXd b) {
-  const Index n = A.rows();
-  for (Index k = 0; k < n; ++k) {
-    Index p = k;
-    double biggest = std::abs(A(k, k));
-    for (Index i = k + 1; i < n; ++i)
-      if (std::abs(A(i, k)) > biggest) biggest = std::abs(A(i, k)), p = i;
-    if (biggest == 0) continue;  // singular: the solution gets inf/NaN, as Eigen's would
-    if (p != k) {
-      A.row(k).swap(A.row(p));
-      std::swap(b[k], b[p]);
-    }
-    double* ck = &A(0, k);
-    const double inv = 1 / ck[k];
-    for (Index i = k + 1; i < n; ++i) ck[i] *= inv;
-    for (Index j = k + 1; j < n; ++j) {
-      double* cj = &A(0, j);
-      const double akj = cj[k];
-      if (akj == 0) continue;
-      for (Index i = k + 1; i < n; ++i) cj[i] -= ck[i] * akj;
-    }
-    const double bk = b[k];
-    for (Index i = k + 1; i < n; ++i) b[i] -= ck[i] * bk;
-  }
-  for (Index k = n - 1; k >= 0; --k) {
-    const double* ck = &A(0, k);
-    b[k] /= ck[k];
-    const double bk = b[k];
-    for (Index i = 0; i < k; ++i) b[i] -= ck[i] * bk;
-  }
+// Gaussian elimination with partial pivoting (the pivots of Eigen's partialPivLu), in place on
+// column-major storage. Compiled twice (below): the rank-1 updates are the whole cost, and this
+// build's baseline is SSE2 without FMA.
+#define MTCS_UNBLOCKED_BODY                                                           \
+  const Index n = A.rows();                                                           \
+  double* a = A.data();                                                               \
+  for (Index k = 0; k < n; ++k) {                                                     \
+    double* ck = a + k * n;                                                           \
+    Index p = k;                                                                      \
+    double biggest = std::abs(ck[k]);                                                 \
+    for (Index i = k + 1; i < n; ++i)                                                 \
+      if (std::abs(ck[i]) > biggest) biggest = std::abs(ck[i]), p = i;                \
+    if (biggest == 0) continue; /* singular: inf/NaN in x, as Eigen's */              \
+    if (p != k) {                                                                     \
+      for (Index j = 0; j < n; ++j) std::swap(a[j * n + k], a[j * n + p]);            \
+      std::swap(b[k], b[p]);                                                          \
+    }                                                                                 \
+    const double inv = 1 / ck[k];                                                     \
+    for (Index i = k + 1; i < n; ++i) ck[i] *= inv;                                   \
+    for (Index j = k + 1; j < n; ++j) {                                               \
+      double* __restrict cj = a + j * n;                                              \
+      const double akj = cj[k];                                                       \
+      if (akj == 0) continue;                                                         \
+      for (Index i = k + 1; i < n; ++i) cj[i] -= ck[i] * akj;                         \
+    }                                                                                 \
+    const double bk = b[k];                                                           \
+    for (Index i = k + 1; i < n; ++i) b[i] -= ck[i] * bk;                             \
+  }                                                                                   \
+  for (Index k = n - 1; k >= 0; --k) {                                                \
+    const double* ck = a + k * n;                                                     \
+    b[k] /= ck[k];                                                                    \
+    const double bk = b[k];                                                           \
+    for (Index i = 0; i < k; ++i) b[i] -= ck[i] * bk;                                 \
+  }                                                                                   \
   return b;
+__attribute__((target("avx2,fma"))) VectorXd solve_unblocked_avx2(MatrixXd& A, VectorXd b) { MTCS_UNBLOCKED_BODY }
+VectorXd solve_unblocked_base(MatrixXd& A, VectorXd b) { MTCS_UNBLOCKED_BODY }
+#undef MTCS_UNBLOCKED_BODY
+
+VectorXd solve_unblocked(MatrixXd& A, VectorXd b) {
+  return has_avx2_fma() ? solve_unblocked_avx2(A, std::move(b)) : solve_unblocked_base(A, std::move(b));
 }
 
 // C -= L U (column-major, leading dimension ld): C is m x n, L m x k, U k x n. Blocks of 8 rows

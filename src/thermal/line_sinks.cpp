@@ -5,8 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <stdexcept>
+
+#include <absl/container/flat_hash_map.h>
 
 #include "dense_solve.h"
 #include "line_sink_model.h"
@@ -39,15 +42,42 @@ std::optional<geometry::Segment> clip_to_block(const Box& box, const geometry::S
 
 }  // namespace
 
-void LineSinkCache::clear() {
-  channels_.clear();
-  pairs_.clear();
-  bytes_ = 0;
-}
+// The blocks by their exact geometry: flat tables (one probe into contiguous slots, no node
+// per entry), keys compared bit for bit.
+struct LineSinkCache::Tables {
+  using Key = std::array<double, 7>;        // a channel: axis ends, radius
+  using PairKey = std::array<double, 14>;   // rows' channel, columns' channel
+  struct KeyHash {
+    template <std::size_t N>
+    std::size_t operator()(const std::array<double, N>& k) const {
+      return geometry::exact_bits_hash(k.data(), N);
+    }
+  };
+  struct KeyEqual {  // bits, as the hash: -0 and 0 are different keys (the same block, computed twice)
+    template <std::size_t N>
+    bool operator()(const std::array<double, N>& a, const std::array<double, N>& b) const {
+      return std::memcmp(a.data(), b.data(), N * sizeof(double)) == 0;
+    }
+  };
+  template <class Block>
+  struct Entry {
+    std::shared_ptr<Block> block;
+    std::uint64_t used = 0;  // the evaluation that last used it
+  };
+  absl::flat_hash_map<Key, Entry<ChannelBlock>, KeyHash, KeyEqual> channels;
+  absl::flat_hash_map<PairKey, Entry<PairBlock>, KeyHash, KeyEqual> pairs;
+};
 
-template <std::size_t N>
-std::size_t LineSinkCache::KeyHash::operator()(const std::array<double, N>& k) const {
-  return geometry::exact_bits_hash(k.data(), N);
+LineSinkCache::LineSinkCache(std::size_t budget_bytes) : tables_(std::make_unique<Tables>()), budget_(budget_bytes) {}
+LineSinkCache::~LineSinkCache() = default;
+LineSinkCache::LineSinkCache(LineSinkCache&&) noexcept = default;
+LineSinkCache& LineSinkCache::operator=(LineSinkCache&&) noexcept = default;
+
+void LineSinkCache::clear() {
+  if (!tables_) tables_ = std::make_unique<Tables>();  // a moved-from cache
+  tables_->channels.clear();
+  tables_->pairs.clear();
+  bytes_ = 0;
 }
 
 namespace {
@@ -77,7 +107,7 @@ void shrink(Map& map, std::size_t& bytes, std::size_t keep, std::uint64_t now) {
   for (auto it = map.begin(); it != map.end();) {
     if (it->second.used < cut || (it->second.used == cut && cut < now)) {
       bytes -= block_bytes(*it->second.block);
-      it = map.erase(it);
+      map.erase(it++);  // a flat table's erase leaves the other iterators valid
     } else {
       ++it;
     }
@@ -92,7 +122,7 @@ const LineSinkOptions& LineSinkModel::options() const { return impl_->options; }
 
 LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSinkCache& cache) const {
   const Impl& m = *impl_;
-  if (cache.owner_ != impl_.get()) {
+  if (cache.owner_ != impl_.get() || !cache.tables_) {
     cache.clear();
     cache.owner_ = impl_.get();
   }
@@ -109,7 +139,8 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
   }
   channels = inside;
   // Look up or build every channel's and pair's blocks.
-  using Key = LineSinkCache::Key;
+  using Key = LineSinkCache::Tables::Key;
+  LineSinkCache::Tables& tables = *cache.tables_;
   const std::uint64_t now = ++cache.evaluation_;
   std::vector<Key> keys(nc);
   std::vector<std::shared_ptr<LineSinkCache::ChannelBlock>> blocks(nc);
@@ -119,7 +150,7 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
       throw std::invalid_argument("line sinks: a channel needs a positive length and radius");
     keys[c] = {ch.axis.p0.x(), ch.axis.p0.y(), ch.axis.p0.z(), ch.axis.p1.x(), ch.axis.p1.y(),
                ch.axis.p1.z(), ch.radius};
-    auto& entry = cache.channels_[keys[c]];
+    auto& entry = tables.channels[keys[c]];
     if (entry.block) {
       ++cache.channels_reused;
     } else {
@@ -135,10 +166,10 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
   for (std::size_t r = 0; r < nc; ++r)
     for (std::size_t c = 0; c < nc; ++c) {
       if (r == c) continue;
-      LineSinkCache::PairKey k;
+      LineSinkCache::Tables::PairKey k;
       std::copy(keys[r].begin(), keys[r].end(), k.begin());
       std::copy(keys[c].begin(), keys[c].end(), k.begin() + 7);
-      auto& entry = cache.pairs_[k];
+      auto& entry = tables.pairs[k];
       if (!entry.block) {
         entry.block = std::make_shared<LineSinkCache::PairBlock>();
         entry.block->block = m.channel_at_rows(*blocks[r], blocks[c]->axis);
@@ -161,6 +192,9 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
   MatrixXd A = MatrixXd::Zero(n, n);
   VectorXd rhs = VectorXd::Zero(n);
 
+  // The faces' moments side by side (4 x faces): the far lattice of their losses.
+  Eigen::Matrix<double, 4, Eigen::Dynamic> face_moments(4, nf);
+  for (int f = 0; f < nf; ++f) face_moments.col(f) = m.face_moments[f];
   for (std::size_t c = 0; c < nc; ++c) {
     const auto& b = *blocks[c];
     const Channel& ch = channels[c];
@@ -168,24 +202,31 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
     const double w1 = h == kInf ? 1 : h * R / (k + h * R);
     const double w2 = h == kInf ? 0 : 1 / (2 * std::numbers::pi * (k + h * R));
     const double beta = h == kInf ? -1 : (k - h * R) / (k + h * R);
+    // The rows' fields, block by block: each channel's columns and each face's loss, near part
+    // plus the far lattice (the rows' far kernel times the sources' moments); then each row
+    // weighted as its condition needs.
+    for (std::size_t d = 0; d < nc; ++d) {
+      auto to = A.block(offset[c], offset[d], b.cols, blocks[d]->cols);
+      to = b.far_rows.lazyProduct(blocks[d]->moments);  // coefficient-wise: 4 terms, no GEMM set-up
+      to += d == c ? b.self : pairs[c * nc + d]->block;
+    }
+    if (nf) {
+      auto to = A.block(offset[c], n_ch, b.cols, nf);
+      to = b.far_rows.lazyProduct(face_moments);
+      to += b.face_rows;
+    }
+    const VectorXd heat_rows = b.heat_rows + b.far_rows * m.heat_moments;
     for (int r = 0; r < b.cols; ++r) {
       const int row = offset[c] + r;
       const bool mean_row = r % m.kinds == 0;
-      const double wr = mean_row ? w1 : -beta;  // weight of the field's functional in this row
-      const Eigen::RowVector4d far = b.far_rows.row(r);
-      for (std::size_t d = 0; d < nc; ++d) {
-        const MatrixXd& blk = d == c ? b.self : pairs[c * nc + d]->block;
-        A.block(row, offset[d], 1, blk.cols()) = wr * (blk.row(r) + far * blocks[d]->moments);
-      }
-      for (int f = 0; f < nf; ++f) A(row, n_ch + f) = wr * (b.face_rows(r, f) + far.dot(m.face_moments[f]));
-      const double heat_r = b.heat_rows[r] + far.dot(m.heat_moments);
+      A.row(row).head(n_ch + nf) *= mean_row ? w1 : -beta;  // the weight of the field in this row
       if (mean_row) {
         A(row, row) -= w2;  // the film's drop: q' / (2 pi R h)
         if (free_constant) A(row, t0) = w1;
-        rhs[row] = w1 * (ch.coolant - heat_r - fixed);
+        rhs[row] = w1 * (ch.coolant - heat_rows[r] - fixed);
       } else {
         A(row, row) += b.self_dipole[r];
-        rhs[row] = beta * heat_r;
+        rhs[row] = beta * heat_rows[r];
       }
     }
   }
@@ -261,8 +302,8 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
 
   // Over budget: the blocks unused for longest go (the pairs first: cheaper to rebuild).
   if (cache.bytes_ > cache.budget_) {
-    shrink(cache.pairs_, cache.bytes_, cache.budget_ / 2, now);
-    shrink(cache.channels_, cache.bytes_, cache.budget_ / 2, now);
+    shrink(tables.pairs, cache.bytes_, cache.budget_ / 2, now);
+    shrink(tables.channels, cache.bytes_, cache.budget_ / 2, now);
   }
   return out;
 }

@@ -188,7 +188,7 @@ TEST_CASE("run store faults: mtcs replay and optimize --resume exit 2 on a corru
   write_bytes(p, b.substr(0, b.size() / 3));
   const std::string before = bytes(p);
   const fs::path dir = p.parent_path();
-  for (const std::string args : {"replay " + dir.string(), "optimize --resume " + dir.string()}) {
+  for (const std::string& args : {"replay " + dir.string(), "optimize --resume " + dir.string()}) {
     const auto r = mtcs_test::run_mtcs_err("store_faults", args);
     CHECK(r.code == 2);
     CHECK_THAT(r.err, Catch::Contains(p.string()));

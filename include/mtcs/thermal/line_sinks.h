@@ -25,8 +25,6 @@
 
 #include <array>
 #include <cstdint>
-#include <unordered_map>
-#include <map>
 #include <memory>
 #include <span>
 #include <vector>
@@ -68,7 +66,10 @@ struct LineSinkOptions {
 // a block is a function of its key alone.
 class LineSinkCache {
  public:
-  explicit LineSinkCache(std::size_t budget_bytes = std::size_t(64) << 20) : budget_(budget_bytes) {}
+  explicit LineSinkCache(std::size_t budget_bytes = std::size_t(64) << 20);
+  ~LineSinkCache();
+  LineSinkCache(LineSinkCache&&) noexcept;
+  LineSinkCache& operator=(LineSinkCache&&) noexcept;
   std::size_t channels_computed = 0;  // columns computed (misses), over the cache's life
   std::size_t channels_reused = 0;    // hits
   void clear();
@@ -77,19 +78,8 @@ class LineSinkCache {
 
  private:
   friend class LineSinkModel;
-  using Key = std::array<double, 7>;
-  using PairKey = std::array<double, 14>;
-  struct KeyHash {
-    template <std::size_t N>
-    std::size_t operator()(const std::array<double, N>& k) const;
-  };
-  template <class Block>
-  struct Entry {
-    std::shared_ptr<Block> block;
-    std::uint64_t used = 0;  // the evaluation that last used it
-  };
-  std::unordered_map<Key, Entry<ChannelBlock>, KeyHash> channels_;
-  std::unordered_map<PairKey, Entry<PairBlock>, KeyHash> pairs_;
+  struct Tables;  // the blocks by key (src/thermal/line_sinks.cpp)
+  std::unique_ptr<Tables> tables_;
   std::size_t budget_;
   std::size_t bytes_ = 0;  // held by the channels' and pairs' blocks
   std::uint64_t evaluation_ = 0;
