@@ -106,7 +106,7 @@ void shrink(Map& map, std::size_t& bytes, std::size_t keep, std::uint64_t now) {
   const std::uint64_t cut = std::min(ages[ages.size() / 2], now);
   for (auto it = map.begin(); it != map.end();) {
     if (it->second.used < cut || (it->second.used == cut && cut < now)) {
-      bytes -= block_bytes(*it->second.block);
+      if (it->second.block) bytes -= block_bytes(*it->second.block);  // null: its build threw
       map.erase(it++);  // a flat table's erase leaves the other iterators valid
     } else {
       ++it;
