@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The demo: installs dependencies, builds, and optimises the cooling bores of the bundled plate
 # mold (molds/plate.yaml) with the evolution strategy, then scores the result. The plate's
-# objectives are temperatures (line sinks, 5-12 ms of CPU per layout), so the budget is 10 000
-# evaluations: about a minute on 2 cores, plus the first build.
+# objectives are temperatures (line sinks, 0.3-0.6 ms of CPU per ES child), so the budget is
+# 10 000 evaluations: the three steps take 5-6 s on 2 cores (experiments/thermal/model_build.md),
+# plus the first build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
