@@ -83,25 +83,7 @@ struct FieldGrid {
   int fields = 0;
   std::vector<double> values;  // per node (x fastest), `fields` values
 
-  void interpolate(const Vec3& p, double* out) const {
-    std::array<int, 3> i0;
-    std::array<std::array<double, 4>, 3> w;
-    for (int a = 0; a < 3; ++a) {
-      const double u = (p[a] - origin[a]) / step[a];
-      i0[a] = std::clamp(int(std::floor(u)) - 1, 0, nodes[a] - 4);
-      const double t = u - i0[a];  // stencil nodes at 0, 1, 2, 3
-      w[a] = {-(t - 1) * (t - 2) * (t - 3) / 6, t * (t - 2) * (t - 3) / 2,
-              -t * (t - 1) * (t - 3) / 2, t * (t - 1) * (t - 2) / 6};
-    }
-    std::fill(out, out + fields, 0.0);
-    for (int k = 0; k < 4; ++k)
-      for (int j = 0; j < 4; ++j)
-        for (int i = 0; i < 4; ++i) {
-          const double wt = w[0][i] * w[1][j] * w[2][k];
-          const double* v = &values[((std::size_t(i0[2] + k) * nodes[1] + (i0[1] + j)) * nodes[0] + (i0[0] + i)) * fields];
-          for (int f = 0; f < fields; ++f) out[f] += wt * v[f];
-        }
-  }
+  void interpolate(const Vec3& p, double* out) const;
 };
 
 }  // namespace mtcs::thermal
