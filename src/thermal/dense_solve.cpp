@@ -4,6 +4,7 @@
 // and its LU ran at ~4 flops per cycle.
 
 #include "dense_solve.h"
+#include "cpu_features.h"
 
 #include <immintrin.h>
 
@@ -19,11 +20,6 @@ using Eigen::VectorXd;
 namespace {
 
 constexpr Index kUnblockedMax = 96;
-
-bool has_avx2_fma() {
-  static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return yes;
-}
 
 // Gaussian elimination with partial pivoting (the pivots of Eigen's partialPivLu), in place on
 // column-major storage. Compiled twice (below): the rank-1 updates are the whole cost, and this

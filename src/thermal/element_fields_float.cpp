@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "line_sink_fields.h"
+#include "cpu_features.h"
 
 namespace mtcs::thermal {
 
@@ -277,11 +278,6 @@ FloatAxis float_axis(const ChannelAxis& axis, const Vec3& origin, std::vector<fl
   }
 
 namespace {
-
-bool has_avx2_fma() {
-  static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return yes;
-}
 
 __attribute__((target("avx2,fma"))) void fields_avx2(const ChannelAxis& axis, const Vec3& origin, int kinds,
                                                      const float* x, const float* y, const float* z,

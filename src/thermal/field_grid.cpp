@@ -4,6 +4,7 @@
 // vectorises; compiled for AVX2/FMA too, picked at run time.
 
 #include "line_sink_tables.h"
+#include "cpu_features.h"
 
 namespace mtcs::thermal {
 
@@ -36,26 +37,17 @@ inline Stencil stencil(const FieldGrid& g, const Vec3& p) {
   return s;
 }
 
+// F > 0: the field count as a constant (the sum over fields unrolls and vectorises); 0: `fields`.
 template <int F>
-[[gnu::always_inline]] inline void sum_fixed(const Stencil& s, const double* values, double* out) {
-  double acc[F] = {};
+[[gnu::always_inline]] inline void sum(const Stencil& s, const double* __restrict values, int fields,
+                                       double* __restrict out) {
+  const int nf = F > 0 ? F : fields;
+  std::fill(out, out + nf, 0.0);
   for (int r = 0; r < 16; ++r) {
     const double* v = values + s.base[r];
     for (int i = 0; i < 4; ++i) {
       const double wt = s.wx[i] * s.wyz[r];
-      for (int f = 0; f < F; ++f) acc[f] += wt * v[i * F + f];
-    }
-  }
-  for (int f = 0; f < F; ++f) out[f] = acc[f];
-}
-
-[[gnu::always_inline]] inline void sum_any(const Stencil& s, const double* values, int fields, double* out) {
-  std::fill(out, out + fields, 0.0);
-  for (int r = 0; r < 16; ++r) {
-    const double* v = values + s.base[r];
-    for (int i = 0; i < 4; ++i) {
-      const double wt = s.wx[i] * s.wyz[r];
-      for (int f = 0; f < fields; ++f) out[f] += wt * v[i * fields + f];
+      for (int f = 0; f < nf; ++f) out[f] += wt * v[i * nf + f];
     }
   }
 }
@@ -64,12 +56,12 @@ template <int F>
   const Stencil s = stencil(g, p);                               \
   const double* v = g.values.data();                             \
   switch (g.fields) {                                            \
-    case 1: return sum_fixed<1>(s, v, out);                      \
-    case 2: return sum_fixed<2>(s, v, out);                      \
-    case 4: return sum_fixed<4>(s, v, out);                      \
-    case 5: return sum_fixed<5>(s, v, out);                      \
-    case 6: return sum_fixed<6>(s, v, out);                      \
-    default: return sum_any(s, v, g.fields, out);                \
+    case 1: return sum<1>(s, v, 1, out);                         \
+    case 2: return sum<2>(s, v, 2, out);                         \
+    case 4: return sum<4>(s, v, 4, out);                         \
+    case 5: return sum<5>(s, v, 5, out);                         \
+    case 6: return sum<6>(s, v, 6, out);                         \
+    default: return sum<0>(s, v, g.fields, out);                 \
   }
 
 __attribute__((target("avx2,fma"))) void interpolate_avx2(const FieldGrid& g, const Vec3& p, double* out) {
@@ -77,11 +69,6 @@ __attribute__((target("avx2,fma"))) void interpolate_avx2(const FieldGrid& g, co
 }
 void interpolate_base(const FieldGrid& g, const Vec3& p, double* out) { MTCS_INTERPOLATE_BODY }
 #undef MTCS_INTERPOLATE_BODY
-
-bool has_avx2_fma() {
-  static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return yes;
-}
 
 }  // namespace
 

@@ -70,7 +70,7 @@ struct LineSinkModel::Impl {
   Vec3 center = Vec3::Zero();     // the block's centre: where the moments are taken
   Vec3 sample_origin = Vec3::Zero();  // the samples' centre: their float coordinates' origin
   Eigen::Vector4d heat_moments = Eigen::Vector4d::Zero();
-  std::vector<Eigen::Vector4d> face_moments;
+  Eigen::Matrix<double, 4, Eigen::Dynamic> face_moments;  // per convective face (column)
   MatrixXd far_samples;       // samples x 4: the far lattice for the channels' columns
   MatrixXd far_samples_fixed; // the same for the heat input and the faces (exact to `images`)
   MatrixXd far_face_means;                   // faces x 4: the far lattice for the channels

@@ -228,10 +228,10 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
   for (std::size_t f = 0, point = 0; f < m.faces.size(); ++f)
     for (std::size_t i = 0; i < m.faces[f].cool.size(); ++i) m.face_average(f, point++) = 1.0 / double(m.faces[f].cool.size());
   const std::size_t nf = m.faces.size();
-  for (const ConvectiveFace& cf : m.faces) {
-    Eigen::Vector4d mo;
-    mo << -cf.area, -cf.area * (cf.center - m.center);
-    m.face_moments.push_back(mo);
+  m.face_moments.resize(4, Eigen::Index(nf));
+  for (std::size_t f = 0; f < nf; ++f) {
+    const ConvectiveFace& cf = m.faces[f];
+    m.face_moments.col(Eigen::Index(f)) << -cf.area, -cf.area * (cf.center - m.center);
   }
   m.far_samples.resize(m.n_samples, 4);
   m.far_samples_fixed.resize(m.n_samples, 4);

@@ -192,9 +192,6 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
   MatrixXd A = MatrixXd::Zero(n, n);
   VectorXd rhs = VectorXd::Zero(n);
 
-  // The faces' moments side by side (4 x faces): the far lattice of their losses.
-  Eigen::Matrix<double, 4, Eigen::Dynamic> face_moments(4, nf);
-  for (int f = 0; f < nf; ++f) face_moments.col(f) = m.face_moments[f];
   for (std::size_t c = 0; c < nc; ++c) {
     const auto& b = *blocks[c];
     const Channel& ch = channels[c];
@@ -212,7 +209,7 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
     }
     if (nf) {
       auto to = A.block(offset[c], n_ch, b.cols, nf);
-      to = b.far_rows.lazyProduct(face_moments);
+      to = b.far_rows.lazyProduct(m.face_moments);
       to += b.face_rows;
     }
     const VectorXd heat_rows = b.heat_rows + b.far_rows * m.heat_moments;
@@ -237,7 +234,7 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
     const Eigen::RowVector4d far_ch = m.far_face_means.row(f), far = m.far_face_means_fixed.row(f);
     for (std::size_t c = 0; c < nc; ++c)
       A.block(row, offset[c], 1, blocks[c]->cols) = -(blocks[c]->face_means.row(f) + far_ch * blocks[c]->moments);
-    for (int f2 = 0; f2 < nf; ++f2) A(row, n_ch + f2) = -(m.face_face_means(f, f2) + far.dot(m.face_moments[f2]));
+    for (int f2 = 0; f2 < nf; ++f2) A(row, n_ch + f2) = -(m.face_face_means(f, f2) + far.dot(m.face_moments.col(f2)));
     A(row, row) += cf.area / (cf.film * cf.convective_area);
     if (free_constant) A(row, t0) = -1;
     rhs[row] = m.heat_face_means[f] + far.dot(m.heat_moments) + fixed - cf.ambient;
@@ -278,7 +275,7 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
   if (nf) T += m.face_samples * x.segment(n_ch, nf);
   // The far lattice: the moments of everything in the block.
   Eigen::Vector4d fixed_moments = m.heat_moments, channel_moments = Eigen::Vector4d::Zero();
-  for (int f = 0; f < nf; ++f) fixed_moments += x[n_ch + f] * m.face_moments[f];
+  for (int f = 0; f < nf; ++f) fixed_moments += x[n_ch + f] * m.face_moments.col(f);
   for (std::size_t c = 0; c < nc; ++c) channel_moments += blocks[c]->moments * x.segment(offset[c], blocks[c]->cols);
   T += m.far_samples_fixed * fixed_moments + m.far_samples * channel_moments;
   const std::size_t ns = m.n_samples;
