@@ -33,7 +33,7 @@ MoldProblem::MoldProblem(const eval::Pipeline& pipeline, std::vector<double> wei
   }
   const auto& use = spec_.objectives.use;
   if (rates_.reach > 0 && spec_.cavity && std::find(use.begin(), use.end(), mold::Objective::WorstCovered) != use.end())
-    reach_samples_ = eval::thermal_samples(pipeline.scene()).points;
+    reach_.emplace(eval::thermal_samples(pipeline.scene()).points, block_.min);
 }
 
 mold::Genome MoldProblem::genome(const opt::Genotype& g) const {
@@ -137,7 +137,7 @@ long MoldProblem::mutate(opt::Genotype& x, const std::vector<double>& steps, opt
   mold::Genome g = genome(x);
   // The reach move alone: a child that moves other holes too would lose a narrow window it found.
   long spent = 0;
-  if (!reach_samples_.empty() && rng.uniform() < rates_.reach && reach_worst(g, rng, spent)) {
+  if (reach_ && !reach_->empty() && rng.uniform() < rates_.reach && reach_worst(g, rng, spent)) {
     x = encode(g);
     return spent;
   }
@@ -288,7 +288,7 @@ bool MoldProblem::blend_circuits(mold::Genome& a, const mold::Genome& b, opt::Rn
 
 bool MoldProblem::reach_worst(mold::Genome& g, opt::Rng& rng, long& evaluations) const {
   const mold::Scene& scene = pipeline_.scene();
-  const WorstSample worst = worst_covered_sample(reach_samples_, mold::decode(scene, g));
+  const eval::WorstSample worst = reach_->find(mold::decode(scene, g));
   if (!worst.any) return false;
   // A drill at random, then the smallest (it fits the narrowest windows).
   const auto& diameters = spec_.drilling.diameters;

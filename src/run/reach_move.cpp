@@ -102,33 +102,6 @@ std::optional<Vec3> clearing_shift(const eval::Violation& v, const geometry::Box
 
 }  // namespace
 
-WorstSample worst_covered_sample(const std::vector<Vec3>& samples, const mold::Layout& layout) {
-  // Max over samples of the min over bores: a sample is out of the running as soon as one bore
-  // comes within the worst found so far (it needs a strictly larger minimum to win), so most
-  // samples cost one distance, not one per bore. The bore that ruled out the previous sample is
-  // tried first (neighbouring samples share their near bores). A sample that stays in the
-  // running gets every bore, so the winner and its distance are those of the plain double loop
-  // (nearest_wall): min and max do not depend on the order.
-  WorstSample worst;
-  const std::vector<mold::Bore>& bores = layout.bores;
-  std::size_t first = 0;
-  for (const Vec3& p : samples) {
-    double e = std::numeric_limits<double>::infinity();
-    bool out = false;
-    for (std::size_t i = 0; i < bores.size(); ++i) {
-      const std::size_t k = i == 0 ? first : (i <= first ? i - 1 : i);
-      const mold::Bore& b = bores[k];
-      e = std::min(e, geometry::point_segment_distance(p, {b.flow_start, b.flow_end}) - b.diameter / 2);
-      if (worst.any && e <= worst.wall_distance) {
-        first = k, out = true;
-        break;
-      }
-    }
-    if (!out && (!worst.any || e > worst.wall_distance)) worst = {p, e, true};
-  }
-  return worst;
-}
-
 double wall_distance(const mold::Scene& scene, const mold::Circuit& circuit, const Vec3& p) {
   return nearest_wall(mold::decode(scene, mold::Genome{{circuit}}), p);
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The reach move (issue 16, target 2): a circuit laid by construction where a layout cools worst.
-// The cavity sample farthest from every flow bore is found, and a U circuit (the shape
+// The cavity sample farthest from every flow bore is found (eval::WorstCoveredSearch), and a U circuit (the shape
 // random_circuit draws) is laid with one leg beside it, starting just outside the sample; the
 // pipeline scores the circuit alone and every clearance it violates (cavity, keep-outs, block
 // surface) pushes the whole circuit out by the shortfall, until it is feasible or the tries are
@@ -17,16 +17,6 @@
 #include "mtcs/opt/rng.h"
 
 namespace mtcs::run {
-
-struct WorstSample {
-  geometry::Vec3 point = geometry::Vec3::Zero();
-  double wall_distance = 0;  // to the nearest flow bore: axis distance minus radius (worst_covered's e_i)
-  bool any = false;          // false: no samples
-};
-
-// The sample with the largest wall distance to the layout's flow bores (the first of equals);
-// without bores every sample is at infinity and the first is taken.
-WorstSample worst_covered_sample(const std::vector<geometry::Vec3>& samples, const mold::Layout& layout);
 
 // The wall distance from p to the nearest flow bore of the circuit as the scene decodes it.
 double wall_distance(const mold::Scene& scene, const mold::Circuit& circuit, const geometry::Vec3& p);

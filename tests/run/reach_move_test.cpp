@@ -14,6 +14,7 @@
 
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/eval/thermal_model.h"
+#include "mtcs/eval/worst_covered.h"
 #include "mtcs/geometry/segment_distance.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/scene.h"
@@ -61,23 +62,25 @@ mold::Genome beside() {
 
 }  // namespace
 
-TEST_CASE("worst_covered_sample is the sample farthest from every flow bore", "[run][reach]") {
+TEST_CASE("the worst-covered search finds the sample farthest from every flow bore", "[run][reach]") {
   const mold::MoldSpec spec = trough_spec();
   const mold::Scene scene(spec);
   const mold::Layout layout = mold::decode(scene, beside());
   const std::vector<Vec3> samples{{20, 50, 25}, {60, 60, 40}, {60, 20, 25}};
-  const run::WorstSample w = run::worst_covered_sample(samples, layout);
+  const eval::WorstSample w = eval::WorstCoveredSearch(samples, scene.block_bounds().min).find(layout);
   REQUIRE(w.any);
   // (60, 60, 40): 45 mm in x and 15 in z from the leg at x = 15, z = 25; the others are nearer.
   CHECK(w.point == Vec3(60, 60, 40));
   CHECK(w.wall_distance == Approx(std::sqrt(45.0 * 45 + 15 * 15) - 4).epsilon(1e-12));
-  CHECK_FALSE(run::worst_covered_sample({}, layout).any);
+  CHECK_FALSE(eval::WorstCoveredSearch({}, scene.block_bounds().min).find(layout).any);
 }
 
-TEST_CASE("worst_covered_sample's pruning picks the plain loop's sample and distance", "[run][reach]") {
-  // The search stops scoring a sample once one bore is within the worst so far; the reference is
-  // the plain loop over every sample and bore (wall above), first of equals. Samples on a coarse
-  // grid around bores at integer places give exact ties, which must resolve to the earliest.
+TEST_CASE("the worst-covered search picks the plain loop's sample and distance on the mold problem's layouts",
+          "[run][reach]") {
+  // The search screens in single precision and re-scores the nearly worst in double; the
+  // reference is the plain loop over every sample and bore (wall above), first of equals.
+  // Samples on a coarse grid around bores at integer places give exact ties, which must resolve
+  // to the earliest. (More cases: tests/eval/worst_covered_test.cpp.)
   const mold::MoldSpec spec = trough_spec();
   const mold::Scene scene(spec);
   const run::Session session(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml");
@@ -92,13 +95,15 @@ TEST_CASE("worst_covered_sample's pruning picks the plain loop's sample and dist
     const mold::Layout trough = mold::decode(scene, i % 2 ? beside() : mold::Genome{});
     const std::vector<Vec3>& grid_points = grid;
     for (const auto& [points, l] : {std::pair{&samples, &layout}, std::pair{&grid_points, &trough}}) {
-      run::WorstSample plain;
+      eval::WorstSample plain;
       for (const Vec3& p : *points) {
         // No bores: every sample at infinity (wall's 1e300 is only its start).
         const double e = l->bores.empty() ? std::numeric_limits<double>::infinity() : wall(*l, p);
         if (!plain.any || e > plain.wall_distance) plain = {p, e, true};
       }
-      const run::WorstSample w = run::worst_covered_sample(*points, *l);
+      const eval::WorstSample w = eval::WorstCoveredSearch(*points, l == &layout ? session.scene().block_bounds().min
+                                                                                  : scene.block_bounds().min)
+                                      .find(*l);
       REQUIRE(w.any);
       CHECK(w.point == plain.point);
       CHECK(w.wall_distance == plain.wall_distance);  // bit for bit: the same distances, min and max
@@ -146,7 +151,8 @@ TEST_CASE("the reach move gives feasible children nearer the parent's worst samp
   const mold::Scene scene(spec);
   const eval::Pipeline pipeline(scene);
   const std::vector<Vec3> samples = eval::thermal_samples(scene).points;
-  const run::WorstSample worst = run::worst_covered_sample(samples, mold::decode(scene, beside()));
+  const eval::WorstSample worst =
+      eval::WorstCoveredSearch(samples, scene.block_bounds().min).find(mold::decode(scene, beside()));
   // Children of one feasible parent that are feasible and nearer its worst sample (on the cavity's
   // bottom, reachable only from the side), out of 12,
   // with the reach move on every child (when it finds no circuit, the other moves run) or never.

@@ -13,6 +13,7 @@
 #include <optional>
 
 #include "mtcs/eval/pipeline.h"
+#include "mtcs/eval/worst_covered.h"
 #include "mtcs/mold/genome.h"
 #include "mtcs/opt/problem.h"
 
@@ -97,7 +98,7 @@ class MoldProblem final : public opt::Problem {
   std::vector<double> weights_;
   MutationRates rates_;
   const eval::DrillAccess* access_ = nullptr;  // set: AM-guided directions
-  std::vector<geometry::Vec3> reach_samples_;  // the cavity samples the reach move looks at (none: off)
+  std::optional<eval::WorstCoveredSearch> reach_;  // over the cavity samples the reach move looks at (none: off)
   double initial_step_;
   mutable std::atomic<long> evaluated_{0}, feasible_{0}, screened_{0};
 };
