@@ -27,6 +27,7 @@ StoredRun run_stored(const MoldOptimizer& optimizer, const MoldProblem& problem,
     std::stable_sort(r.last.population.begin(), r.last.population.end(),
                      [&](const opt::Individual& a, const opt::Individual& b) { return problem.better(a.score, b.score); });
   }
+  db.commit();  // before the outputs: what they are written from is in the store
   r.interrupted = !optimizer.done(r.last);
   r.seconds = seconds_before + elapsed();
   return r;

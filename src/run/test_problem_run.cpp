@@ -36,6 +36,7 @@ TestProblemRun run_test_problem(const opt::Problem& problem, const std::string& 
   const opt::Generation last = opt::run(sms, nullptr, [&](const opt::Generation& g) {
     if (db && g.index % c.mu == 0) db->save(g, since_start());
   });
+  if (db) db->commit();
   const double seconds = since_start();
   const auto front = opt::SmsEmoa::front(last);
   return {name, seed, last.evaluations, opt::hypervolume(front, c.ref), c.ref, front.size(), seconds};

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -203,9 +204,11 @@ struct RunStore::Prepared {
 RunStore::RunStore(sqlite3* db, std::string path, int lock_fd) : db_(db), path_(std::move(path)), lock_fd_(lock_fd) {}
 RunStore::RunStore(RunStore&& o) noexcept
     : db_(o.db_), path_(std::move(o.path_)), lock_fd_(o.lock_fd_), island_tables_(o.island_tables_),
-      archipelago_by_reference_(o.archipelago_by_reference_), prepared_(std::move(o.prepared_)),
-      run_rows_(std::move(o.run_rows_)) {
+      archipelago_by_reference_(o.archipelago_by_reference_), in_transaction_(o.in_transaction_),
+      first_uncommitted_(o.first_uncommitted_), last_saved_(o.last_saved_), last_commit_(o.last_commit_),
+      prepared_(std::move(o.prepared_)), run_rows_(std::move(o.run_rows_)) {
   o.db_ = nullptr;
+  o.in_transaction_ = false;
   o.lock_fd_ = -1;
 }
 RunStore& RunStore::operator=(RunStore&& o) noexcept {
@@ -214,11 +217,17 @@ RunStore& RunStore::operator=(RunStore&& o) noexcept {
   std::swap(lock_fd_, o.lock_fd_);
   std::swap(island_tables_, o.island_tables_);
   std::swap(archipelago_by_reference_, o.archipelago_by_reference_);
+  std::swap(in_transaction_, o.in_transaction_);
+  std::swap(first_uncommitted_, o.first_uncommitted_);
+  std::swap(last_saved_, o.last_saved_);
+  std::swap(last_commit_, o.last_commit_);
   std::swap(prepared_, o.prepared_);
   std::swap(run_rows_, o.run_rows_);
   return *this;
 }
 RunStore::~RunStore() {
+  // Whole generations only are ever in the open transaction: they are kept.
+  if (db_ && in_transaction_) sqlite3_exec(db_, "COMMIT;", nullptr, nullptr, nullptr);
   prepared_.reset();  // finalized before the close
   run_rows_.reset();
   sqlite3_close(db_);
@@ -344,23 +353,58 @@ struct RunStore::RunRows {
   Statement member, generation;
 };
 
+namespace {
+
+double steady_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
 void RunStore::save(const opt::Generation& g, double seconds) {
   errno = 0;
   try {
-    exec(db_, "BEGIN IMMEDIATE;");
+    if (!in_transaction_) exec(db_, "BEGIN IMMEDIATE;"), in_transaction_ = true, first_uncommitted_ = g.index;
+    last_saved_ = g.index;
     if (!run_rows_) run_rows_ = std::make_unique<RunRows>(db_);
     insert_members(run_rows_->member, g);
     insert_summary(run_rows_->generation, g, seconds);
-    exec(db_, "COMMIT;");
+    if (steady_seconds() - last_commit_ >= kCommitWindow) commit_or_throw();
   } catch (const std::exception& e) {
-    // The system's word for a failed write (no space left, file too large) says what to do;
-    // SQLite keeps it only for some errors, errno still has it.
-    const int os_error = errno;
-    const bool disk = os_error == ENOSPC || os_error == EFBIG || os_error == EDQUOT || os_error == EIO || os_error == EROFS;
-    sqlite3_exec(db_, "ROLLBACK;", nullptr, nullptr, nullptr);  // keeps the last whole generation
-    throw std::runtime_error(path_ + ": cannot save generation " + std::to_string(g.index) + ": " + e.what() +
-                             (disk ? " (" + std::string(std::strerror(os_error)) + ")" : ""));
+    roll_back_and_throw(e);
   }
+}
+
+void RunStore::commit() {
+  errno = 0;
+  try {
+    commit_or_throw();
+  } catch (const std::exception& e) {
+    roll_back_and_throw(e);
+  }
+}
+
+void RunStore::commit_or_throw() {
+  if (!in_transaction_) return;
+  exec(db_, "COMMIT;");
+  in_transaction_ = false;
+  last_commit_ = steady_seconds();
+}
+
+void RunStore::roll_back_and_throw(const std::exception& e) {
+  // The system's word for a failed write (no space left, file too large) says what to do;
+  // SQLite keeps it only for some errors, errno still has it.
+  const int os_error = errno;
+  const bool disk = os_error == ENOSPC || os_error == EFBIG || os_error == EDQUOT || os_error == EIO || os_error == EROFS;
+  sqlite3_exec(db_, "ROLLBACK;", nullptr, nullptr, nullptr);  // keeps the last committed generation
+  in_transaction_ = false;
+  const std::string what = "cannot save generation " + std::to_string(last_saved_) +
+                           (first_uncommitted_ < last_saved_
+                                ? " (nor " + std::to_string(first_uncommitted_) + " to " + std::to_string(last_saved_ - 1) +
+                                      ", saved since the last commit)"
+                                : "");
+  throw std::runtime_error(path_ + ": " + what + ": " + e.what() +
+                           (disk ? " (" + std::string(std::strerror(os_error)) + ")" : ""));
 }
 
 namespace {
@@ -444,6 +488,7 @@ void RunStore::save_islands(const std::vector<opt::Generation>& islands, const o
 
 void RunStore::save_islands(const std::vector<IslandsGeneration>& batch) {
   if (batch.empty()) return;
+  commit();  // save's generations first: one transaction at a time
   errno = 0;
   try {
     exec(db_, "BEGIN IMMEDIATE;");
