@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <memory>
 
@@ -27,48 +28,70 @@ __attribute__((target_clones("avx2", "default"))) void wall_distances(const floa
   for (std::size_t i = 0; i < n; ++i) e[i] = std::sqrt(double(m[i])) - r;
 }
 
-// Where circuit distances e are nearer than best: best = e, target = t.
-__attribute__((target_clones("avx2", "default"))) void take_nearer(const double* __restrict e, double t,
-                                                                   double* __restrict best,
-                                                                   double* __restrict target, std::size_t n) {
-  for (std::size_t i = 0; i < n; ++i) {
-    const bool nearer = e[i] < best[i];
-    best[i] = nearer ? e[i] : best[i];
-    target[i] = nearer ? t : target[i];
+// Per slot, the nearest circuit's e (from `n` circuits' rows e[c], targets t[c]; none and t0
+// without one): the largest e, and the weighted sum of (e - target)^2. Blocks of kBlock slots
+// stay in registers and L1 across the circuits; the sum runs in eight fixed lanes (the same
+// order on every machine and clone, so one result), not the one chain a sum in samples' order
+// would wait on.
+constexpr std::size_t kBlock = 32;
+static_assert(TiledSamples::kTile % kBlock == 0);
+struct Nearest {
+  double largest, weighted_sum;
+};
+// GCC 12 takes the default clone's 256-bit stores, done as two halves, for reads of an
+// uninitialised `target`: a false warning.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+__attribute__((target_clones("avx2", "default"))) Nearest nearest_circuits(const double* const* e, const double* t,
+                                                                           std::size_t n, double none, double t0,
+                                                                           const double* __restrict weight,
+                                                                           std::size_t slots) {
+  // Four doubles a vector; a block's 32 slots are 8 vectors, vector j holding slots 4j..4j+3,
+  // so that lane l of `sum[j % 2]` sums the slots k with k % 8 = 4 (j % 2) + l.
+  using D4 = double __attribute__((vector_size(32)));
+  constexpr int kVectors = int(kBlock / 4);
+  const double inf = std::numeric_limits<double>::infinity();
+  D4 sum[2] = {{0, 0, 0, 0}, {0, 0, 0, 0}}, top[2] = {{-inf, -inf, -inf, -inf}, {-inf, -inf, -inf, -inf}};
+  const D4 none4 = {none, none, none, none}, t04 = {t0, t0, t0, t0};
+  for (std::size_t k0 = 0; k0 < slots; k0 += kBlock) {  // slots: a whole number of tiles of 32
+    D4 best[kVectors], target[kVectors];
+    for (int j = 0; j < kVectors; ++j) {
+      best[j] = none4;
+      target[j] = t04;
+    }
+    for (std::size_t c = 0; c < n; ++c) {
+      const D4 tc = {t[c], t[c], t[c], t[c]};
+      for (int j = 0; j < kVectors; ++j) {
+        D4 ec;
+        std::memcpy(&ec, e[c] + k0 + 4 * std::size_t(j), sizeof ec);
+        const auto nearer = ec < best[j];
+        best[j] = nearer ? ec : best[j];
+        target[j] = nearer ? tc : target[j];
+      }
+    }
+    for (int j = 0; j < kVectors; ++j) {
+      D4 w;
+      std::memcpy(&w, weight + k0 + 4 * std::size_t(j), sizeof w);
+      const D4 dev = best[j] - target[j];
+      sum[j % 2] += w * dev * dev;
+      top[j % 2] = best[j] > top[j % 2] ? best[j] : top[j % 2];
+    }
   }
+  double total = 0, largest = top[0][0];
+  for (int h = 0; h < 2; ++h)
+    for (int l = 0; l < 4; ++l) total += sum[h][l], largest = top[h][l] > largest ? top[h][l] : largest;
+  return {largest, total};
 }
-
-// take_nearer for a layout's first circuit, against no bore (e_i = none, target t0): the arrays
-// need no filling first, nor reading back.
-__attribute__((target_clones("avx2", "default"))) void take_first(const double* __restrict e, double t, double none,
-                                                                  double t0, double* __restrict best,
-                                                                  double* __restrict target, std::size_t n) {
-  for (std::size_t i = 0; i < n; ++i) {
-    const bool nearer = e[i] < none;
-    best[i] = nearer ? e[i] : none;
-    target[i] = nearer ? t : t0;
-  }
-}
-
-// The largest of x[0..n), n > 0, in four independent chains (one chain waits on every max). The
-// value is std::max_element's: the e_i are neither NaN nor -0 (roots minus radii), so max is exact
-// and does not depend on the order.
-double largest(const double* x, std::size_t n) {
-  if (n == 0) return -std::numeric_limits<double>::infinity();
-  double m[4] = {x[0], x[0], x[0], x[0]};
-  std::size_t i = 0;
-  for (; i + 4 <= n; i += 4)
-    for (int k = 0; k < 4; ++k) m[k] = x[i + std::size_t(k)] > m[k] ? x[i + std::size_t(k)] : m[k];
-  for (; i < n; ++i) m[0] = x[i] > m[0] ? x[i] : m[0];
-  return std::max(std::max(m[0], m[1]), std::max(m[2], m[3]));
-}
+#pragma GCC diagnostic pop
 
 class ThermalStage final : public Stage {
  public:
   ThermalStage(const mold::Scene& scene, SurfaceSamples samples)
       : samples_(std::move(samples)), total_(samples_.total_weight()),
         target_(scene.spec().objectives.target_wall_distance),
-        no_bore_(scene.block_bounds().size().norm()), tiles_(samples_, scene.block_bounds().min) {
+        no_bore_(scene.block_bounds().size().norm()), tiles_(samples_, scene.block_bounds().min),
+        slot_weight_(tiles_.slots(), 0.0) {
+    for (std::size_t i = 0; i < samples_.size(); ++i) slot_weight_[tiles_.slot(i)] = samples_.weight[i];
     const auto& use = scene.spec().objectives.use;
     for (std::size_t k = 0; k < use.size(); ++k) {
       if (use[k] == mold::Objective::Uniformity) uniformity_slot_ = int(k);
@@ -79,40 +102,32 @@ class ThermalStage final : public Stage {
   std::string name() const override { return "thermal"; }
 
   void run(const mold::Layout& layout, Evaluation& out) const override {
-    // Per slot of the tiled samples: the nearest flow bore's effective distance and the target
-    // at its diameter (branch-free, so that the loop over the slots vectorises). Per thread: no
-    // allocation per evaluation.
-    const std::size_t slots = tiles_.slots();
-    static thread_local std::vector<double> best, target;
-    best.resize(slots);
-    target.resize(slots);
+    // Each circuit's e per slot of the tiled samples (cached by its geometry), then per slot the
+    // nearest circuit's e and the target at its diameter. Per thread: no allocation.
+    static thread_local std::vector<const double*> rows;
+    static thread_local std::vector<double> targets, copies;
+    rows.clear(), targets.clear();
+    std::size_t circuits = 0;
+    for (std::size_t b = 0; b < layout.bores.size(); ++b) circuits += b == 0 || layout.bores[b].circuit != layout.bores[b - 1].circuit;
+    // More circuits than the ring keeps for one layout (no mold has them): each row copied.
+    const bool copy = circuits > kPerLayout;
+    if (copy) copies.resize(circuits * tiles_.slots());
     std::size_t b = 0;
     while (b < layout.bores.size()) {
       const std::size_t first = b;
       const int circuit = layout.bores[b].circuit;
       while (b < layout.bores.size() && layout.bores[b].circuit == circuit) ++b;
-      const double r = layout.bores[first].diameter / 2, t = target_.at(2 * r);
+      const double r = layout.bores[first].diameter / 2;
+      targets.push_back(target_.at(2 * r));
       const double* e = circuit_distances(layout, first, b, r);
-      if (first == 0)
-        take_first(e, t, no_bore_, target_.at(0), best.data(), target.data(), slots);
-      else
-        take_nearer(e, t, best.data(), target.data(), slots);
+      if (copy) e = std::copy_n(e, tiles_.slots(), copies.data() + rows.size() * tiles_.slots()) - tiles_.slots();
+      rows.push_back(e);
     }
-    if (layout.bores.empty()) {
-      std::fill(best.begin(), best.end(), no_bore_);
-      std::fill(target.begin(), target.end(), target_.at(0));
-    }
-    // In the samples' order (a padded slot repeats a sample: the maximum is the samples').
-    if (uniformity_slot_ >= 0) {
-      double sum = 0;
-      for (std::size_t i = 0; i < samples_.size(); ++i) {
-        const std::size_t k = tiles_.slot(i);
-        const double dev = best[k] - target[k];
-        sum += samples_.weight[i] * dev * dev;
-      }
-      out.objectives[std::size_t(uniformity_slot_)] = std::sqrt(sum / total_);
-    }
-    if (worst_slot_ >= 0) out.objectives[std::size_t(worst_slot_)] = largest(best.data(), slots);
+    const Nearest n = nearest_circuits(rows.data(), targets.data(), rows.size(), no_bore_, target_.at(0),
+                                       slot_weight_.data(), tiles_.slots());
+    if (uniformity_slot_ >= 0) out.objectives[std::size_t(uniformity_slot_)] = std::sqrt(n.weighted_sum / total_);
+    // A padded slot repeats a sample (weight 0 in the sum): the maximum is the samples'.
+    if (worst_slot_ >= 0) out.objectives[std::size_t(worst_slot_)] = n.largest;
   }
 
  private:
@@ -136,10 +151,12 @@ class ThermalStage final : public Stage {
       for (std::size_t b = first; b < last; ++b) segments.push_back({layout.bores[b].flow_start, layout.bores[b].flow_end});
       near2.resize(slots);
       tiles_.nearest_squared(segments.data(), segments.data() + segments.size(), near2.data());
-      // The entry's own row of this thread's rows (a cache that starts over reuses them).
-      std::vector<double>& rows = rows_.local();
-      if (rows.empty()) rows.resize(kCircuits * slots);
-      double* e = rows.data() + circuits_.entries() * slots;
+      // The next row of this thread's ring: it outlives the cache's entries (at most kCircuits
+      // new ones since a start-over) by kPerLayout rows, so a layout's earlier rows stay whole.
+      Ring& ring = rows_.local();
+      if (ring.rows.empty()) ring.rows.resize((kCircuits + kPerLayout) * slots);
+      double* e = ring.rows.data() + ring.next * slots;
+      ring.next = (ring.next + 1) % (kCircuits + kPerLayout);
       wall_distances(near2.data(), r, e, slots);
       return e;
     });
@@ -150,13 +167,18 @@ class ThermalStage final : public Stage {
   mold::Length target_;
   double no_bore_;      // e_i without any bore: the block's diagonal
   TiledSamples tiles_;  // relative to the block's corner
+  std::vector<double> slot_weight_;  // the samples' weights by slot (padding: 0)
   int uniformity_slot_ = -1, worst_slot_ = -1;
   // Per thread, by exact geometry: a child's unchanged circuits are not recomputed. The values
-  // point into rows allocated once per thread (a column is ~18 kB on the plate: no malloc and
-  // free of that size per new circuit, nor per start-over of the cache).
-  static constexpr std::size_t kCircuits = 256;
+  // point into a ring of rows allocated once per thread (a column is ~18 kB on the plate: no
+  // malloc and free of that size per new circuit, nor per start-over of the cache).
+  static constexpr std::size_t kCircuits = 256, kPerLayout = 64;
   ExactCache<std::vector<double>, const double*> circuits_{kCircuits};
-  mutable tbb::enumerable_thread_specific<std::vector<double>> rows_;
+  struct Ring {
+    std::vector<double> rows;
+    std::size_t next = 0;
+  };
+  mutable tbb::enumerable_thread_specific<Ring> rows_;
 };
 
 }  // namespace

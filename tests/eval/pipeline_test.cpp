@@ -306,3 +306,32 @@ TEST_CASE("pipeline: the thermal stage's reused arrays carry nothing from one la
     CHECK(warm.evaluate(g).objectives == cold);
   }
 }
+
+TEST_CASE("pipeline: the thermal stage's rows of a layout stay whole when its circuit cache starts over",
+          "[eval]") {
+  // The stage keeps 256 circuits per thread and their rows in a ring of 320: a layout whose
+  // first circuits hit rows 255 computations old and whose next 70 circuits are new wraps the
+  // ring over them (more circuits than the ring keeps for one layout: the stage copies them).
+  // Each layout scored warm must equal it scored on a thread and pipeline that saw nothing.
+  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml");
+  const mold::Scene scene(spec);
+  const geometry::Box& b = scene.block_bounds();
+  const double d = spec.drilling.diameters.front();
+  auto along_y = [&](double x, double z) { return mold::Circuit{{{x, b.min.y(), z}, {x, b.max.y(), z}}, d}; };
+  auto cold = [&](const mold::Genome& g) {
+    std::vector<double> out;
+    std::thread([&] { out = eval::Pipeline(scene).evaluate(g).objectives; }).join();
+    return out;
+  };
+  const eval::Pipeline warm(scene);
+  std::vector<double> objectives;
+  std::thread([&] {
+    const mold::Genome first{{along_y(30, 20), along_y(60, 25), along_y(90, 30), along_y(120, 35)}};
+    warm.evaluate(first);  // rows 0-3
+    for (int i = 0; i < 252; ++i) warm.evaluate(mold::Genome{{along_y(20 + 0.5 * i, 60)}});
+    mold::Genome big = first;  // hits on rows 0-3, then 70 new circuits
+    for (int i = 0; i < 70; ++i) big.circuits.push_back(along_y(40 + 0.5 * i, 80));
+    objectives = warm.evaluate(big).objectives;
+    CHECK(objectives == cold(big));
+  }).join();
+}
