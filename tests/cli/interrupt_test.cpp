@@ -92,5 +92,7 @@ TEST_CASE("issue 16: Ctrl-C in mtcs optimize writes the best so far and says how
 
 TEST_CASE("issue 16: SIGTERM in mtcs optimize --algorithm sms-emoa stops at a stored generation and resumes exactly",
           "[cli][optimize][issue16]") {
-  check_interrupted_then_resumed({"--seed", "2", "--evaluations", "3000", "--algorithm", "sms-emoa"}, SIGTERM, 5);
+  // Long enough (~1 s) to span several of the store's commits (RunStore::kCommitWindow): the
+  // signal goes once a reader sees 5 generations, mid-run.
+  check_interrupted_then_resumed({"--seed", "2", "--evaluations", "60000", "--algorithm", "sms-emoa"}, SIGTERM, 5);
 }
