@@ -43,9 +43,12 @@ __attribute__((target_clones("avx2", "default"))) float score_bore(const float* 
   return largest;
 }
 
-// Squared distances between a box and each of n boxes (structure of arrays).
+// Per bore, the least distance a sample of the tile can have to it, less its rounding margin:
+// max(0, gap - margin_b - tile_margin), gap = the distance between the tile's box and the bore's.
+// Its square is what a tile's largest distance so far is compared with: no root in that chain.
 __attribute__((target_clones("avx2", "default"))) void box_gaps(const double* lo[3], const double* hi[3],
-                                                                const double tlo[3], const double thi[3],
+                                                                const double* margin, const double tlo[3],
+                                                                const double thi[3], double tile_margin,
                                                                 std::size_t n, double* __restrict gap2) {
   for (std::size_t b = 0; b < n; ++b) {
     double sum = 0;
@@ -54,7 +57,8 @@ __attribute__((target_clones("avx2", "default"))) void box_gaps(const double* lo
       const double g = below > above ? below : above;
       sum += g > 0 ? g * g : 0;
     }
-    gap2[b] = sum;
+    const double near = std::sqrt(sum) - margin[b] - tile_margin;
+    gap2[b] = near > 0 ? near * near : 0;
   }
 }
 
@@ -145,22 +149,22 @@ void TiledSamples::nearest_squared(const FlowSegment* first, const FlowSegment* 
     std::fill_n(tm, kTile, std::numeric_limits<float>::infinity());
     if (nb == 0) continue;
     const double tlo[3] = {tile.lo.x(), tile.lo.y(), tile.lo.z()}, thi[3] = {tile.hi.x(), tile.hi.y(), tile.hi.z()};
-    box_gaps(lo, hi, tlo, thi, nb, s.gap2.data());
+    const double tile_margin = 1e-5 * std::max(tile.lo.cwiseAbs().maxCoeff(), tile.hi.cwiseAbs().maxCoeff());
+    box_gaps(lo, hi, s.margin.data(), tlo, thi, tile_margin, nb, s.gap2.data());
+    // A computed distance is at least max(0, gap - margin) (1 - 1e-6), gap = the distance between
+    // the boxes: the margin covers the single-precision rounding (~2e-7 of the coordinates) 50
+    // times over. A bore with gap - margin > reach cannot lower an m_i; compared in squares,
+    // reach^2 = the tile's largest m_i / (1 - 1e-6).
     auto score = [&](std::size_t b) {
       const auto& f = s.segment[b];
-      // A computed distance is at least max(0, gap - margin) (1 - 1e-6), gap = the distance
-      // between the boxes: the margin covers the single-precision rounding (~2e-7 of the
-      // coordinates) 50 times over. A bore with gap > reach + margin cannot lower an m_i.
-      return std::sqrt(double(score_bore(xs_.data() + tile.begin, ys_.data() + tile.begin, zs_.data() + tile.begin,
-                                         f.data(), f.data() + 3, f[6], tm)) / (1 - 1e-6));
+      const float largest = score_bore(xs_.data() + tile.begin, ys_.data() + tile.begin, zs_.data() + tile.begin,
+                                       f.data(), f.data() + 3, f[6], tm);
+      return double(largest) / (1 - 1e-6);
     };
-    const double tile_margin = 1e-5 * std::max(tile.lo.cwiseAbs().maxCoeff(), tile.hi.cwiseAbs().maxCoeff());
     const std::size_t lead = std::size_t(std::min_element(s.gap2.begin(), s.gap2.begin() + long(nb)) - s.gap2.begin());
-    double reach = score(lead);
-    for (std::size_t b = 0; b < nb; ++b) {
-      const double bound = reach + s.margin[b] + tile_margin;
-      if (b != lead && s.gap2[b] <= bound * bound) reach = score(b);
-    }
+    double reach2 = score(lead);
+    for (std::size_t b = 0; b < nb; ++b)
+      if (b != lead && s.gap2[b] <= reach2) reach2 = score(b);
   }
 }
 
