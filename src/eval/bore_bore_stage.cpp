@@ -54,7 +54,7 @@ class BoreBoreStage final : public Stage {
 
  private:
   double margin_;
-  ExactCache<PairKey, CachedClearance> cache_{1 << 16};
+  ExactCache<PairKey, CachedClearance> cache_{1 << 10};
 };
 
 }  // namespace

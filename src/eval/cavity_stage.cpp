@@ -34,6 +34,7 @@ class CavityStage final : public Stage {
   }
   void run(const mold::Layout& layout, Evaluation& out) const override {
     for (const mold::Bore& b : layout.bores) {
+      if (box_ && box_gap(b.hole) > margin_.at(b.diameter)) continue;  // cheaper than the cache's lookup
       const CachedClearance& c = cache_.get(hole_key(b.hole, b.diameter), [&] { return clearance(b); });
       if (!c.clear)
         add_clearance(out, ViolationKind::BoreCavity, {b.name(), "cavity"}, c.distance, margin_.at(b.diameter),
@@ -42,6 +43,14 @@ class CavityStage final : public Stage {
   }
 
  private:
+  // The distance between the hole's box and the cavity's: at most the hole's distance to it.
+  double box_gap(const geometry::Cylinder& hole) const {
+    const geometry::Vec3 r = geometry::Vec3::Constant(hole.radius);
+    const geometry::Vec3 lo = hole.p0.cwiseMin(hole.p1) - r, hi = hole.p0.cwiseMax(hole.p1) + r;
+    const geometry::Vec3 gap = (lo - box_->max).cwiseMax(box_->min - hi).cwiseMax(0.0);
+    return gap.norm();
+  }
+
   CachedClearance clearance(const mold::Bore& b) const {
     const double margin = margin_.at(b.diameter);
     if (!patch_.empty()) {
@@ -66,7 +75,7 @@ class CavityStage final : public Stage {
   std::vector<geometry::Triangle> patch_;  // a patch on a block face: its two triangles
   const mesh::TriangleBvh* bvh_;
   mold::Length margin_;
-  ExactCache<HoleKey, CachedClearance> cache_{1 << 14};
+  ExactCache<HoleKey, CachedClearance> cache_{1 << 9};
 };
 
 }  // namespace

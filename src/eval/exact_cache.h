@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 #include "mtcs/geometry/exact_hash.h"
@@ -33,37 +34,50 @@ struct ExactKeyOps {
 template <class Key, class Value>
 class ExactCache {
  public:
-  // At most `capacity` entries per thread; a full cache starts over (the results never depend on
-  // what is cached, only the time does).
+  // Two generations of at most `capacity` entries each, per thread. New entries go into the young
+  // one; when it is full it becomes the old one and the old one is dropped. An entry found in the
+  // old generation moves back into the young one, so what a run keeps using (the parents' bores)
+  // outlives every turnover, while both tables stay small enough for the processor's cache: a
+  // lookup that misses it costs about what a recomputation saves (experiments/evaluate/es_run.md).
+  // The results never depend on what is cached, only the time does.
   explicit ExactCache(std::size_t capacity) : capacity_(capacity) {}
 
-  // The value for `key`, computed by `compute()` when this thread has not seen the key. The
-  // reference is valid until this thread's next call on this cache.
+  // The value for `key`, computed by `compute()` when this thread's cache does not hold the key.
+  // The reference is valid until this thread's next call on this cache.
   template <class Compute>
   const Value& get(const Key& key, Compute&& compute) const {
-    auto& map = local_.local();
-    if (const auto it = map.find(key); it != map.end()) return it->second;
-    if (map.size() >= capacity_) {
-      map.clear();
-      map.reserve(capacity_);  // one table for the next round, not a growth by doublings
-    }
-    // Key and value made before the insert: a flat table's slot must not see a throwing copy.
-    Key k(key);
-    Value v = compute();
-    return map.emplace(std::move(k), std::move(v)).first->second;
+    return get(key, std::forward<Compute>(compute), [](Value&& v) { return std::move(v); });
   }
 
-  // How many entries this thread's cache holds: inside `compute`, the new entry's index, below
-  // the capacity (a stage may keep large values in rows of its own, reused after a start-over).
-  std::size_t entries() const { return local_.local().size(); }
+  // The same, with `revive(Value&&)` making the young generation's value of an entry found in the
+  // old one (a stage whose values point into storage of its own copies it there).
+  template <class Compute, class Revive>
+  const Value& get(const Key& key, Compute&& compute, Revive&& revive) const {
+    Generations& g = local_.local();
+    if (const auto it = g.young.find(key); it != g.young.end()) return it->second;
+    // Key and value made before the insert: a flat table's slot must not see a throwing copy.
+    Key k(key);
+    const auto it = g.old.find(key);
+    Value v = it != g.old.end() ? revive(std::move(it->second)) : compute();
+    if (it != g.old.end()) g.old.erase(it);
+    if (g.young.size() >= capacity_) {
+      std::swap(g.young, g.old);
+      g.young.clear();
+      g.young.reserve(capacity_);  // one table for the next round, not a growth by doublings
+    }
+    return g.young.emplace(std::move(k), std::move(v)).first->second;
+  }
 
  private:
   // Open addressing (SwissTable): a lookup is a probe of a group of control bytes and a key
   // compare in place. std::unordered_map's was a division by a prime and a chase through two
   // nodes, each a cache miss in tables of megabytes, and an allocation per entry.
   using Map = absl::flat_hash_map<Key, Value, ExactKeyOps<Key>, ExactKeyOps<Key>>;
+  struct Generations {
+    Map young, old;
+  };
   std::size_t capacity_;
-  mutable tbb::enumerable_thread_specific<Map> local_;
+  mutable tbb::enumerable_thread_specific<Generations> local_;
 };
 
 // A bore's hole as a key: both ends, the radius, and the diameter its clearances are read at.

@@ -22,20 +22,32 @@ class KeepOutCylinderStage final : public Stage {
   }
   std::string name() const override { return "bore_keepout_cylinders"; }
   void run(const mold::Layout& layout, Evaluation& out) const override {
-    for (const mold::Bore& b : layout.bores)
+    for (const mold::Bore& b : layout.bores) {
+      if (!near_any(b.hole)) continue;  // most bores: cheaper than the cache's lookup
       for (const auto& [i, c] : cache_.get(hole_key(b.hole, b.diameter), [&] { return shortfalls(b); }))
         add_clearance(out, ViolationKind::BoreKeepout, {b.name(), keep_outs_[i].name}, c.distance,
                       keep_outs_[i].clearance, c.on_bore, c.on_other);
+    }
   }
 
  private:
+  // Does the hole's box meet keep-out i's box grown by its clearance?
+  bool near(const geometry::Cylinder& hole, std::size_t i) const {
+    const geometry::Vec3 r = geometry::Vec3::Constant(hole.radius);
+    const geometry::Vec3 lo = hole.p0.cwiseMin(hole.p1) - r, hi = hole.p0.cwiseMax(hole.p1) + r;
+    return !(lo.array() > boxes_[i].max.array()).any() && !(boxes_[i].min.array() > hi.array()).any();
+  }
+  bool near_any(const geometry::Cylinder& hole) const {
+    for (std::size_t i = 0; i < boxes_.size(); ++i)
+      if (near(hole, i)) return true;
+    return false;
+  }
+
   // The keep-outs closer to the bore than their clearance, in keep-out order.
   std::vector<std::pair<std::size_t, CachedClearance>> shortfalls(const mold::Bore& b) const {
     std::vector<std::pair<std::size_t, CachedClearance>> out;
-    const geometry::Vec3 r = geometry::Vec3::Constant(b.hole.radius);
-    const geometry::Vec3 lo = b.hole.p0.cwiseMin(b.hole.p1) - r, hi = b.hole.p0.cwiseMax(b.hole.p1) + r;
     for (std::size_t i = 0; i < keep_outs_.size(); ++i) {
-      if ((lo.array() > boxes_[i].max.array()).any() || (boxes_[i].min.array() > hi.array()).any()) continue;
+      if (!near(b.hole, i)) continue;
       const auto& k = keep_outs_[i];
       const auto d = geometry::distance(b.hole, *k.cylinder, {.upper_bound = k.clearance});
       if (!d.bounded) out.push_back({i, {false, d.distance, d.witness_a, d.witness_b}});
@@ -45,7 +57,7 @@ class KeepOutCylinderStage final : public Stage {
 
   std::vector<mold::KeepOut> keep_outs_;
   std::vector<geometry::Box> boxes_;
-  ExactCache<HoleKey, std::vector<std::pair<std::size_t, CachedClearance>>> cache_{1 << 14};
+  ExactCache<HoleKey, std::vector<std::pair<std::size_t, CachedClearance>>> cache_{1 << 9};
 };
 
 class KeepOutMeshStage final : public Stage {
@@ -76,7 +88,7 @@ class KeepOutMeshStage final : public Stage {
 
   const mold::Scene& scene_;
   std::vector<std::size_t> indices_;
-  ExactCache<HoleKey, std::vector<std::pair<std::size_t, CachedClearance>>> cache_{1 << 14};
+  ExactCache<HoleKey, std::vector<std::pair<std::size_t, CachedClearance>>> cache_{1 << 9};
 };
 
 }  // namespace

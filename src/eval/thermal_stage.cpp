@@ -141,8 +141,8 @@ class ThermalStage final : public Stage {
       key.insert(key.end(), {bore.flow_start.x(), bore.flow_start.y(), bore.flow_start.z(), bore.flow_end.x(),
                              bore.flow_end.y(), bore.flow_end.z()});
     }
-    return circuits_.get(key, [&] {
-      const std::size_t slots = tiles_.slots();
+    const std::size_t slots = tiles_.slots();
+    const auto compute = [&] {
       // Recomputed rather than cached per bore: a bore's column costs ~2 us to compute and about
       // as much to fetch from memory once the cache outgrows the processor's (experiments/evaluate).
       static thread_local std::vector<FlowSegment> segments;
@@ -151,15 +151,28 @@ class ThermalStage final : public Stage {
       for (std::size_t b = first; b < last; ++b) segments.push_back({layout.bores[b].flow_start, layout.bores[b].flow_end});
       near2.resize(slots);
       tiles_.nearest_squared(segments.data(), segments.data() + segments.size(), near2.data());
-      // The next row of this thread's ring: it outlives the cache's entries (at most kCircuits
-      // new ones since a start-over) by kPerLayout rows, so a layout's earlier rows stay whole.
-      Ring& ring = rows_.local();
-      if (ring.rows.empty()) ring.rows.resize((kCircuits + kPerLayout) * slots);
-      double* e = ring.rows.data() + ring.next * slots;
-      ring.next = (ring.next + 1) % (kCircuits + kPerLayout);
+      double* e = next_row();
       wall_distances(near2.data(), r, e, slots);
-      return e;
-    });
+      return static_cast<const double*>(e);
+    };
+    // A row found in the cache's old generation is copied to a fresh one: rows are recycled in
+    // the order they were written.
+    const auto revive = [&](const double*&& row) {
+      return static_cast<const double*>(std::copy_n(row, slots, next_row()) - slots);
+    };
+    return circuits_.get(key, compute, revive);
+  }
+
+  // The next row of this thread's ring. A cache entry's row was written at most 2 kCircuits rows
+  // ago (an entry lives two generations, a revived one gets a new row), and a layout writes at
+  // most kPerLayout rows, so the rows a layout has looked up stay whole until its end.
+  double* next_row() const {
+    const std::size_t slots = tiles_.slots();
+    Ring& ring = rows_.local();
+    if (ring.rows.empty()) ring.rows.resize(kRing * slots);
+    double* e = ring.rows.data() + ring.next * slots;
+    ring.next = (ring.next + 1) % kRing;
+    return e;
   }
 
   SurfaceSamples samples_;
@@ -172,7 +185,7 @@ class ThermalStage final : public Stage {
   // Per thread, by exact geometry: a child's unchanged circuits are not recomputed. The values
   // point into a ring of rows allocated once per thread (a column is ~18 kB on the plate: no
   // malloc and free of that size per new circuit, nor per start-over of the cache).
-  static constexpr std::size_t kCircuits = 256, kPerLayout = 64;
+  static constexpr std::size_t kCircuits = 128, kPerLayout = 64, kRing = 2 * kCircuits + kPerLayout;
   ExactCache<std::vector<double>, const double*> circuits_{kCircuits};
   struct Ring {
     std::vector<double> rows;

@@ -309,10 +309,12 @@ TEST_CASE("pipeline: the thermal stage's reused arrays carry nothing from one la
 
 TEST_CASE("pipeline: the thermal stage's rows of a layout stay whole when its circuit cache starts over",
           "[eval]") {
-  // The stage keeps 256 circuits per thread and their rows in a ring of 320: a layout whose
-  // first circuits hit rows 255 computations old and whose next 70 circuits are new wraps the
-  // ring over them (more circuits than the ring keeps for one layout: the stage copies them).
-  // Each layout scored warm must equal it scored on a thread and pipeline that saw nothing.
+  // The stage keeps two generations of 128 circuits per thread, their rows in a ring of 320; a
+  // circuit found in the old generation gets a fresh row. Below: a layout that revives old
+  // circuits, hits young ones written ~100 rows before and adds new ones while the young
+  // generation turns over; then, 90 rows later (row 0 written over), a layout of revived circuits
+  // whose first rows were 0-3. Each layout scored warm must equal it scored on a thread and
+  // pipeline that saw nothing.
   const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml");
   const mold::Scene scene(spec);
   const geometry::Box& b = scene.block_bounds();
@@ -323,15 +325,24 @@ TEST_CASE("pipeline: the thermal stage's rows of a layout stay whole when its ci
     std::thread([&] { out = eval::Pipeline(scene).evaluate(g).objectives; }).join();
     return out;
   };
+  auto singles = [&](int n, double z) {
+    mold::Genome last;
+    for (int i = 0; i < n; ++i) last.circuits.push_back(along_y(20 + 0.5 * i, z));
+    return last;
+  };
   const eval::Pipeline warm(scene);
-  std::vector<double> objectives;
   std::thread([&] {
     const mold::Genome first{{along_y(30, 20), along_y(60, 25), along_y(90, 30), along_y(120, 35)}};
     warm.evaluate(first);  // rows 0-3
-    for (int i = 0; i < 252; ++i) warm.evaluate(mold::Genome{{along_y(20 + 0.5 * i, 60)}});
-    mold::Genome big = first;  // hits on rows 0-3, then 70 new circuits
-    for (int i = 0; i < 70; ++i) big.circuits.push_back(along_y(40 + 0.5 * i, 80));
-    objectives = warm.evaluate(big).objectives;
-    CHECK(objectives == cold(big));
+    const mold::Genome a = singles(124, 60), b = singles(100, 70), c = singles(90, 90);
+    for (const auto& circuit : a.circuits) warm.evaluate(mold::Genome{{circuit}});  // the young one full
+    for (const auto& circuit : b.circuits) warm.evaluate(mold::Genome{{circuit}});  // the next
+    mold::Genome big = first;                                                       // revived
+    big.circuits.insert(big.circuits.end(), b.circuits.begin(), b.circuits.begin() + 30);  // young
+    big.circuits.insert(big.circuits.end(), a.circuits.begin(), a.circuits.begin() + 10);  // revived
+    for (int i = 0; i < 20; ++i) big.circuits.push_back(along_y(40 + 0.5 * i, 80));      // new
+    CHECK(warm.evaluate(big).objectives == cold(big));
+    for (const auto& circuit : c.circuits) warm.evaluate(mold::Genome{{circuit}});
+    CHECK(warm.evaluate(first).objectives == cold(first));
   }).join();
 }
