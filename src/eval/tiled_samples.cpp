@@ -6,6 +6,7 @@
 #include <cstring>
 #include <limits>
 #include <numeric>
+#include <span>
 
 namespace mtcs::eval {
 namespace {
@@ -16,11 +17,9 @@ constexpr std::size_t kTile = TiledSamples::kTile;
 // One bore over one tile: m_i = min(m_i, |p_i - segment|^2) in single precision (the expression
 // of the plain loop it stands for). Returns the tile's largest m_i afterwards. A fixed count: the
 // loops vectorise whole.
-__attribute__((target_clones("avx2", "default"))) float score_bore(const float* __restrict xs,
-                                                                   const float* __restrict ys,
-                                                                   const float* __restrict zs, const float a[3],
-                                                                   const float d[3], float inv,
-                                                                   float* __restrict m) {
+[[gnu::always_inline]] inline float score_bore(const float* __restrict xs, const float* __restrict ys,
+                                              const float* __restrict zs, const float a[3], const float d[3],
+                                              float inv, float* __restrict m) {
   const float ax = a[0], ay = a[1], az = a[2], dx = d[0], dy = d[1], dz = d[2];
   for (std::size_t i = 0; i < kTile; ++i) {
     const float px = xs[i] - ax, py = ys[i] - ay, pz = zs[i] - az;
@@ -46,10 +45,9 @@ __attribute__((target_clones("avx2", "default"))) float score_bore(const float* 
 // Per bore, the least distance a sample of the tile can have to it, less its rounding margin:
 // max(0, gap - margin_b - tile_margin), gap = the distance between the tile's box and the bore's.
 // Its square is what a tile's largest distance so far is compared with: no root in that chain.
-__attribute__((target_clones("avx2", "default"))) void box_gaps(const double* lo[3], const double* hi[3],
-                                                                const double* margin, const double tlo[3],
-                                                                const double thi[3], double tile_margin,
-                                                                std::size_t n, double* __restrict gap2) {
+[[gnu::always_inline]] inline void box_gaps(const double* lo[3], const double* hi[3], const double* margin,
+                                            const double tlo[3], const double thi[3], double tile_margin,
+                                            std::size_t n, double* __restrict gap2) {
   for (std::size_t b = 0; b < n; ++b) {
     double sum = 0;
     for (int k = 0; k < 3; ++k) {
@@ -85,12 +83,44 @@ void split(std::vector<std::uint32_t>& order, std::size_t first, std::size_t las
   split(order, mid, last, xyz, leaves);
 }
 
-// Per thread: no allocation per evaluation. Bores as the tiles use them: the single-precision
-// segment, its box, and the part of the rounding margin it brings.
-struct Scratch {
-  std::vector<std::array<float, 7>> segment;  // a, d, 1 / |d|^2
+// Bores as the tiles use them: the single-precision segment (a, d, 1 / |d|^2), its box and the
+// part of the rounding margin it brings. Per thread: no allocation per evaluation.
+struct Bores {
+  std::vector<std::array<float, 7>> segment;
   std::vector<double> lo[3], hi[3], margin, gap2;
 };
+
+// Every tile's m (TiledSamples::nearest_squared): one call, compiled for AVX2 where the CPU has
+// it, with the per-bore kernels inlined.
+__attribute__((target_clones("avx2", "default"))) void score_tiles(const TiledSamples::Tile* tiles,
+                                                                   std::size_t count, const float* xs,
+                                                                   const float* ys, const float* zs, Bores& s,
+                                                                   float* m) {
+  const std::size_t nb = s.segment.size();
+  const double* lo[3] = {s.lo[0].data(), s.lo[1].data(), s.lo[2].data()};
+  const double* hi[3] = {s.hi[0].data(), s.hi[1].data(), s.hi[2].data()};
+  for (const TiledSamples::Tile& tile : std::span(tiles, count)) {
+    float* tm = m + tile.begin;
+    std::fill_n(tm, kTile, std::numeric_limits<float>::infinity());
+    if (nb == 0) continue;
+    const double tlo[3] = {tile.lo.x(), tile.lo.y(), tile.lo.z()}, thi[3] = {tile.hi.x(), tile.hi.y(), tile.hi.z()};
+    box_gaps(lo, hi, s.margin.data(), tlo, thi, tile.margin, nb, s.gap2.data());
+    // A computed distance is at least max(0, gap - margin) (1 - 1e-6), gap = the distance between
+    // the boxes: the margin covers the single-precision rounding (~2e-7 of the coordinates) 50
+    // times over. A bore with gap - margin > reach cannot lower an m_i; compared in squares,
+    // reach^2 = the tile's largest m_i (1 + 2e-6) >= largest / (1 - 1e-6): no division either.
+    auto score = [&](std::size_t b) {
+      const auto& f = s.segment[b];
+      const float largest = score_bore(xs + tile.begin, ys + tile.begin, zs + tile.begin, f.data(), f.data() + 3,
+                                       f[6], tm);
+      return double(largest) * (1 + 2e-6);
+    };
+    const std::size_t lead = std::size_t(std::min_element(s.gap2.begin(), s.gap2.begin() + long(nb)) - s.gap2.begin());
+    double reach2 = score(lead);
+    for (std::size_t b = 0; b < nb; ++b)
+      if (b != lead && s.gap2[b] <= reach2) reach2 = score(b);
+  }
+}
 
 }  // namespace
 
@@ -110,19 +140,20 @@ TiledSamples::TiledSamples(const SurfaceSamples& samples, const Vec3& origin) : 
   slot_.resize(n);
   for (const auto& [first, last] : leaves) {
     Tile t{std::uint32_t(xs_.size()), Vec3::Constant(std::numeric_limits<double>::infinity()),
-           Vec3::Constant(-std::numeric_limits<double>::infinity())};
+           Vec3::Constant(-std::numeric_limits<double>::infinity()), 0};
     for (std::size_t k = 0; k < kTile; ++k) {
       const std::uint32_t i = order[first + k < last ? first + k : first];  // padding: the first sample again
       if (first + k < last) slot_[i] = std::uint32_t(xs_.size());
       xs_.push_back(x[i]), ys_.push_back(y[i]), zs_.push_back(z[i]);
       t.lo = t.lo.cwiseMin(Vec3(x[i], y[i], z[i])), t.hi = t.hi.cwiseMax(Vec3(x[i], y[i], z[i]));
     }
+    t.margin = 1e-5 * std::max(t.lo.cwiseAbs().maxCoeff(), t.hi.cwiseAbs().maxCoeff());
     tiles_.push_back(t);
   }
 }
 
 void TiledSamples::nearest_squared(const FlowSegment* first, const FlowSegment* last, float* m) const {
-  static thread_local Scratch s;
+  static thread_local Bores s;
   const std::size_t nb = std::size_t(last - first);
   s.segment.resize(nb);
   for (int k = 0; k < 3; ++k) s.lo[k].resize(nb), s.hi[k].resize(nb);
@@ -142,30 +173,7 @@ void TiledSamples::nearest_squared(const FlowSegment* first, const FlowSegment* 
     }
     s.margin[b] = 1e-5 * (2 * scale + 1);
   }
-  const double* lo[3] = {s.lo[0].data(), s.lo[1].data(), s.lo[2].data()};
-  const double* hi[3] = {s.hi[0].data(), s.hi[1].data(), s.hi[2].data()};
-  for (const Tile& tile : tiles_) {
-    float* tm = m + tile.begin;
-    std::fill_n(tm, kTile, std::numeric_limits<float>::infinity());
-    if (nb == 0) continue;
-    const double tlo[3] = {tile.lo.x(), tile.lo.y(), tile.lo.z()}, thi[3] = {tile.hi.x(), tile.hi.y(), tile.hi.z()};
-    const double tile_margin = 1e-5 * std::max(tile.lo.cwiseAbs().maxCoeff(), tile.hi.cwiseAbs().maxCoeff());
-    box_gaps(lo, hi, s.margin.data(), tlo, thi, tile_margin, nb, s.gap2.data());
-    // A computed distance is at least max(0, gap - margin) (1 - 1e-6), gap = the distance between
-    // the boxes: the margin covers the single-precision rounding (~2e-7 of the coordinates) 50
-    // times over. A bore with gap - margin > reach cannot lower an m_i; compared in squares,
-    // reach^2 = the tile's largest m_i / (1 - 1e-6).
-    auto score = [&](std::size_t b) {
-      const auto& f = s.segment[b];
-      const float largest = score_bore(xs_.data() + tile.begin, ys_.data() + tile.begin, zs_.data() + tile.begin,
-                                       f.data(), f.data() + 3, f[6], tm);
-      return double(largest) / (1 - 1e-6);
-    };
-    const std::size_t lead = std::size_t(std::min_element(s.gap2.begin(), s.gap2.begin() + long(nb)) - s.gap2.begin());
-    double reach2 = score(lead);
-    for (std::size_t b = 0; b < nb; ++b)
-      if (b != lead && s.gap2[b] <= reach2) reach2 = score(b);
-  }
+  score_tiles(tiles_.data(), tiles_.size(), xs_.data(), ys_.data(), zs_.data(), s, m);
 }
 
 }  // namespace mtcs::eval

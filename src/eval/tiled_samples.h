@@ -36,11 +36,13 @@ class TiledSamples {
   // m[k] = min over the segments of the squared distance from slot k's sample, for every slot.
   void nearest_squared(const FlowSegment* first, const FlowSegment* last, float* m) const;
 
- private:
   struct Tile {
     std::uint32_t begin;    // its slots [begin, begin + kTile)
     geometry::Vec3 lo, hi;  // its samples' box, in single-precision coordinates
+    double margin;          // the rounding of its samples' coordinates, bounded
   };
+
+ private:
   geometry::Vec3 origin_;
   std::vector<float> xs_, ys_, zs_;  // relative to origin_, per slot
   std::vector<std::uint32_t> slot_;  // sample -> slot
