@@ -25,7 +25,8 @@ class BoreBoreStage final : public Stage {
       Vec3 lo, hi;
       int index;
     };
-    std::vector<Item> items(n);
+    static thread_local std::vector<Item> items;  // per thread: no allocation per evaluation
+    items.resize(n);
     const double pad = margin_ / 2;
     for (std::size_t i = 0; i < n; ++i) {
       const auto& c = layout.bores[i].hole;

@@ -30,16 +30,17 @@ struct Candidate {
   double length;
 };
 
-}  // namespace
-
-std::vector<Vec3> routed_waypoints(const Scene& scene, const Circuit& circuit) {
+// The routed waypoints into `merged`, through `pts` (both cleared first): decode reuses both
+// per thread, so a layout's routes allocate nothing.
+void route(const Scene& scene, const Circuit& circuit, std::vector<Vec3>& pts, std::vector<Vec3>& merged) {
+  pts.clear();
+  merged.clear();
   const double tiny = 1e-9 * std::max(1.0, scene.block_bounds().size().maxCoeff());
   const Drilling& drill = scene.spec().drilling;
   // Axes no allowed face lets a drill run along: with axis-parallel holes, a circuit keeps
   // its inlet's coordinate along them.
   std::array<bool, 3> drillable{false, false, false};
   for (const Face f : drill.allowed_faces) drillable[std::size_t(axis_of(f))] = true;
-  std::vector<Vec3> pts;
   for (Vec3 p : circuit.waypoints) {
     if (drill.axis_parallel && !pts.empty())
       for (int k = 0; k < 3; ++k)
@@ -64,7 +65,6 @@ std::vector<Vec3> routed_waypoints(const Scene& scene, const Circuit& circuit) {
     }
   }
   // A waypoint where the path goes straight on is drilled through: one hole, not two.
-  std::vector<Vec3> merged;
   for (const Vec3& p : pts) {
     if (merged.size() >= 2) {
       const Vec3 a = merged[merged.size() - 2], b = merged.back();
@@ -75,6 +75,13 @@ std::vector<Vec3> routed_waypoints(const Scene& scene, const Circuit& circuit) {
       merged.push_back(p);
     }
   }
+}
+
+}  // namespace
+
+std::vector<Vec3> routed_waypoints(const Scene& scene, const Circuit& circuit) {
+  std::vector<Vec3> pts, merged;
+  route(scene, circuit, pts, merged);
   return merged;
 }
 
@@ -92,9 +99,14 @@ Layout decode(const Scene& scene, const Genome& genome) {
   const Drilling& drill = spec.drilling;
   const double port_tol = 1e-6 * std::max(1.0, scene.block_bounds().size().maxCoeff());
   Layout layout;
+  std::size_t waypoints = 0;
+  for (const Circuit& circuit : genome.circuits) waypoints += circuit.waypoints.size();
+  layout.bores.reserve(waypoints);  // one leg per waypoint, as most routes have: not a growth by doublings
+  layout.junctions.reserve(waypoints);
+  static thread_local std::vector<Vec3> legs, pts;
   for (std::size_t c = 0; c < genome.circuits.size(); ++c) {
     const Circuit& circuit = genome.circuits[c];
-    const std::vector<Vec3> pts = routed_waypoints(scene, circuit);
+    route(scene, circuit, legs, pts);
     if (pts.size() < 2) continue;
     const double inlet_off = off_faces(scene.block_bounds(), pts.front(), spec.circuits.inlet_faces);
     const double outlet_off = off_faces(scene.block_bounds(), pts.back(), spec.circuits.outlet_faces);

@@ -13,15 +13,22 @@
 namespace mtcs::run {
 
 // [first, last) index ranges covering w, one per run of equal coordinate k (relative 1e-9).
-inline std::vector<std::pair<std::size_t, std::size_t>> aligned_runs(const std::vector<geometry::Vec3>& w, int k) {
-  std::vector<std::pair<std::size_t, std::size_t>> runs;
+// Calls f(first, last) for each run in order, allocating nothing (the mutation's hot loop). f may
+// change its own run's coordinates: the next run is read afterwards, from its own points only.
+template <class F>
+void for_each_aligned_run(const std::vector<geometry::Vec3>& w, int k, F&& f) {
   std::size_t i = 0;
   while (i < w.size()) {
     std::size_t j = i + 1;
     while (j < w.size() && std::abs(w[j][k] - w[i][k]) <= 1e-9 * (1 + std::abs(w[i][k]))) ++j;
-    runs.emplace_back(i, j);
+    f(i, j);
     i = j;
   }
+}
+
+inline std::vector<std::pair<std::size_t, std::size_t>> aligned_runs(const std::vector<geometry::Vec3>& w, int k) {
+  std::vector<std::pair<std::size_t, std::size_t>> runs;
+  for_each_aligned_run(w, k, [&](std::size_t first, std::size_t last) { runs.emplace_back(first, last); });
   return runs;
 }
 

@@ -183,10 +183,10 @@ long MoldProblem::mutate(opt::Genotype& x, const std::vector<double>& steps, opt
       // coordinate (the ends of a hole across it) shift together, so aligned holes stay
       // aligned instead of breaking into zig-zags.
       for (int k = 0; k < 3; ++k)
-        for (const auto& [first, last] : aligned_runs(w, k)) {
+        for_each_aligned_run(w, k, [&](std::size_t first, std::size_t last) {
           const double shift = sigma * rng.normal();
           for (std::size_t m = first; m < last; ++m) w[m][k] += shift;
-        }
+        });
     } else {
       for (Vec3& p : w) p += sigma * Vec3(rng.normal(), rng.normal(), rng.normal());
     }
@@ -213,7 +213,7 @@ long MoldProblem::mutate(opt::Genotype& x, const std::vector<double>& steps, opt
 int MoldProblem::movable_parts(const mold::Circuit& c) const {
   if (!spec_.drilling.axis_parallel) return int(c.waypoints.size());
   int n = 0;
-  for (int k = 0; k < 3; ++k) n += int(aligned_runs(c.waypoints, k).size());
+  for (int k = 0; k < 3; ++k) for_each_aligned_run(c.waypoints, k, [&](std::size_t, std::size_t) { ++n; });
   return n;
 }
 
@@ -222,12 +222,12 @@ int MoldProblem::move_some(mold::Circuit& c, double sigma, double probability, o
   int moved = 0;
   if (spec_.drilling.axis_parallel) {
     for (int k = 0; k < 3; ++k)
-      for (const auto& [first, last] : aligned_runs(w, k)) {
-        if (rng.uniform() >= probability) continue;
+      for_each_aligned_run(w, k, [&](std::size_t first, std::size_t last) {
+        if (rng.uniform() >= probability) return;
         const double shift = sigma * rng.normal();
         for (std::size_t m = first; m < last; ++m) w[m][k] += shift;
         ++moved;
-      }
+      });
   } else {
     for (Vec3& p : w) {
       if (rng.uniform() >= probability) continue;
