@@ -40,3 +40,44 @@ TEST_CASE("cylinder vs box: the box as a closed mesh agrees", "[geometry][box]")
     CHECK(ours == Approx(mesh.distance).margin(1e-12 * 30));
   }
 }
+
+TEST_CASE("cylinder vs box: the axis-parallel closed form agrees with the triangles", "[geometry][box]") {
+  // The same cylinder tilted by 1e-300 along one cross axis takes the general path (its ends
+  // differ there) and is the same solid to the last bit of every distance.
+  const Box box{{-1, -2, -3}, {4, 5, 6}};
+  const mtcs::mesh::TriangleBvh bvh(mtcs::mesh::box_mesh(box));
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> coord(-12, 12), radius(0.05, 3);
+  int touching = 0, near = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const int a = i % 3, u = (a + 1) % 3;
+    Vec3 p0(coord(rng), coord(rng), coord(rng)), p1 = p0;
+    p1[a] = coord(rng);
+    const Cylinder c{p0, p1, radius(rng)};
+    Cylinder tilted = c;
+    tilted.p1[u] = std::nextafter(c.p1[u], 1e300);
+    const auto ours = distance(c, box);
+    const auto general = distance(tilted, box);
+    INFO("case " << i);
+    CHECK(!ours.bounded);
+    CHECK(ours.distance == Approx(general.distance).margin(1e-12 * 30));
+    const auto mesh = mtcs::mesh::cylinder_clearance(bvh, c, std::numeric_limits<double>::infinity());
+    CHECK(ours.distance == Approx(mesh.distance).margin(1e-12 * 30));
+    // The witnesses: on the cylinder and on the box, as far apart as the distance.
+    CHECK((ours.on_cylinder - ours.on_triangle).norm() == Approx(ours.distance).margin(1e-12 * 30));
+    CHECK(box.contains(ours.on_triangle));
+    const Vec3 axis = (c.p1 - c.p0).normalized(), w = ours.on_cylinder - c.p0;
+    const double along = w.dot(axis), across = (w - along * axis).norm();
+    CHECK(along >= -1e-12);
+    CHECK(along <= (c.p1 - c.p0).norm() + 1e-12);
+    CHECK(across <= c.radius + 1e-12);
+    touching += ours.distance == 0;
+    near += ours.distance > 0 && ours.distance < 1;
+    // The bound: bounded exactly when the distance reaches it.
+    const auto capped = distance(c, box, {.upper_bound = 1.0});
+    CHECK(capped.bounded == (ours.distance >= 1.0));
+    if (!capped.bounded) CHECK(capped.distance == ours.distance);
+  }
+  CHECK(touching > 100);
+  CHECK(near > 100);
+}
