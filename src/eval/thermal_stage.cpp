@@ -22,10 +22,12 @@ namespace {
 
 using geometry::Vec3;
 
-// e[i] = sqrt(m[i]) - r: a circuit's squared distances to effective wall distances.
+// e[i] = sqrt(m[i]) - r: a circuit's squared distances to effective wall distances. The root in
+// single precision, as m is: its rounding (6e-8 relative) is m's own, at a fraction of the cost of
+// a double root (vsqrtpd's throughput was ~9 % of a plate run; experiments/evaluate/es_run.md).
 __attribute__((target_clones("avx2", "default"))) void wall_distances(const float* __restrict m, double r,
                                                                       double* __restrict e, std::size_t n) {
-  for (std::size_t i = 0; i < n; ++i) e[i] = std::sqrt(double(m[i])) - r;
+  for (std::size_t i = 0; i < n; ++i) e[i] = double(std::sqrt(m[i])) - r;
 }
 
 // Per slot, the nearest circuit's e (from `n` circuits' rows e[c], targets t[c]; none and t0

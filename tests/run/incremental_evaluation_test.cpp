@@ -156,7 +156,7 @@ TEST_CASE("The thermal objectives equal the plain loop's bit for bit", "[run][in
       const double r = layout.bores[first].diameter / 2;
       const std::vector<float> m = mtcs_test::plain_nearest_squared(s, origin, segments);
       for (std::size_t i = 0; i < s.size(); ++i) {
-        const double e = std::sqrt(double(m[i])) - r;
+        const double e = double(std::sqrt(m[i])) - r;  // the root in single precision, as m
         if (e < best[i]) best[i] = e, target[i] = target_at.at(2 * r);
       }
     }
