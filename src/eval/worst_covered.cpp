@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "mtcs/geometry/segment_distance.h"
+#include "exact_cache.h"
 #include "tiled_samples.h"
 
 namespace mtcs::eval {
@@ -13,6 +14,9 @@ using geometry::Vec3;
 
 struct WorstCoveredSearch::Tiles {
   TiledSamples tiled;
+  // Per thread, by the bores' exact geometry: the reach move asks about a parent once per child
+  // it makes (tests/eval/worst_covered_test.cpp).
+  ExactCache<std::vector<double>, WorstSample> found{64};
 };
 
 namespace {
@@ -45,6 +49,15 @@ WorstCoveredSearch& WorstCoveredSearch::operator=(WorstCoveredSearch&&) noexcept
 WorstSample WorstCoveredSearch::find(const mold::Layout& layout) const {
   if (samples_.empty()) return {};
   if (layout.bores.empty()) return {samples_.front(), std::numeric_limits<double>::infinity(), true};
+  static thread_local std::vector<double> key;  // per thread: a lookup that hits allocates nothing
+  key.clear();
+  for (const mold::Bore& b : layout.bores)
+    key.insert(key.end(), {b.flow_start.x(), b.flow_start.y(), b.flow_start.z(), b.flow_end.x(), b.flow_end.y(),
+                           b.flow_end.z(), b.diameter});
+  return tiles_->found.get(key, [&] { return search(layout); });
+}
+
+WorstSample WorstCoveredSearch::search(const mold::Layout& layout) const {
   const TiledSamples& tiles = tiles_->tiled;
   const std::size_t slots = tiles.slots();
   // Per thread: no allocation per search.

@@ -70,6 +70,17 @@ TEST_CASE("the worst-covered search picks the plain loop's sample and distance",
       REQUIRE(got.any);
       CHECK(got.point == want.point);
       CHECK(got.wall_distance == want.wall_distance);  // bit for bit
+      // Asked again (the search keeps its answers by the bores' geometry), and with one bore's
+      // diameter or end changed, which must not find the kept answer.
+      CHECK(search.find(layout).wall_distance == want.wall_distance);
+      if (n > 0) {
+        mold::Layout other = layout;
+        if (trial % 2 == 0) other.bores.back().diameter += 2;
+        else other.bores.back().flow_end.z() += 1e-9;
+        const eval::WorstSample changed = search.find(other), plain = plain_worst(samples, other);
+        CHECK(changed.point == plain.point);
+        CHECK(changed.wall_distance == plain.wall_distance);
+      }
     }
   }
   CHECK_FALSE(eval::WorstCoveredSearch({}, Vec3::Zero()).find(mold::Layout{}).any);

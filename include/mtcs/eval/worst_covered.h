@@ -35,6 +35,7 @@ class WorstCoveredSearch {
   bool empty() const { return samples_.empty(); }
 
  private:
+  WorstSample search(const mold::Layout& layout) const;
   struct Tiles;
   std::vector<geometry::Vec3> samples_;
   geometry::Vec3 origin_;
