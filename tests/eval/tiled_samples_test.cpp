@@ -24,6 +24,11 @@ TEST_CASE("tiled nearest squared distances equal the plain loop bit for bit", "[
   for (int i = 0; i < 301; ++i)
     samples.x.push_back(300 * u(rng)), samples.y.push_back(200 * u(rng)), samples.z.push_back(120 * u(rng)),
         samples.weight.push_back(1);
+  // On the block's faces y = 0 and z = 0, with both signs of zero: exact zero offsets from the
+  // axis-parallel segments along them below.
+  for (int i = 0; i < 40; ++i)
+    samples.x.push_back(7.5 * i), samples.y.push_back(i % 2 ? -0.0 : 0.0), samples.z.push_back(i % 3 ? 0.0 : -0.0),
+        samples.weight.push_back(1);
   const Vec3 origin = block.min;
   const eval::TiledSamples tiles(samples, origin);
   REQUIRE(tiles.slots() % eval::TiledSamples::kTile == 0);
@@ -35,11 +40,17 @@ TEST_CASE("tiled nearest squared distances equal the plain loop bit for bit", "[
     const int n = trial % 7 == 0 ? 0 : 1 + int(u(rng) * 12);
     for (int b = 0; b < n; ++b) {
       Vec3 p = point(), q = point();
-      const int kind = int(u(rng) * 5);
+      const int kind = int(u(rng) * 7);
       if (kind == 0) q = p;                                                  // zero length
       if (kind == 1) q = p, q[int(u(rng) * 3)] += 200 * (u(rng) - 0.5);      // axis-parallel
       if (kind == 2) p += Vec3(500, -400, 900), q += Vec3(500, -400, 900);   // far outside
       if (kind == 3) p.z() = q.z() = 50 + 1e-4 * u(rng);                     // on the cavity's face
+      if (kind == 4) {  // axis-parallel through samples: exact zero offsets
+        const std::size_t j = std::size_t(u(rng) * double(samples.size()));
+        p = Vec3(samples.x[j], samples.y[j], samples.z[j]), q = p;
+        q[int(u(rng) * 3)] += 200 * (u(rng) - 0.5);
+      }
+      if (kind == 5) p = Vec3(300 * u(rng), 0.0, -0.0), q = Vec3(300 * u(rng), -0.0, 0.0);  // signed zeros along x
       segments.push_back({p, q});
     }
     // Near copies: equal distances from several bores.
