@@ -34,23 +34,17 @@ class CavityStage final : public Stage {
   }
   void run(const mold::Layout& layout, Evaluation& out) const override {
     for (const mold::Bore& b : layout.bores) {
-      if (box_ && box_gap(b.hole) > margin_.at(b.diameter)) continue;  // cheaper than the cache's lookup
+      // The boxes farther apart than the margin: clear, and cheaper to tell than the cache's lookup.
+      const double margin = margin_.at(b.diameter);
+      if (box_ && geometry::box_distance_sq(cylinder_box(b.hole), *box_) > margin * margin) continue;
       const CachedClearance& c = cache_.get(hole_key(b.hole, b.diameter), [&] { return clearance(b); });
       if (!c.clear)
-        add_clearance(out, ViolationKind::BoreCavity, {b.name(), "cavity"}, c.distance, margin_.at(b.diameter),
+        add_clearance(out, ViolationKind::BoreCavity, {b.name(), "cavity"}, c.distance, margin,
                       c.on_bore, c.on_other);
     }
   }
 
  private:
-  // The distance between the hole's box and the cavity's: at most the hole's distance to it.
-  double box_gap(const geometry::Cylinder& hole) const {
-    const geometry::Vec3 r = geometry::Vec3::Constant(hole.radius);
-    const geometry::Vec3 lo = hole.p0.cwiseMin(hole.p1) - r, hi = hole.p0.cwiseMax(hole.p1) + r;
-    const geometry::Vec3 gap = (lo - box_->max).cwiseMax(box_->min - hi).cwiseMax(0.0);
-    return gap.norm();
-  }
-
   CachedClearance clearance(const mold::Bore& b) const {
     const double margin = margin_.at(b.diameter);
     if (!patch_.empty()) {

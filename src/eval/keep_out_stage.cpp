@@ -16,14 +16,13 @@ class KeepOutCylinderStage final : public Stage {
       if (!k.cylinder) continue;
       keep_outs_.push_back(k);
       // The keep-out's box grown by its clearance: a bore box that misses it is clear.
-      const geometry::Vec3 grow = geometry::Vec3::Constant(k.cylinder->radius + k.clearance);
-      boxes_.push_back({k.cylinder->p0.cwiseMin(k.cylinder->p1) - grow, k.cylinder->p0.cwiseMax(k.cylinder->p1) + grow});
+      boxes_.push_back(cylinder_box(*k.cylinder, k.clearance));
     }
   }
   std::string name() const override { return "bore_keepout_cylinders"; }
   void run(const mold::Layout& layout, Evaluation& out) const override {
     for (const mold::Bore& b : layout.bores) {
-      if (!near_any(b.hole)) continue;  // most bores: cheaper than the cache's lookup
+      if (!near_any(cylinder_box(b.hole))) continue;  // most bores: cheaper than the cache's lookup
       for (const auto& [i, c] : cache_.get(hole_key(b.hole, b.diameter), [&] { return shortfalls(b); }))
         add_clearance(out, ViolationKind::BoreKeepout, {b.name(), keep_outs_[i].name}, c.distance,
                       keep_outs_[i].clearance, c.on_bore, c.on_other);
@@ -31,13 +30,11 @@ class KeepOutCylinderStage final : public Stage {
   }
 
  private:
-  // Does the hole's box meet keep-out i's box grown by its clearance?
-  bool near(const geometry::Cylinder& hole, std::size_t i) const {
-    const geometry::Vec3 r = geometry::Vec3::Constant(hole.radius);
-    const geometry::Vec3 lo = hole.p0.cwiseMin(hole.p1) - r, hi = hole.p0.cwiseMax(hole.p1) + r;
-    return !(lo.array() > boxes_[i].max.array()).any() && !(boxes_[i].min.array() > hi.array()).any();
+  // Does a hole's box meet keep-out i's box grown by its clearance?
+  bool near(const geometry::Box& hole, std::size_t i) const {
+    return !(geometry::box_distance_sq(hole, boxes_[i]) > 0);  // touching counts; so does NaN, as before
   }
-  bool near_any(const geometry::Cylinder& hole) const {
+  bool near_any(const geometry::Box& hole) const {
     for (std::size_t i = 0; i < boxes_.size(); ++i)
       if (near(hole, i)) return true;
     return false;
@@ -46,8 +43,9 @@ class KeepOutCylinderStage final : public Stage {
   // The keep-outs closer to the bore than their clearance, in keep-out order.
   std::vector<std::pair<std::size_t, CachedClearance>> shortfalls(const mold::Bore& b) const {
     std::vector<std::pair<std::size_t, CachedClearance>> out;
+    const geometry::Box hole = cylinder_box(b.hole);
     for (std::size_t i = 0; i < keep_outs_.size(); ++i) {
-      if (!near(b.hole, i)) continue;
+      if (!near(hole, i)) continue;
       const auto& k = keep_outs_[i];
       const auto d = geometry::distance(b.hole, *k.cylinder, {.upper_bound = k.clearance});
       if (!d.bounded) out.push_back({i, {false, d.distance, d.witness_a, d.witness_b}});

@@ -5,6 +5,7 @@
 
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/eval/temperature_objectives.h"
+#include "mtcs/geometry/triangle_distance.h"
 #include "surface_samples.h"
 
 namespace mtcs::eval {
@@ -21,6 +22,13 @@ std::unique_ptr<Stage> make_surface_stage(const mold::Scene& scene);
 std::unique_ptr<Stage> make_drilling_stage(const mold::Scene& scene);
 class DrillAccess;
 std::unique_ptr<Stage> make_drillable_stage(const DrillAccess& access);
+
+// The box of a cylinder grown by `grow` on every side: the clearance stages' cheap first test
+// (geometry::box_distance_sq against the other element's box).
+inline geometry::Box cylinder_box(const geometry::Cylinder& c, double grow = 0) {
+  const geometry::Vec3 r = geometry::Vec3::Constant(c.radius + grow);
+  return {c.p0.cwiseMin(c.p1) - r, c.p0.cwiseMax(c.p1) + r};
+}
 
 // A clearance shortfall as a violation; nothing when the distance meets the margin.
 void add_clearance(Evaluation& out, ViolationKind kind, std::vector<std::string> elements, double distance,
