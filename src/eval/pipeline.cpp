@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "mtcs/eval/drill_access.h"
 #include "mtcs/eval/thermal_model.h"
@@ -78,6 +79,18 @@ Evaluation Pipeline::constraints(const mold::Layout& layout) const {
   e.objectives.assign(scene_.spec().objectives.use.size(), 0.0);
   for (std::size_t s = objective_stages_; s < stages_.size(); ++s) stages_[s]->run(layout, e);
   for (const Violation& v : e.violations) e.violation += std::pow(v.amount, scene_.spec().penalty.power);
+  return e;
+}
+
+Evaluation Pipeline::evaluate_if_feasible(const mold::Genome& genome) const {
+  const mold::Layout layout = mold::decode(scene_, genome);
+  Evaluation e = constraints(layout);
+  if (!e.feasible()) {
+    std::fill(e.objectives.begin(), e.objectives.end(), std::numeric_limits<double>::infinity());
+    return e;
+  }
+  // The objective stages add no violations, so this is evaluate's result bit for bit.
+  for (std::size_t s = 0; s < objective_stages_; ++s) stages_[s]->run(layout, e);
   return e;
 }
 

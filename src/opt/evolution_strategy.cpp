@@ -25,6 +25,11 @@ void sort_population(const Problem& problem, std::vector<Individual>& pop) {
                    [&](const Individual& a, const Individual& b) { return problem.better(a.score, b.score); });
 }
 
+const Individual& worst_of(const Problem& problem, const std::vector<Individual>& pop) {
+  return *std::max_element(pop.begin(), pop.end(),
+                           [&](const Individual& a, const Individual& b) { return problem.better(a.score, b.score); });
+}
+
 }  // namespace
 
 Generation EvolutionStrategy::initial() const {
@@ -152,7 +157,11 @@ Generation EvolutionStrategy::step(const Generation& prev_generation) const {
   if (config_.survivors > 0 && config_.survivors < lambda) {
     offspring = screened(offspring, xs);
   } else {
-    const auto scores = evaluate_all(problem_, xs);
+    // With mu parents in the pool, an offspring behind the worst of them is not kept: the
+    // problem may skip what would not change that (an infeasible child's objectives).
+    const bool bar = config_.plus && int(prev.population.size()) >= config_.mu && !prev.population.empty();
+    const auto scores =
+        bar ? evaluate_all(problem_, xs, worst_of(problem_, prev.population).score) : evaluate_all(problem_, xs);
     for (int i = 0; i < lambda; ++i) offspring[std::size_t(i)].score = scores[std::size_t(i)];
   }
 

@@ -12,6 +12,12 @@ std::vector<Score> evaluate_all(const Problem& problem, const std::vector<Genoty
   return scores;
 }
 
+std::vector<Score> evaluate_all(const Problem& problem, const std::vector<Genotype>& xs, const Score& bar) {
+  std::vector<Score> scores(xs.size());
+  tbb::parallel_for(std::size_t(0), xs.size(), [&](std::size_t i) { scores[i] = problem.evaluate_unless_behind(xs[i], bar); });
+  return scores;
+}
+
 std::vector<Score> screen_all(const Problem& problem, const std::vector<Genotype>& xs) {
   std::vector<Score> scores(xs.size());
   tbb::parallel_for(std::size_t(0), xs.size(), [&](std::size_t i) { scores[i] = problem.screen(xs[i]); });

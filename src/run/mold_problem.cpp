@@ -367,6 +367,14 @@ opt::Score MoldProblem::evaluate(const opt::Genotype& g) const {
   return s;
 }
 
+opt::Score MoldProblem::evaluate_unless_behind(const opt::Genotype& g, const opt::Score& bar) const {
+  if (ranking_.penalty.variant != mold::PenaltyVariant::ConstrainedDomination || !bar.feasible) return evaluate(g);
+  opt::Score s = score(pipeline_.evaluate_if_feasible(genome(g)));
+  ++evaluated_;
+  if (s.feasible) ++feasible_;
+  return s;
+}
+
 opt::Score MoldProblem::screen(const opt::Genotype& g) const {
   if (!screen_) return evaluate(g);
   ++screened_;
@@ -374,7 +382,10 @@ opt::Score MoldProblem::screen(const opt::Genotype& g) const {
 }
 
 opt::Score MoldProblem::score(const eval::Pipeline& pipeline, const opt::Genotype& g) const {
-  const eval::Evaluation e = pipeline.evaluate(genome(g));
+  return score(pipeline.evaluate(genome(g)));
+}
+
+opt::Score MoldProblem::score(const eval::Evaluation& e) const {
   // "kind element element distance/margin; ..." for the run store.
   std::string detail;
   for (const auto& v : e.violations) {

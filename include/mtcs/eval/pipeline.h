@@ -38,6 +38,10 @@ class Pipeline {
   // callers that ask only whether a layout is feasible (the reach move tries circuits alone):
   // the objective stages (the thermal proxies, the solver) are most of an evaluation's cost.
   Evaluation constraints(const mold::Layout& layout) const;
+  // evaluate, but the objectives only for a feasible layout: an infeasible one gets its
+  // violations and CV as evaluate gives them and every objective at +inf, not computed. For
+  // optimisers that rank any infeasible layout behind the feasible ones they hold.
+  Evaluation evaluate_if_feasible(const mold::Genome& genome) const;
 
   std::vector<std::string> stage_names() const;
   std::vector<std::string> objective_names() const;

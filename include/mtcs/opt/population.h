@@ -27,6 +27,8 @@ struct Generation {
 
 // Evaluates in parallel (TBB); results in input order, whatever the thread count.
 std::vector<Score> evaluate_all(const Problem& problem, const std::vector<Genotype>& xs);
+// The same with Problem::evaluate_unless_behind(x, bar) for each.
+std::vector<Score> evaluate_all(const Problem& problem, const std::vector<Genotype>& xs, const Score& bar);
 // The same with Problem::screen.
 std::vector<Score> screen_all(const Problem& problem, const std::vector<Genotype>& xs);
 // `count` samples drawn from the generators of generation 0, evaluated in parallel, in

@@ -65,6 +65,14 @@ class Problem {
   virtual Genotype recombine(const Genotype& a, const Genotype& b, Rng& rng) const;
   // Thread-safe.
   virtual Score evaluate(const Genotype& g) const = 0;
+  // The score of g, or, where the problem sees before its objectives that g ranks behind `bar`
+  // whatever they are, a score that ranks behind bar with the objectives left at +inf. An
+  // optimiser passes the member an offspring must beat to be kept at all. The default is
+  // evaluate itself. Thread-safe.
+  virtual Score evaluate_unless_behind(const Genotype& g, const Score& bar) const {
+    (void)bar;
+    return evaluate(g);
+  }
   // A cheaper, rougher score for screening offspring (multi-fidelity ES: EsConfig::survivors);
   // the default is evaluate itself. Thread-safe.
   virtual Score screen(const Genotype& g) const { return evaluate(g); }

@@ -54,6 +54,9 @@ class MoldProblem final : public opt::Problem {
   long mutate(opt::Genotype& g, const std::vector<double>& steps, opt::Rng& rng) const override;
   opt::Genotype recombine(const opt::Genotype& a, const opt::Genotype& b, opt::Rng& rng) const override;
   opt::Score evaluate(const opt::Genotype& g) const override;
+  // Under constrained domination an infeasible layout ranks behind a feasible bar: its
+  // objectives (the thermal stages, most of the cost) are then not computed.
+  opt::Score evaluate_unless_behind(const opt::Genotype& g, const opt::Score& bar) const override;
   // The screening pipeline's score (the same as evaluate without one).
   opt::Score screen(const opt::Genotype& g) const override;
   bool better(const opt::Score& a, const opt::Score& b) const override;
@@ -83,6 +86,7 @@ class MoldProblem final : public opt::Problem {
   // mutation.blend: a's circuits blended with b's of the same index and shape; false: none had one.
   bool blend_circuits(mold::Genome& a, const mold::Genome& b, opt::Rng& rng) const;
   opt::Score score(const eval::Pipeline& pipeline, const opt::Genotype& g) const;
+  opt::Score score(const eval::Evaluation& e) const;
   // The reach move on g: true when it laid a circuit (added, or in place of one); `evaluations`
   // grows by the pipeline evaluations it spent.
   bool reach_worst(mold::Genome& g, opt::Rng& rng, long& evaluations) const;
