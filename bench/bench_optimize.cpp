@@ -3,6 +3,7 @@
 
 #include "bench_optimize.h"
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -44,6 +45,10 @@ int bench_optimize(const OptimizeRuns& oo) {
       const PeerResult r = run_mold_algorithm(algorithm, setup);
       std::cout << oo.mold << ',' << name << ',' << seed << ',' << r.evaluations << ',' << r.best.value << ','
                 << (r.best.feasible ? 1 : 0) << ',' << r.seconds << ',' << r.hypervolume << std::endl;
+      if (!oo.layouts.empty()) {
+        std::filesystem::create_directories(oo.layouts);
+        mold::save_layout(oo.layouts + "/" + name + "-seed" + std::to_string(seed) + ".layout.yaml", problem.genome(r.best_x));
+      }
       if (trace)
         for (const auto& p : r.trace)
           trace->stream() << name << ',' << seed << ',' << p.evaluations << ',' << p.best_feasible << ',' << p.seconds << ','

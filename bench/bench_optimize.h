@@ -15,6 +15,7 @@ namespace mtcs::bench {
 // seed), printed on stderr.
 struct OptimizeRuns {
   std::string mold, config, topology, trace;
+  std::string layouts;  // folder for each run's best layout (ALGORITHM-seedS.layout.yaml); empty: none
   std::vector<std::string> algorithms{"es"};
   int seeds = 11;
   long evaluations = 20000;

@@ -97,6 +97,7 @@ int run(int argc, char** argv) {
   optimize->add_option("--seeds", oo->seeds, "seeds 1..K")->capture_default_str()->check(CLI::Range(1, 1000));
   optimize->add_option("--evaluations", oo->evaluations, "budget per run")->capture_default_str();
   optimize->add_option("--trace", oo->trace, "anytime CSV to write");
+  optimize->add_option("--layouts", oo->layouts, "folder for each run's best layout, ALGORITHM-seedS.layout.yaml (mtcs evaluate --layout)");
   optimize->add_option("--trace-every", oo->trace_every, "evaluations between anytime points (default: budget / 100)");
 
   CLI::App* hv = app.add_subcommand(

@@ -52,7 +52,14 @@ class Recorder final : public opt::Problem {
   opt::Score ranking(const opt::Score& s) const override { return inner_.ranking(s); }
   opt::Score evaluate(const opt::Genotype& g) const override {
     opt::Score s = inner_.evaluate(g);
-    record(s);
+    record(s, g);
+    return s;
+  }
+  // A layout scored without its objectives is infeasible behind a feasible bar: never the best,
+  // never in the (feasible) archive.
+  opt::Score evaluate_unless_behind(const opt::Genotype& g, const opt::Score& bar) const override {
+    opt::Score s = inner_.evaluate_unless_behind(g, bar);
+    record(s, g);
     return s;
   }
 
@@ -62,7 +69,7 @@ class Recorder final : public opt::Problem {
   }
   PeerResult finish() const {
     const std::lock_guard<std::mutex> hold(lock_);
-    PeerResult r{best_, scaler_.scaled_hypervolume(archive_), count_, seconds(), trace_};
+    PeerResult r{best_, best_x_, scaler_.scaled_hypervolume(archive_), count_, seconds(), trace_};
     if (r.trace.empty() || r.trace.back().evaluations != count_) r.trace.push_back(point());
     return r;
   }
@@ -81,10 +88,10 @@ class Recorder final : public opt::Problem {
     }
     return strictly;
   }
-  void record(const opt::Score& s) const {
+  void record(const opt::Score& s, const opt::Genotype& g) const {
     const std::lock_guard<std::mutex> hold(lock_);
     ++count_;
-    if (inner_.better(s, best_)) best_ = s;
+    if (inner_.better(s, best_)) best_ = s, best_x_ = g;
     if (s.feasible) {
       bool covered = false;
       for (const auto& a : archive_)
@@ -107,6 +114,7 @@ class Recorder final : public opt::Problem {
   mutable std::mutex lock_;
   mutable long count_ = 0;
   mutable opt::Score best_;
+  mutable opt::Genotype best_x_;
   mutable std::vector<opt::Point> archive_;  // feasible, non-dominated
   mutable std::vector<AnytimePoint> trace_;
 };

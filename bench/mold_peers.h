@@ -29,6 +29,7 @@ struct AnytimePoint {
 
 struct PeerResult {
   opt::Score best;     // by the problem's order (feasible first, then the weighted objective)
+  opt::Genotype best_x;  // its layout, in the mold problem's encoding
   double hypervolume;  // scaled, against the fixed reference
   long evaluations;
   double seconds;
