@@ -9,6 +9,7 @@
 #include "mtcs/eval/cycle_time.h"
 #include "mtcs/eval/temperature_objectives.h"
 #include "mtcs/eval/thermal_model.h"
+#include "exact_cache.h"
 #include "stages.h"
 
 namespace mtcs::eval {
@@ -39,9 +40,20 @@ class TemperatureStage final : public Stage {
     // A genome can decode to no bore at all (a circuit whose waypoints collapse). Nothing then
     // carries the heat away in the models: worse than any layout that cools, not an error.
     constexpr double kNoCooling = std::numeric_limits<double>::infinity();
-    const TemperatureObjectives o = channels.empty()
-                                        ? TemperatureObjectives{kNoCooling, kNoCooling, kNoCooling, kNoCooling}
-                                        : temperature_objectives(solve_(channels), samples_, spec_);
+    if (channels.empty()) return write({kNoCooling, kNoCooling, kNoCooling, kNoCooling}, out);
+    // Every number the solve reads of the channels: a child that decodes to a layout solved
+    // before gets that solve's objectives (on the plate 1 in 5 of the layouts an ES run solves
+    // repeats an earlier one: a move undone by the decoder's snapping, a parent crossed with itself).
+    thread_local std::vector<double> key;
+    key.clear();
+    for (const thermal::Channel& c : channels)
+      key.insert(key.end(), {c.axis.p0.x(), c.axis.p0.y(), c.axis.p0.z(), c.axis.p1.x(), c.axis.p1.y(), c.axis.p1.z(),
+                             c.radius, c.coolant, c.film});
+    write(solved_.get(key, [&] { return temperature_objectives(solve_(channels), samples_, spec_); }), out);
+  }
+
+ private:
+  void write(const TemperatureObjectives& o, Evaluation& out) const {
     for (const auto& [objective, slot] : slots_) {
       double& v = out.objectives[slot];
       switch (objective) {
@@ -54,11 +66,11 @@ class TemperatureStage final : public Stage {
     }
   }
 
- private:
   const mold::MoldSpec& spec_;
   thermal::Setting setting_;
   thermal::Samples samples_;
   TemperatureSolver solve_;
+  ExactCache<std::vector<double>, TemperatureObjectives> solved_{256};
   std::vector<std::pair<mold::Objective, std::size_t>> slots_;
 };
 

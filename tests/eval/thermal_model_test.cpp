@@ -330,6 +330,45 @@ TEST_CASE("temperature objectives: the pipeline asks the tier's solver and summa
   CHECK(timed);
 }
 
+TEST_CASE("temperature objectives: a layout solved before is not solved again, any other change is", "[eval][thermal]") {
+  // A stand-in tier that counts its solves and reads every number of every channel.
+  const mold::Scene scene(mold::load_mold_spec(kBlockSpec));
+  int solves = 0;
+  const eval::TemperatureSolverFactory factory = [&solves](const thermal::Setting&, const thermal::Samples& samples,
+                                                           const mold::ThermalSpec&) {
+    return eval::TemperatureSolver([&solves, &samples](const std::vector<thermal::Channel>& channels) {
+      ++solves;
+      double h = 0, k = 0;
+      for (const thermal::Channel& c : channels)
+        h += ++k * (c.axis.p0.sum() + 3 * c.axis.p1.sum() + 5 * c.radius + 7 * c.coolant + 11 * std::min(c.film, 1e3));
+      std::vector<double> t;
+      for (const Vec3& p : samples.points) t.push_back(40 + 1e-3 * h * p.x());
+      return t;
+    });
+  };
+  const eval::Pipeline pipeline(scene, factory);
+  const mold::Layout a = mold::decode(scene, mold::load_layout(kBlockLayout, scene.spec()));
+  REQUIRE(a.bores.size() >= 2);
+  const auto first = pipeline.evaluate(a);
+  CHECK(solves == 1);
+  CHECK(pipeline.evaluate(a).objectives == first.objectives);
+  CHECK(solves == 1);
+  // Each change of a number the solve reads is a new solve: an end moved by one ulp, the
+  // diameter, the bores' order (the last two with another result).
+  mold::Layout moved = a, wider = a, swapped = a;
+  moved.bores[0].flow_end.z() = std::nextafter(moved.bores[0].flow_end.z(), 1e9);
+  wider.bores[0].diameter += 2;
+  std::swap(swapped.bores[0], swapped.bores[1]);
+  int expected = 1;
+  for (const mold::Layout* l : {&moved, &wider, &swapped}) {
+    const auto e = pipeline.evaluate(*l);
+    CHECK(solves == ++expected);
+    if (l != &moved) CHECK(e.objectives != first.objectives);
+  }
+  CHECK(pipeline.evaluate(a).objectives == first.objectives);
+  CHECK(solves == expected);
+}
+
 TEST_CASE("temperature objectives: the default tier scores the reference block as FreeFem++ does", "[eval][thermal]") {
   // molds/thermal_block.yaml uses temperature_std and temperature_max; the layout is the case's.
   const mold::Scene scene(mold::load_mold_spec(kBlockSpec));
