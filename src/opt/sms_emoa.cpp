@@ -41,12 +41,19 @@ void SmsEmoa::advance(Generation& g) const {
     child.steps = a.steps;
     spent_by_moves += problem_.mutate(child.x, child.steps, rng);
   }
+  // The reduction drops lambda members and takes the infeasible ones first, the most violated
+  // first: while every parent is feasible no child behind them is kept, and the problem may
+  // skip what would not change that (an infeasible child's objectives). An infeasible parent
+  // as the bar skips nothing.
+  const Score& bar = std::max_element(g.population.begin(), g.population.end(), [](const Individual& a, const Individual& b) {
+                       return feasible_first(a.score, b.score);
+                     })->score;
   if (lambda == 1) {
-    children.front().score = problem_.evaluate(children.front().x);
+    children.front().score = problem_.evaluate_unless_behind(children.front().x, bar);
   } else {
     std::vector<Genotype> xs;
     for (const auto& c : children) xs.push_back(c.x);
-    std::vector<Score> scores = evaluate_all(problem_, xs);
+    std::vector<Score> scores = evaluate_all(problem_, xs, bar);
     for (std::size_t k = 0; k < children.size(); ++k) children[k].score = std::move(scores[k]);
   }
   g.evaluations += lambda + spent_by_moves;

@@ -1,7 +1,8 @@
-// The ES scores an offspring without its objectives when the mold problem sees it is infeasible
-// and its worst parent feasible (constrained domination: such a child is never kept). The run
-// must be the run that scores every child: the same generations bit for bit, each skipped child
-// infeasible with the violations a full evaluation gives it, every other child's objectives equal.
+// The ES and SMS-EMOA score an offspring without its objectives when the mold problem sees it is
+// infeasible and every parent feasible (constrained domination: such a child is never kept). The
+// run must be the run that scores every child: the same generations bit for bit, each skipped
+// child infeasible with the violations a full evaluation gives it, every other child's objectives
+// equal.
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -9,6 +10,7 @@
 #include <mutex>
 
 #include "mtcs/opt/evolution_strategy.h"
+#include "mtcs/opt/sms_emoa.h"
 #include "mtcs/run/session.h"
 
 using namespace mtcs;
@@ -31,6 +33,7 @@ class Scored final : public opt::Problem {
     return inner_.recombine(a, b, rng);
   }
   bool better(const opt::Score& a, const opt::Score& b) const override { return inner_.better(a, b); }
+  opt::Score ranking(const opt::Score& s) const override { return inner_.ranking(s); }
   opt::Score evaluate(const opt::Genotype& g) const override { return kept(g, inner_.evaluate(g)); }
   opt::Score evaluate_unless_behind(const opt::Genotype& g, const opt::Score& bar) const override {
     return lazy_ ? kept(g, inner_.evaluate_unless_behind(g, bar)) : evaluate(g);
@@ -49,12 +52,24 @@ class Scored final : public opt::Problem {
   mutable std::mutex lock_;
 };
 
-std::vector<opt::Generation> es_run(const opt::Problem& problem, long evaluations) {
-  opt::EsConfig c;
-  c.seed = 3;
-  c.evaluations = evaluations;
+std::vector<opt::Generation> optimised(const std::string& algorithm, const opt::Problem& problem, long evaluations,
+                                       std::size_t objectives) {
   std::vector<opt::Generation> seen;
-  opt::run(opt::EvolutionStrategy(problem, c), nullptr, [&](const opt::Generation& g) { seen.push_back(g); });
+  const auto keep = [&](const opt::Generation& g) { seen.push_back(g); };
+  if (algorithm == "es") {
+    opt::EsConfig c;
+    c.seed = 3;
+    c.evaluations = evaluations;
+    opt::run(opt::EvolutionStrategy(problem, c), nullptr, keep);
+  } else {
+    opt::SmsConfig c;
+    c.mu = 20;
+    c.lambda = algorithm == "sms-emoa" ? 1 : 8;
+    c.seed = 3;
+    c.evaluations = evaluations;
+    c.ref.assign(objectives, 1e9);
+    opt::run(opt::SmsEmoa(problem, c), nullptr, keep);
+  }
   return seen;
 }
 
@@ -65,16 +80,18 @@ bool same(const opt::Score& a, const opt::Score& b) {
 
 }  // namespace
 
-TEST_CASE("ES: infeasible children behind a feasible worst parent skip their objectives, the run unchanged",
-          "[run][es][skip]") {
+TEST_CASE("ES, SMS-EMOA: infeasible children of feasible parents skip their objectives, the run unchanged",
+          "[run][es][sms][skip]") {
   const auto [mold, evaluations] = GENERATE(std::pair<std::string, long>{"plate_wall_distance", 4000},
                                             std::pair<std::string, long>{"plate", 1500});
-  INFO(mold);
+  const std::string algorithm = GENERATE(std::string("es"), std::string("sms-emoa"), std::string("sms-emoa, lambda 8"));
+  INFO(mold << ", " << algorithm);
   const run::Session full_session(MTCS_SOURCE_DIR "/molds/" + mold + ".yaml"),
       lazy_session(MTCS_SOURCE_DIR "/molds/" + mold + ".yaml");
   REQUIRE(full_session.problem().penalty_variant() == mold::PenaltyVariant::ConstrainedDomination);
   const Scored full(full_session.problem(), false), lazy(lazy_session.problem(), true);
-  const auto a = es_run(full, evaluations), b = es_run(lazy, evaluations);
+  const std::size_t m = full_session.spec().objectives.use.size();
+  const auto a = optimised(algorithm, full, evaluations, m), b = optimised(algorithm, lazy, evaluations, m);
 
   REQUIRE(a.size() == b.size());
   REQUIRE(a.size() > 20);
