@@ -11,6 +11,7 @@
 #include "mtcs/io/atomic_file.h"
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/run/session.h"
+#include "mtcs/run/shop_layout.h"
 
 namespace mtcs::bench {
 
@@ -47,7 +48,9 @@ int bench_optimize(const OptimizeRuns& oo) {
                 << (r.best.feasible ? 1 : 0) << ',' << r.seconds << ',' << r.hypervolume << std::endl;
       if (!oo.layouts.empty()) {
         std::filesystem::create_directories(oo.layouts);
-        mold::save_layout(oo.layouts + "/" + name + "-seed" + std::to_string(seed) + ".layout.yaml", problem.genome(r.best_x));
+        // As mtcs optimize writes best.layout.yaml: the drilling plan, rounded for the shop.
+        mold::save_layout(oo.layouts + "/" + name + "-seed" + std::to_string(seed) + ".layout.yaml",
+                          run::shop_layout(problem, scene, problem.genome(r.best_x)));
       }
       if (trace)
         for (const auto& p : r.trace)

@@ -1,6 +1,6 @@
 // mtcs bench optimize's algorithms on a mold (bench/mold_peers.h): each spends its budget and no
-// more, its anytime course only improves (best objective down, hypervolume up), and a seed
-// repeats its run.
+// more, its anytime course only improves (best objective down, hypervolume up), its best
+// layout scores as its best, and a seed repeats its run.
 
 #include <catch2/catch.hpp>
 
@@ -34,6 +34,10 @@ TEST_CASE("mold peers: budgets, monotone anytime courses, determinism", "[opt][b
     }
     CHECK(r.hypervolume == r.trace.back().hypervolume);
     if (r.best.feasible) CHECK(r.best.value == r.trace.back().best_feasible);
+    // The best layout kept with it (what --layouts writes) scores as the best.
+    const opt::Score rescored = session.problem().evaluate(r.best_x);
+    CHECK(rescored.value == r.best.value);
+    CHECK(rescored.feasible == r.best.feasible);
     if (algorithm == "nsga2" || algorithm == "isres" || algorithm == "sms-emoa") {
       const bench::PeerResult again = bench::run_mold_algorithm(algorithm, setup);
       CHECK(again.best.value == r.best.value);
