@@ -163,6 +163,9 @@ long MoldProblem::mutate(opt::Genotype& x, const std::vector<double>& steps, opt
       const Vec3 p = w[std::size_t(seg)] + rng.uniform() * (w[std::size_t(seg + 1)] - w[std::size_t(seg)]);
       w.insert(w.begin() + seg + 1, p);
     }
+    if (rates_.jog > 0 && spec_.drilling.axis_parallel && rng.uniform() < rates_.jog &&
+        int(w.size()) + 2 <= lim.max_waypoints)
+      jog(c, rng);
     if (rng.uniform() < rates_.remove && int(w.size()) > std::max(2, lim.min_waypoints) && w.size() > 2)
       w.erase(w.begin() + 1 + rng.below(int(w.size()) - 2));
     if (rng.uniform() < rates_.snap && w.size() > 2) {
@@ -208,6 +211,28 @@ long MoldProblem::mutate(opt::Genotype& x, const std::vector<double>& steps, opt
   }
   x = encode(g);
   return spent;
+}
+
+void MoldProblem::jog(mold::Circuit& c, opt::Rng& rng) const {
+  auto& w = c.waypoints;
+  const std::size_t seg = std::size_t(rng.below(int(w.size()) - 1));
+  const Vec3 a = w[seg], b = w[seg + 1];
+  int along = 0;
+  (b - a).cwiseAbs().maxCoeff(&along);
+  // Across: an axis the circuit already spans other than the segment's (its drilling plane).
+  std::vector<int> across;
+  for (int k = 0; k < 3; ++k) {
+    bool spans = false;
+    for (const Vec3& p : w) spans = spans || p[k] != w.front()[k];
+    if (k != along && spans) across.push_back(k);
+  }
+  if (across.empty()) return;
+  const int k = across[std::size_t(rng.below(int(across.size())))];
+  const Vec3 p = a + rng.uniform() * (b - a);
+  Vec3 q = p;
+  q[k] = block_.min[k] + rng.uniform() * (block_.max[k] - block_.min[k]);
+  w[seg + 1][k] = q[k];  // the far end slides across: the segment after it keeps its axis
+  w.insert(w.begin() + std::ptrdiff_t(seg + 1), {p, q});
 }
 
 int MoldProblem::movable_parts(const mold::Circuit& c) const {

@@ -94,7 +94,7 @@ RunConfig parse_run_config(const std::string& text, const std::string& origin,
   if (root["mutation"]) {
     const YAML::Node& m = root["mutation"];
     r.expect_map(m, "mutation",
-                 {"insert", "remove", "snap", "diameter", "circuit", "access_guided", "moves", "blend", "reach"});
+                 {"insert", "remove", "snap", "diameter", "circuit", "access_guided", "moves", "blend", "reach", "jog"});
     if (m["insert"]) c.mutation.insert = r.number(m["insert"], "mutation.insert", 0, 1);
     if (m["remove"]) c.mutation.remove = r.number(m["remove"], "mutation.remove", 0, 1);
     if (m["snap"]) c.mutation.snap = r.number(m["snap"], "mutation.snap", 0, 1);
@@ -104,6 +104,7 @@ RunConfig parse_run_config(const std::string& text, const std::string& origin,
     if (m["moves"]) c.mutation.moves = r.number(m["moves"], "mutation.moves", 0, 1000);
     if (m["blend"]) c.mutation.blend = r.number(m["blend"], "mutation.blend", 0, 1);
     if (m["reach"]) c.mutation.reach = r.number(m["reach"], "mutation.reach", 0, 1);
+    if (m["jog"]) c.mutation.jog = r.number(m["jog"], "mutation.jog", 0, 1);
   }
   return c;
 }
@@ -113,6 +114,8 @@ RunConfig parse_stored_run_config(const std::string& text, const std::string& or
   RunConfig c = parse_run_config(text, origin, objective_names);
   const YAML::Node root = YAML::Load(text);  // parsed above, so it loads
   if (!root.IsMap() || !root["es"] || !root["es"]["restart_after"]) c.es.restart_after = 0;
+  // Runs stored before the jog move (or with it off) resume without it.
+  if (!root.IsMap() || !root["mutation"] || !root["mutation"]["jog"]) c.mutation.jog = 0;
   return c;
 }
 
@@ -166,6 +169,7 @@ std::string RunConfig::to_yaml(const std::vector<std::string>& objective_names) 
       << mutation.access_guided << YAML::Key << "moves" << YAML::Value << mutation.moves << YAML::Key << "reach"
       << YAML::Value << mutation.reach;
   if (mutation.blend > 0) out << YAML::Key << "blend" << YAML::Value << mutation.blend;  // older runs' configs stay as they were
+  if (mutation.jog > 0) out << YAML::Key << "jog" << YAML::Value << mutation.jog;
   out << YAML::EndMap;
   out << YAML::EndMap;
   std::string s = out.c_str();

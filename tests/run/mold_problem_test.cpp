@@ -7,10 +7,12 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <set>
 #include <string>
 
 #include "mtcs/run/mold_problem.h"
 #include "mtcs/eval/pipeline.h"
+#include "mtcs/mold/decoder.h"
 #include "mtcs/mold/scene.h"
 #include "run/violation_text.h"
 
@@ -129,6 +131,63 @@ TEST_CASE("MoldProblem blends the hole coordinates of parents that share a circu
     const auto w = problem.genome(problem.recombine(a, problem.encode(gc), rng)).circuits.at(0).waypoints;
     CHECK((w == ga.circuits[0].waypoints || w == gc.circuits[0].waypoints));
   }
+}
+
+// mutation.jog on an axis-parallel U: one segment split by a new leg across it in the circuit's
+// plane, the segment's far end slid across with it, so the route stays axis-parallel, the ports
+// stay on their face and the layout gains two bores. Every segment and both in-plane axes occur.
+TEST_CASE("MoldProblem's jog splits a segment by a leg across it", "[run][jog]") {
+  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml");
+  REQUIRE(spec.drilling.axis_parallel);
+  const mold::Scene scene(spec);
+  const eval::Pipeline pipeline(scene);
+  run::MutationRates rates;
+  rates.insert = rates.remove = rates.snap = rates.diameter = rates.circuit = rates.reach = 0;
+  rates.moves = 0;  // every hole moves, by sigma = 0 below: only the jog changes the circuit
+  rates.jog = 1;
+  const run::MoldProblem problem(pipeline, {}, rates);
+  const mold::Genome parent = through_ejector();
+  const auto& u = parent.circuits[0].waypoints;
+  const std::size_t bores = mold::decode(scene, parent).bores.size();
+  const geometry::Box& box = scene.block_bounds();
+  std::set<std::pair<std::size_t, int>> seen;  // (segment, axis across)
+  for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+    opt::Rng rng(seed);
+    opt::Genotype x = problem.encode(parent);
+    problem.mutate(x, {0.0}, rng);
+    const mold::Genome child = problem.genome(x);
+    const auto& w = child.circuits.at(0).waypoints;
+    REQUIRE(w.size() == u.size() + 2);
+    CHECK(w.front() == u.front());  // the inlet stays
+    CHECK(w.back().y() == box.min.y());  // the outlet stays on its face
+    for (std::size_t i = 0; i + 1 < w.size(); ++i) {
+      INFO("seed " << seed << ", segment " << i);
+      int differ = 0;
+      for (int k = 0; k < 3; ++k) differ += w[i][k] != w[i + 1][k];
+      CHECK(differ <= 1);  // axis-parallel
+      CHECK(w[i].z() == u[0].z());  // in the inlet's drilling plane
+    }
+    // The split segment: the first waypoint that left the parent's route.
+    std::size_t s = 0;
+    while (s < u.size() && w[s] == u[s]) ++s;
+    REQUIRE(s >= 1);
+    REQUIRE(s < u.size());
+    const geometry::Vec3 a = u[s - 1], b = u[s], p = w[s], q = w[s + 1];
+    CHECK((p - a).norm() + (b - p).norm() == Approx((b - a).norm()).epsilon(1e-12));  // p on the segment
+    int across = -1;
+    for (int k = 0; k < 3; ++k)
+      if (q[k] != p[k]) across = k;
+    REQUIRE(across >= 0);
+    CHECK(q[across] >= box.min[across]);
+    CHECK(q[across] <= box.max[across]);
+    CHECK(w[s + 2][across] == q[across]);  // the far end slid across
+    seen.insert({s - 1, across});
+    // Two more bores, each drillable from the plate's faces.
+    const mold::Layout layout = mold::decode(scene, child);
+    CHECK(layout.bores.size() == bores + 2);
+  }
+  // Each of the U's three segments, across in x or y as its axis allows: (0, x), (1, y), (2, x).
+  CHECK(seen == std::set<std::pair<std::size_t, int>>{{0, 0}, {1, 1}, {2, 0}});
 }
 
 TEST_CASE("MoldProblem's violation detail is printf's %.6g of each distance and margin", "[run][detail]") {

@@ -36,6 +36,13 @@ struct MutationRates {
   // instead of the others, a feasible circuit laid beside the sample the parent cools worst
   // (src/run/reach_move.h; experiments/defaults). 0: never (and no random number drawn for it).
   double reach = 0.05;
+  // Axis-parallel circuits: the probability per circuit of a jog, a segment split by a new leg
+  // across it (two waypoints; the segment's far end slides across with it), which turns a U into a
+  // hook or a spiral in one step. Inserted waypoints are aligned with their neighbours and move
+  // with them, so inserts alone rarely make one. 0: never (and no random number drawn for it).
+  // Off by default: 0.2 takes the ES past ISRES on the cup but costs on the plate and the gear
+  // (configs/README.md, configs/es_jog.yaml).
+  double jog = 0;
 };
 
 class MoldProblem final : public opt::Problem {
@@ -82,6 +89,7 @@ class MoldProblem final : public opt::Problem {
   // The holes (or waypoints) of a circuit the geometric move acts on, and the move itself: each
   // shifted by sigma N(0, 1) with `probability`; returns how many moved.
   int movable_parts(const mold::Circuit& c) const;
+  void jog(mold::Circuit& c, opt::Rng& rng) const;
   int move_some(mold::Circuit& c, double sigma, double probability, opt::Rng& rng) const;
   // mutation.blend: a's circuits blended with b's of the same index and shape; false: none had one.
   bool blend_circuits(mold::Genome& a, const mold::Genome& b, opt::Rng& rng) const;
