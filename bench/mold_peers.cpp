@@ -5,6 +5,7 @@
 // as constrained domination does: feasible first, then by violation.
 
 #include "mold_peers.h"
+#include "mtcs/opt/forwarding_problem.h"
 
 #include <nlopt.hpp>
 #include <pagmo/algorithm.hpp>
@@ -30,26 +31,14 @@ constexpr double kInfeasible = 1e6;  // below it every feasible layout, above it
 
 // Every evaluation of the run: mtcs's optimisers evaluate through it as a Problem, the peers
 // through FixedTopology. Thread-safe (the ES evaluates in parallel).
-class Recorder final : public opt::Problem {
+class Recorder final : public opt::ForwardingProblem {
  public:
   Recorder(const run::MoldProblem& inner, const run::MoldOptimizer& scaler, long every)
-      : inner_(inner), scaler_(scaler), every_(std::max(1L, every)), start_(Clock::now()) {
+      : ForwardingProblem(inner), scaler_(scaler), every_(std::max(1L, every)), start_(Clock::now()) {
     best_.feasible = false;
     best_.violation = best_.value = std::numeric_limits<double>::infinity();
   }
 
-  std::string name() const override { return inner_.name(); }
-  opt::Genotype sample(opt::Rng& rng) const override { return inner_.sample(rng); }
-  std::size_t step_sizes(const opt::Genotype& g) const override { return inner_.step_sizes(g); }
-  std::size_t dimension(const opt::Genotype& g) const override { return inner_.dimension(g); }
-  std::size_t rotation_angles(const opt::Genotype& g) const override { return inner_.rotation_angles(g); }
-  std::vector<double> initial_steps(const opt::Genotype& g) const override { return inner_.initial_steps(g); }
-  long mutate(opt::Genotype& g, const std::vector<double>& s, opt::Rng& rng) const override { return inner_.mutate(g, s, rng); }
-  opt::Genotype recombine(const opt::Genotype& a, const opt::Genotype& b, opt::Rng& rng) const override {
-    return inner_.recombine(a, b, rng);
-  }
-  bool better(const opt::Score& a, const opt::Score& b) const override { return inner_.better(a, b); }
-  opt::Score ranking(const opt::Score& s) const override { return inner_.ranking(s); }
   opt::Score evaluate(const opt::Genotype& g) const override {
     opt::Score s = inner_.evaluate(g);
     record(s, g);
@@ -62,6 +51,8 @@ class Recorder final : public opt::Problem {
     record(s, g);
     return s;
   }
+  // Screens are evaluations too (a multi-fidelity config): counted and recorded as before.
+  opt::Score screen(const opt::Genotype& g) const override { return evaluate(g); }
 
   long evaluations() const {
     const std::lock_guard<std::mutex> hold(lock_);
@@ -107,7 +98,6 @@ class Recorder final : public opt::Problem {
     if (count_ % every_ == 0) trace_.push_back(point());
   }
 
-  const run::MoldProblem& inner_;
   const run::MoldOptimizer& scaler_;
   long every_;
   Clock::time_point start_;

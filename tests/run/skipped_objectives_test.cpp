@@ -10,6 +10,7 @@
 #include <mutex>
 
 #include "mtcs/opt/evolution_strategy.h"
+#include "mtcs/opt/forwarding_problem.h"
 #include "mtcs/opt/sms_emoa.h"
 #include "mtcs/run/session.h"
 
@@ -19,21 +20,10 @@ namespace {
 
 // The mold problem with every score it gives kept by genotype. `lazy`: it forwards
 // evaluate_unless_behind (the skip); otherwise it keeps the default (a full evaluation).
-class Scored final : public opt::Problem {
+class Scored final : public opt::ForwardingProblem {
  public:
-  Scored(const run::MoldProblem& inner, bool lazy) : inner_(inner), lazy_(lazy) {}
+  Scored(const run::MoldProblem& inner, bool lazy) : ForwardingProblem(inner), lazy_(lazy) {}
 
-  std::string name() const override { return inner_.name(); }
-  opt::Genotype sample(opt::Rng& rng) const override { return inner_.sample(rng); }
-  std::size_t step_sizes(const opt::Genotype& g) const override { return inner_.step_sizes(g); }
-  std::size_t dimension(const opt::Genotype& g) const override { return inner_.dimension(g); }
-  std::vector<double> initial_steps(const opt::Genotype& g) const override { return inner_.initial_steps(g); }
-  long mutate(opt::Genotype& g, const std::vector<double>& s, opt::Rng& rng) const override { return inner_.mutate(g, s, rng); }
-  opt::Genotype recombine(const opt::Genotype& a, const opt::Genotype& b, opt::Rng& rng) const override {
-    return inner_.recombine(a, b, rng);
-  }
-  bool better(const opt::Score& a, const opt::Score& b) const override { return inner_.better(a, b); }
-  opt::Score ranking(const opt::Score& s) const override { return inner_.ranking(s); }
   opt::Score evaluate(const opt::Genotype& g) const override { return kept(g, inner_.evaluate(g)); }
   opt::Score evaluate_unless_behind(const opt::Genotype& g, const opt::Score& bar) const override {
     return lazy_ ? kept(g, inner_.evaluate_unless_behind(g, bar)) : evaluate(g);
@@ -47,7 +37,6 @@ class Scored final : public opt::Problem {
     const_cast<Scored*>(this)->scores[g] = s;
     return s;
   }
-  const run::MoldProblem& inner_;
   bool lazy_;
   mutable std::mutex lock_;
 };

@@ -20,25 +20,27 @@ budgets = [20000, 100000]
 peers = ["nsga2", "moead", "cmaes", "isres", "crs2"]
 
 
-def arms(mold, budget, column):
-    """{algorithm: values} from every file that holds the cell, later files first come."""
+def arms(mold, budget, column, extra=lambda mold, budget: []):
+    """{algorithm: values} from every file that holds the cell, later files first come; `extra`
+    names more files, read last (another study's arms of ours)."""
     files = [os.path.join(here, "..", "peers_moves", f"results_{mold}_{budget}{s}.csv") for s in ["", "_moead"]]
     files += [os.path.join(here, "..", "peers_restart", f) for f in [f"results_{mold}_{budget}_fixed.csv",  # the shipped ES
                                                                       f"sms_{mold}_{budget}.csv"]]
     files += [os.path.join(here, f"results_{mold}_{budget}_{s}.csv") for s in ["sms", "all", "classic", "classic_rest"]]
+    files += extra(mold, budget)
     out = {}
     for f in files:
         out.update(results(f, column))
     return {a: v for a, v in out.items() if len(v) == 11}  # a cell still running is not an arm yet
 
 
-def section(title, ours, column, better):
+def section(title, ours, column, better, extra):
     lines = [f"## {title}", "", "| mold | budget | " + ours + " median (IQR) | " +
              " | ".join(f"{p} median, p" for p in peers) + " | beats every peer |",
              "|---|---|---:|" + "---:|" * len(peers) + "---|"]
     for mold in molds:
         for budget in budgets:
-            a = arms(mold, budget, column)
+            a = arms(mold, budget, column, extra)
             if ours not in a:
                 continue
             q1, med, q3 = quartiles(a[ours])
@@ -57,12 +59,19 @@ def section(title, ours, column, better):
     return lines + [""]
 
 
-lines = ["# The shipped ES and SMS-EMOA against every peer, 11 seeds", "",
-         "Made by `/usr/bin/python3 experiments/optimize/peers_final/compare.py`. p: two-sided rank-sum",
-         "(Mann-Whitney U). A run without a feasible layout has best objective inf. Hypervolume: feasible",
-         "non-dominated layouts evaluated, scaled objectives, the reference point of `mtcs-bench` (stderr_*.txt).", ""]
-lines += section("The ES: best weighted objective (lower is better)", "es", "best_objective", lambda a, b: a < b)
-lines += section("SMS-EMOA: hypervolume (higher is better)", "sms-emoa", "hypervolume", lambda a, b: a > b)
-lines += section("The ES: hypervolume of the layouts it evaluated (higher is better)", "es", "hypervolume", lambda a, b: a > b)
-open(os.path.join(here, "compare.md"), "w").write("\n".join(lines))
-print("\n".join(lines))
+def write(title, script, out, extra=lambda mold, budget: []):
+    lines = [title, "",
+             f"Made by `/usr/bin/python3 {script}`. p: two-sided rank-sum",
+             "(Mann-Whitney U). A run without a feasible layout has best objective inf. Hypervolume: feasible",
+             "non-dominated layouts evaluated, scaled objectives, the reference point of `mtcs-bench` (stderr_*.txt).", ""]
+    lines += section("The ES: best weighted objective (lower is better)", "es", "best_objective", lambda a, b: a < b, extra)
+    lines += section("SMS-EMOA: hypervolume (higher is better)", "sms-emoa", "hypervolume", lambda a, b: a > b, extra)
+    lines += section("The ES: hypervolume of the layouts it evaluated (higher is better)", "es", "hypervolume",
+                     lambda a, b: a > b, extra)
+    open(out, "w").write("\n".join(lines))
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    write("# The shipped ES and SMS-EMOA against every peer, 11 seeds", "experiments/optimize/peers_final/compare.py",
+          os.path.join(here, "compare.md"))

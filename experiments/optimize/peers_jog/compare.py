@@ -1,70 +1,18 @@
 #!/usr/bin/python3
 """The peer matrix of ../peers_final with the ES and SMS-EMOA rerun with the jog move on
-(mutation.jog 0.2, the new default; run.sh here): median, IQR and two-sided rank-sum p against
-NSGA-II, MOEA/D, CMA-ES, ISRES and CRS2, whose runs do not depend on the ES's mutation.
+(configs/es_jog.yaml; run.sh here): the peers' arms as ../peers_final/compare.py reads them, this
+folder's ES and SMS-EMOA read last, so they replace the earlier arms.
 
 Usage: /usr/bin/python3 experiments/optimize/peers_jog/compare.py   (writes compare.md here)
-Rows: the peers from ../peers_final, ../peers_restart and ../peers_moves (as ../peers_final/compare.py
-reads them); the ES and SMS-EMOA from this folder, read last, so they replace the earlier arms.
 """
+import importlib.util
 import os
-import statistics
-import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.dirname(here))
-from peers_stats import fmt, quartiles, rank_sum_p, results  # noqa: E402
+spec = importlib.util.spec_from_file_location("final", os.path.join(here, "..", "peers_final", "compare.py"))
+final = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(final)
 
-molds = ["cup", "plate_wall_distance", "gear", "thermal_block"]
-budgets = [20000, 100000]
-peers = ["nsga2", "moead", "cmaes", "isres", "crs2"]
-
-
-def arms(mold, budget, column):
-    """{algorithm: values} from every file that holds the cell, later files first come."""
-    files = [os.path.join(here, "..", "peers_moves", f"results_{mold}_{budget}{s}.csv") for s in ["", "_moead"]]
-    files += [os.path.join(here, "..", "peers_restart", f) for f in [f"results_{mold}_{budget}_fixed.csv",  # the shipped ES
-                                                                      f"sms_{mold}_{budget}.csv"]]
-    final = os.path.join(here, "..", "peers_final")
-    files += [os.path.join(final, f"results_{mold}_{budget}_{s}.csv") for s in ["sms", "all", "classic", "classic_rest"]]
-    files += [os.path.join(here, f"results_{mold}_{budget}_{a}.csv") for a in ["es", "sms-emoa"]]
-    out = {}
-    for f in files:
-        out.update(results(f, column))
-    return {a: v for a, v in out.items() if len(v) == 11}  # a cell still running is not an arm yet
-
-
-def section(title, ours, column, better):
-    lines = [f"## {title}", "", "| mold | budget | " + ours + " median (IQR) | " +
-             " | ".join(f"{p} median, p" for p in peers) + " | beats every peer |",
-             "|---|---|---:|" + "---:|" * len(peers) + "---|"]
-    for mold in molds:
-        for budget in budgets:
-            a = arms(mold, budget, column)
-            if ours not in a:
-                continue
-            q1, med, q3 = quartiles(a[ours])
-            cols = [mold, f"{budget // 1000}k", f"**{fmt(med)}** ({fmt(q1)}-{fmt(q3)})"]
-            wins, measured = True, 0
-            for peer in peers:
-                if peer not in a:
-                    cols.append("-")
-                    continue
-                measured += 1
-                pm, pv = statistics.median(a[peer]), rank_sum_p(a[ours], a[peer])
-                cols.append(f"{fmt(pm)}, {pv:.2g}")
-                wins = wins and pv < 0.05 and better(med, pm)
-            cols.append(("yes" if wins else "**no**") + f" ({measured} peers)")
-            lines.append("| " + " | ".join(cols) + " |")
-    return lines + [""]
-
-
-lines = ["# The ES and SMS-EMOA with the jog move against every peer, 11 seeds", "",
-         "Made by `/usr/bin/python3 experiments/optimize/peers_jog/compare.py`. p: two-sided rank-sum",
-         "(Mann-Whitney U). A run without a feasible layout has best objective inf. Hypervolume: feasible",
-         "non-dominated layouts evaluated, scaled objectives, the reference point of `mtcs-bench` (stderr_*.txt).", ""]
-lines += section("The ES: best weighted objective (lower is better)", "es", "best_objective", lambda a, b: a < b)
-lines += section("SMS-EMOA: hypervolume (higher is better)", "sms-emoa", "hypervolume", lambda a, b: a > b)
-lines += section("The ES: hypervolume of the layouts it evaluated (higher is better)", "es", "hypervolume", lambda a, b: a > b)
-open(os.path.join(here, "compare.md"), "w").write("\n".join(lines))
-print("\n".join(lines))
+final.write("# The ES and SMS-EMOA with the jog move against every peer, 11 seeds",
+            "experiments/optimize/peers_jog/compare.py", os.path.join(here, "compare.md"),
+            lambda mold, budget: [os.path.join(here, f"results_{mold}_{budget}_{a}.csv") for a in ["es", "sms-emoa"]])
