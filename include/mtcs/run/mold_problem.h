@@ -89,6 +89,7 @@ class MoldProblem final : public opt::Problem {
   // The holes (or waypoints) of a circuit the geometric move acts on, and the move itself: each
   // shifted by sigma N(0, 1) with `probability`; returns how many moved.
   int movable_parts(const mold::Circuit& c) const;
+  // mutation.jog on c: one segment split by a leg across it (MutationRates::jog).
   void jog(mold::Circuit& c, opt::Rng& rng) const;
   int move_some(mold::Circuit& c, double sigma, double probability, opt::Rng& rng) const;
   // mutation.blend: a's circuits blended with b's of the same index and shape; false: none had one.
