@@ -51,8 +51,6 @@ class Recorder final : public opt::ForwardingProblem {
     record(s, g);
     return s;
   }
-  // Screens are evaluations too (a multi-fidelity config): counted and recorded as before.
-  opt::Score screen(const opt::Genotype& g) const override { return evaluate(g); }
 
   long evaluations() const {
     const std::lock_guard<std::mutex> hold(lock_);

@@ -385,16 +385,14 @@ opt::Genotype MoldProblem::recombine(const opt::Genotype& a, const opt::Genotype
   return encode(ga);
 }
 
-opt::Score MoldProblem::evaluate(const opt::Genotype& g) const {
-  opt::Score s = score(pipeline_, g);
-  ++evaluated_;
-  if (s.feasible) ++feasible_;
-  return s;
-}
+opt::Score MoldProblem::evaluate(const opt::Genotype& g) const { return counted(score(pipeline_, g)); }
 
 opt::Score MoldProblem::evaluate_unless_behind(const opt::Genotype& g, const opt::Score& bar) const {
   if (ranking_.penalty.variant != mold::PenaltyVariant::ConstrainedDomination || !bar.feasible) return evaluate(g);
-  opt::Score s = score(pipeline_.evaluate_if_feasible(genome(g)));
+  return counted(score(pipeline_.evaluate_if_feasible(genome(g))));
+}
+
+opt::Score MoldProblem::counted(opt::Score s) const {
   ++evaluated_;
   if (s.feasible) ++feasible_;
   return s;

@@ -6,6 +6,7 @@
 #include <tbb/global_control.h>
 
 #include "mtcs/opt/evolution_strategy.h"
+#include "mtcs/opt/forwarding_problem.h"
 #include "opt/test_functions.h"
 
 using namespace mtcs::opt;
@@ -75,32 +76,22 @@ namespace {
 
 // A test function whose screen is a stand-in for a cheaper tier: the function itself, or its
 // negation (a screen that ranks backwards). Counts the calls of each.
-class Screened final : public Problem {
+class Screened final : public ForwardingProblem {
  public:
-  Screened(const Problem& f, bool backwards) : f_(f), backwards_(backwards) {}
-  std::string name() const override { return f_.name(); }
-  Genotype sample(Rng& rng) const override { return f_.sample(rng); }
-  std::size_t step_sizes(const Genotype& g) const override { return f_.step_sizes(g); }
-  std::size_t dimension(const Genotype& g) const override { return f_.dimension(g); }
-  std::size_t rotation_angles(const Genotype& g) const override { return f_.rotation_angles(g); }
-  std::vector<double> initial_steps(const Genotype& g) const override { return f_.initial_steps(g); }
-  Genotype recombine(const Genotype& a, const Genotype& b, Rng& rng) const override { return f_.recombine(a, b, rng); }
-  bool better(const Score& a, const Score& b) const override { return f_.better(a, b); }
-  long mutate(Genotype& g, const std::vector<double>& steps, Rng& rng) const override { return f_.mutate(g, steps, rng); }
+  Screened(const Problem& f, bool backwards) : ForwardingProblem(f), backwards_(backwards) {}
   Score evaluate(const Genotype& g) const override {
     ++evaluated;
-    return f_.evaluate(g);
+    return inner_.evaluate(g);
   }
   Score screen(const Genotype& g) const override {
     ++screened;
-    Score s = f_.evaluate(g);
+    Score s = inner_.evaluate(g);
     if (backwards_) s.value = -s.value;
     return s;
   }
   mutable std::atomic<long> evaluated{0}, screened{0};
 
  private:
-  const Problem& f_;
   bool backwards_;
 };
 

@@ -1,6 +1,9 @@
 #pragma once
 // A problem that passes every call to another: the base of wrappers that watch a problem (a
 // recorder of every evaluation, a test's log of scores) and override only what they watch.
+// evaluate_unless_behind and screen keep Problem's defaults, which call this->evaluate: a
+// wrapper that overrides evaluate sees every evaluation; one that wants the inner problem's skip
+// or screen overrides those too.
 
 #include "mtcs/opt/problem.h"
 
@@ -19,10 +22,6 @@ class ForwardingProblem : public Problem {
   long mutate(Genotype& g, const std::vector<double>& steps, Rng& rng) const override { return inner_.mutate(g, steps, rng); }
   Genotype recombine(const Genotype& a, const Genotype& b, Rng& rng) const override { return inner_.recombine(a, b, rng); }
   Score evaluate(const Genotype& g) const override { return inner_.evaluate(g); }
-  Score evaluate_unless_behind(const Genotype& g, const Score& bar) const override {
-    return inner_.evaluate_unless_behind(g, bar);
-  }
-  Score screen(const Genotype& g) const override { return inner_.screen(g); }
   bool better(const Score& a, const Score& b) const override { return inner_.better(a, b); }
   Score ranking(const Score& s) const override { return inner_.ranking(s); }
 

@@ -96,6 +96,7 @@ class MoldProblem final : public opt::Problem {
   bool blend_circuits(mold::Genome& a, const mold::Genome& b, opt::Rng& rng) const;
   opt::Score score(const eval::Pipeline& pipeline, const opt::Genotype& g) const;
   opt::Score score(const eval::Evaluation& e) const;
+  opt::Score counted(opt::Score s) const;  // evaluated_ and feasible_ counted
   // The reach move on g: true when it laid a circuit (added, or in place of one); `evaluations`
   // grows by the pipeline evaluations it spent.
   bool reach_worst(mold::Genome& g, opt::Rng& rng, long& evaluations) const;
