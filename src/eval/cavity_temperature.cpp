@@ -34,7 +34,7 @@ thermal::Tier line_sink_tier(mold::ThermalTier t) {
 }  // namespace
 
 ThermalQuery thermal_query(const mold::MoldSpec& spec) {
-  return {spec.thermal.tier, spec.thermal.elements_per_bore, spec.thermal.cell_size};
+  return {spec.thermal.tier, spec.thermal.elements_per_bore, spec.thermal.wall_images, spec.thermal.cell_size};
 }
 
 CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layout& layout, const ThermalQuery& query,
@@ -68,6 +68,7 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
     thermal::LineSinkOptions options;
     options.tier = line_sink_tier(query.tier);
     options.elements = query.elements;
+    options.images = query.wall_images;
     const thermal::CavityCut cut =
         scene.spec().thermal.void_plane ? thermal::cut_at_cavity_void(setting) : thermal::CavityCut{setting};
     const std::vector<thermal::Channel> folded = cut.fold(channels);

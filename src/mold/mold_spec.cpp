@@ -358,8 +358,8 @@ Objectives parse_objectives(const YamlReader& r, const YAML::Node& n) {
 // thermal: SI in the file, the thermal module's units (mm, W, degrees C) in the spec.
 ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
   r.expect_map(n, "thermal", {"steel_conductivity", "coolant", "ambient", "adiabatic_faces", "heat_flux", "regions",
-                              "polymer", "tier", "elements_per_bore", "cell_size", "objective_surface",
-                              "cavity_void", "sample_spacing"});
+                              "polymer", "tier", "elements_per_bore", "wall_images", "cell_size",
+                              "objective_surface", "cavity_void", "sample_spacing"});
   constexpr double kPerM = 1e-3, kPerM2 = 1e-6;  // W/(m K) -> W/(mm K); W/m^2 -> W/mm^2
   constexpr double kCold = -273.15, kHot = 5000;  // degrees C
   ThermalSpec t;
@@ -431,6 +431,7 @@ ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
     else r.fail(n["tier"], "thermal.tier", "expected t1, t2, t2d or fd; got '" + s + "'");
   }
   if (n["elements_per_bore"]) t.elements_per_bore = r.integer(n["elements_per_bore"], "thermal.elements_per_bore", 1, 1000);
+  if (n["wall_images"]) t.wall_images = r.integer(n["wall_images"], "thermal.wall_images", 1, 3);
   if (n["cell_size"]) t.cell_size = r.number(n["cell_size"], "thermal.cell_size", 1e-3, kHuge);
   if (n["sample_spacing"]) t.sample_spacing = r.number(n["sample_spacing"], "thermal.sample_spacing", 1e-3, kHuge);
   if (n["objective_surface"]) {

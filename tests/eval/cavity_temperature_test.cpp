@@ -15,8 +15,10 @@
 #include "mtcs/eval/cavity_temperature_report.h"
 #include "mtcs/eval/thermal_model.h"
 #include "mtcs/eval/pipeline.h"
+#include "mtcs/eval/thermal_tiers.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
+#include "mtcs/thermal/line_sinks.h"
 
 using namespace mtcs;
 using geometry::Vec3;
@@ -87,6 +89,36 @@ TEST_CASE("cavity temperature: finite volumes at 2 mm against FreeFem++", "[eval
   CHECK(rms(r.at_points, reference) < 0.25);  // experiments/thermal/fv.md: 0.18 K at 2 mm
   CHECK(std::abs(r.balance.residual()) < 1e-6 * r.balance.in);
   CHECK(r.balance.to_channels == Approx(137.82).margin(0.05));  // FreeFem: 137.82 W
+}
+
+// thermal.wall_images reaches the line-sink model both where the optimiser solves (the tier's
+// solver) and where mtcs thermal does (cavity_temperature): each equals a model built with that
+// many levels by hand, bit for bit, and differs from the default's.
+TEST_CASE("cavity temperature: thermal.wall_images reaches the line sinks in the loop and in mtcs thermal", "[eval][thermal]") {
+  mold::MoldSpec spec = mold::load_mold_spec(kBlockSpec);
+  spec.thermal.wall_images = 1;
+  const mold::Scene scene(spec);
+  const mold::Layout layout = mold::decode(scene, mold::load_layout(kBlockLayout, spec));
+  const thermal::Setting setting = eval::thermal_setting(scene);
+  const thermal::Samples samples = eval::thermal_samples(scene);
+  const std::vector<thermal::Channel> channels = eval::thermal_channels(layout, spec);
+  REQUIRE_FALSE(spec.thermal.void_plane);  // the channels go to the model as they are
+  auto by_hand = [&](int levels) {
+    thermal::LineSinkOptions options;
+    options.elements = spec.thermal.elements_per_bore;
+    options.images = levels;
+    thermal::LineSinkCache cache;
+    return thermal::LineSinkModel(setting, samples, options).temperatures(channels, cache);
+  };
+  const std::vector<double> one = by_hand(1), two = by_hand(2);
+  const std::vector<double> loop = eval::temperature_solver(spec.thermal.tier)(setting, samples, spec.thermal)(channels);
+  const eval::CavityTemperature shown = eval::cavity_temperature(scene, layout, eval::thermal_query(spec));
+  CHECK(loop == one);
+  CHECK(shown.at_samples == one);
+  double most = 0;
+  for (std::size_t i = 0; i < one.size(); ++i) most = std::max(most, std::abs(one[i] - two[i]));
+  CHECK(most > 1e-3);  // one level is another model: 0.24 K RMS against FreeFem++, two 0.14 K
+  CHECK(most < 1.0);
 }
 
 TEST_CASE("cavity temperature: the heated surface's figures are those of its samples in the whole field", "[eval][thermal]") {

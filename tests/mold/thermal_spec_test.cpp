@@ -89,6 +89,18 @@ TEST_CASE("thermal spec: sample_spacing, the cavity's by default, coarser only",
   }
 }
 
+TEST_CASE("thermal spec: wall_images, 2 by default, 1 to 3", "[mold][thermal]") {
+  CHECK(load(kBlock).thermal.wall_images == 2);
+  CHECK(load(kBlock + "thermal: {wall_images: 1}\n").thermal.wall_images == 1);
+  CHECK(load(kBlock + "thermal: {wall_images: 3}\n").thermal.wall_images == 3);
+  for (const std::string bad : {"0", "4", "1.5", "two"}) {
+    const auto e = error_of(kBlock + "thermal:\n  wall_images: " + bad + "\n");
+    CHECK(e.field() == "thermal.wall_images");
+    CHECK(e.line() == 3);
+    CHECK(e.column() == 16);
+  }
+}
+
 TEST_CASE("thermal spec: SI values are converted to mm, W and degrees C", "[mold][thermal]") {
   const auto t = load(kBlock +
                       "thermal:\n"

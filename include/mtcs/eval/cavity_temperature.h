@@ -17,6 +17,7 @@ namespace mtcs::eval {
 struct ThermalQuery {
   mold::ThermalTier tier = mold::ThermalTier::T2d;
   int elements = 4;   // per bore, line sinks
+  int wall_images = 2;  // reflection levels summed exactly at the walls, line sinks
   double cell = 2;    // mm, finite volumes
 };
 // The spec's tier and settings.

@@ -177,6 +177,10 @@ struct ThermalSpec {
   Polymer polymer;
   ThermalTier tier = ThermalTier::T2d;
   int elements_per_bore = 4;               // M of T2/T2d
+  // Reflection levels of the block's faces summed exactly at the bores' walls by T1/T2/T2d (the
+  // samples take one; farther levels join the block's charge and dipole): 2 keeps the reference
+  // block at 0.14 K RMS, 1 costs 0.56x per solve (experiments/thermal/plate_wall_images.md).
+  int wall_images = 2;
   double cell_size = 2;                    // mm, T3 (fd)
   // mm between the samples of the temperature objectives (eval::thermal_samples); none: the
   // cavity's sample_spacing. Coarser than the cavity's: the line sinks' work per new channel
