@@ -246,18 +246,19 @@ FloatAxis float_axis(const ChannelAxis& axis, const Vec3& origin, std::vector<fl
 }  // namespace
 
 // Each entry point compiled twice, for AVX2 with FMA and for the baseline, picked at run time
-// (target_clones cannot ask for two features at once).
+// (target_clones cannot ask for two features at once). The nodes and far limits are per-thread
+// scratch: an optimiser's solve calls these some 25 times, each a malloc and free otherwise.
 #define MTCS_FIELDS_BODY                                                                   \
-  std::vector<float> node;                                                                 \
+  thread_local std::vector<float> node;                                                    \
   const FloatAxis g = float_axis(axis, origin, node);                                      \
   dispatch<false>(g, axis.elements, kinds, node.data(), x, y, z, nullptr, n, out, n);
 // Per slot, runs of chunks that are all far (or all near) go to one kernel each.
 #define MTCS_SLOTS_BODY                                                                     \
-  std::vector<float> node;                                                                  \
+  thread_local std::vector<float> node, limits;                                             \
   const FloatAxis g = float_axis(axis, origin, node);                                       \
   const std::size_t chunk = far ? far->chunk : targets;                                     \
   const std::size_t chunks = chunk ? (targets + chunk - 1) / chunk : 0;                     \
-  std::vector<float> limits(far ? 4 * axis.elements : 0);                                   \
+  limits.resize(far ? 4 * axis.elements : 0);                                               \
   if (far) far_limits(g, axis.elements, node.data(), far->ratio, limits.data());            \
   for (int j = 0; j < slots; ++j) {                                                         \
     const std::size_t k = std::size_t(j) * targets;                                         \

@@ -9,9 +9,16 @@ namespace mtcs::thermal {
 
 std::vector<float> LineSinkModel::Impl::float_columns_at(const ChannelAxis& source, const PointSet& ps,
                                                          const Vec3& origin, double far_ratio) const {
+  std::vector<float> acc;
+  float_columns_into(source, ps, origin, far_ratio, acc);
+  return acc;
+}
+
+void LineSinkModel::Impl::float_columns_into(const ChannelAxis& source, const PointSet& ps, const Vec3& origin,
+                                             double far_ratio, std::vector<float>& acc) const {
   const int cols = source.elements * kinds;
   const std::size_t T = ps.targets();
-  std::vector<float> acc(T * cols, 0.0f);
+  acc.assign(T * cols, 0.0f);
   const FarChunks far{ps.chunk_box.data(), ps.chunk, float(far_ratio)};
   const bool use_far = !ps.chunk_box.empty() && far_ratio > 0;
   element_fields_float_slots(source, origin, kinds, ps.sx.data(), ps.sy.data(), ps.sz.data(), ps.sw.data(), T,
@@ -20,7 +27,6 @@ std::vector<float> LineSinkModel::Impl::float_columns_at(const ChannelAxis& sour
     const float scale = float((c % kinds == 0 ? -1 : 1) * inv4pik);  // a sink takes heat out
     for (std::size_t t = 0; t < T; ++t) acc[c * T + t] *= scale;
   }
-  return acc;
 }
 
 MatrixXd LineSinkModel::Impl::columns_at(const ChannelAxis& source, const PointSet& ps, bool single,
@@ -74,7 +80,24 @@ MatrixXd LineSinkModel::Impl::channel_at_rows(const LineSinkCache::ChannelBlock&
   // An element at least pair_far element lengths from a slot's wall points (all of them) takes
   // its multipole expansion there: q = h / d <= 1 / (2 pair_far), the walls' chunk boxes.
   const double ratio = options.pair_far > 0 ? 0.5 / options.pair_far : 0.0;
-  return rows_from_walls(rows.axis, columns_at(source, rows.walls, rows.walls_single, rows.walls_origin, ratio));
+  if (!rows.walls_single || rows.walls.slots == 0)
+    return rows_from_walls(rows.axis, columns_at(source, rows.walls, rows.walls_single, rows.walls_origin, ratio));
+  // rows_from_walls straight from the float columns (the same sums in the same order): no
+  // walls x columns matrix in double between them.
+  thread_local std::vector<float> acc;
+  float_columns_into(source, rows.walls, rows.walls_origin, ratio, acc);
+  const int cols = source.elements * kinds;
+  const std::size_t T = rows.walls.targets();
+  MatrixXd out(rows.axis.elements * kinds, cols);
+  for (int c = 0; c < cols; ++c) {
+    const float* v = acc.data() + std::size_t(c) * T;
+    for (int e = 0; e < rows.axis.elements; ++e) {
+      const double a = v[4 * e], b = v[4 * e + 1], p = v[4 * e + 2], q = v[4 * e + 3];
+      out(e * kinds, c) = 0.25 * (a + b + p + q);
+      if (kinds == 3) out(e * kinds + 1, c) = 0.5 * (a - b), out(e * kinds + 2, c) = 0.5 * (p - q);
+    }
+  }
+  return out;
 }
 
 std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(const Channel& ch) const {

@@ -201,6 +201,8 @@ struct LineSinkModel::Impl {
   // The same in single precision over a slot layout, column-major (the samples' cached columns).
   std::vector<float> float_columns_at(const ChannelAxis& source, const PointSet& ps, const Vec3& origin,
                                       double far_ratio) const;
+  void float_columns_into(const ChannelAxis& source, const PointSet& ps, const Vec3& origin, double far_ratio,
+                          std::vector<float>& acc) const;
   // Columns of `source` at the rows of a channel (its own or another): its wall points' mean and
   // half-differences; wall image slots options.pair_far element lengths or more from an element
   // of the source see it as its multipole expansion (line_sink_fields.h, FarChunks).

@@ -131,7 +131,8 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
     throw std::invalid_argument("line sinks: no channel and no isothermal face: no steady state");
   // Only the steel conducts: a channel's part outside the block (a connection in the air) takes
   // no heat, and its images would land inside.
-  std::vector<Channel> inside(channels.begin(), channels.end());
+  thread_local std::vector<Channel> inside;  // per-thread scratch, as the system below
+  inside.assign(channels.begin(), channels.end());
   for (Channel& ch : inside) {
     const auto clipped = clip_to_block(m.setting.block, ch.axis);
     if (!clipped) throw std::invalid_argument("line sinks: a channel lies outside the block");
@@ -142,8 +143,10 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
   using Key = LineSinkCache::Tables::Key;
   LineSinkCache::Tables& tables = *cache.tables_;
   const std::uint64_t now = ++cache.evaluation_;
-  std::vector<Key> keys(nc);
-  std::vector<std::shared_ptr<LineSinkCache::ChannelBlock>> blocks(nc);
+  thread_local std::vector<Key> keys;
+  keys.resize(nc);
+  // Plain pointers into the cache: nothing leaves it before the shrink at the end.
+  std::vector<const LineSinkCache::ChannelBlock*> blocks(nc);
   for (std::size_t c = 0; c < nc; ++c) {
     const Channel& ch = channels[c];
     if (!((ch.axis.p1 - ch.axis.p0).norm() > 0) || !(ch.radius > 0))
@@ -159,10 +162,10 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
       ++cache.channels_computed;
     }
     entry.used = now;
-    blocks[c] = entry.block;
+    blocks[c] = entry.block.get();
   }
   // Every ordered pair's block (rows of r, columns of c), looked up once.
-  std::vector<std::shared_ptr<LineSinkCache::PairBlock>> pairs(nc * nc);
+  std::vector<const LineSinkCache::PairBlock*> pairs(nc * nc);
   for (std::size_t r = 0; r < nc; ++r)
     for (std::size_t c = 0; c < nc; ++c) {
       if (r == c) continue;
@@ -176,11 +179,12 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
         cache.bytes_ += block_bytes(*entry.block);
       }
       entry.used = now;
-      pairs[r * nc + c] = entry.block;
+      pairs[r * nc + c] = entry.block.get();
     }
 
   // Unknowns: the channels' columns, the faces' losses, the free constant.
-  std::vector<int> offset(nc + 1, 0);
+  thread_local std::vector<int> offset;
+  offset.assign(nc + 1, 0);
   for (std::size_t c = 0; c < nc; ++c) offset[c + 1] = offset[c] + blocks[c]->cols;
   const int n_ch = offset[nc];
   const int nf = int(m.faces.size());
@@ -189,8 +193,11 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
   const int t0 = n_ch + nf;  // column of the free constant
   const double fixed = m.fixed_constant.value_or(0.0);
   const double k = m.setting.conductivity;
-  MatrixXd A = MatrixXd::Zero(n, n);
-  VectorXd rhs = VectorXd::Zero(n);
+  // The system's storage is the thread's, kept between solves (a 40 kB malloc and free each).
+  thread_local MatrixXd A;
+  thread_local VectorXd rhs;
+  A.setZero(n, n);
+  rhs.setZero(n);
 
   for (std::size_t c = 0; c < nc; ++c) {
     const auto& b = *blocks[c];
@@ -212,7 +219,9 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
       to = b.far_rows.lazyProduct(m.face_moments);
       to += b.face_rows;
     }
-    const VectorXd heat_rows = b.heat_rows + b.far_rows * m.heat_moments;
+    thread_local VectorXd heat_rows;
+    heat_rows.noalias() = b.far_rows * m.heat_moments;
+    heat_rows = b.heat_rows + heat_rows;
     for (int r = 0; r < b.cols; ++r) {
       const int row = offset[c] + r;
       const bool mean_row = r % m.kinds == 0;
@@ -271,7 +280,9 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
   LineSinkSolution out;
   out.heat_in = m.heat_in;
   const double T0 = free_constant ? x[t0] : fixed;
-  VectorXd T = m.heat_samples + VectorXd::Constant(m.n_samples, T0);
+  out.temperature.resize(m.n_samples);
+  Eigen::Map<VectorXd> T(out.temperature.data(), Eigen::Index(m.n_samples));
+  T = m.heat_samples + VectorXd::Constant(m.n_samples, T0);
   if (nf) T += m.face_samples * x.segment(n_ch, nf);
   // The far lattice: the moments of everything in the block.
   Eigen::Vector4d fixed_moments = m.heat_moments, channel_moments = Eigen::Vector4d::Zero();
@@ -279,6 +290,7 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
   for (std::size_t c = 0; c < nc; ++c) channel_moments += blocks[c]->moments * x.segment(offset[c], blocks[c]->cols);
   T += m.far_samples_fixed * fixed_moments + m.far_samples * channel_moments;
   const std::size_t ns = m.n_samples;
+  out.channel_heat.reserve(nc);
   for (std::size_t c = 0; c < nc; ++c) {
     const auto& b = *blocks[c];
     if (m.options.single_precision) {
@@ -295,7 +307,6 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
     out.channel_heat.push_back(q);
   }
   for (int f = 0; f < nf; ++f) out.face_heat += x[n_ch + f] * m.faces[f].area;
-  out.temperature.assign(T.data(), T.data() + ns);
 
   // Over budget: the blocks unused for longest go (the pairs first: cheaper to rebuild).
   if (cache.bytes_ > cache.budget_) {
