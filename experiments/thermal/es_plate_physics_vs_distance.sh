@@ -9,11 +9,14 @@
 # (t3_std_all_k, from the same solve). Writes es_plate_physics_vs_distance.csv (rewritten after
 # every seed, so an interrupted study leaves the seeds it finished), then the rank-sum test.
 #   bash experiments/thermal/es_plate_physics_vs_distance.sh [EVALUATIONS] [CELL] [SEEDS] [JOBS]
-# OBJECTIVES="temperature_std" runs one arm only (its rows alone in the CSV). FIELDS=DIR keeps the
+# OBJECTIVES="temperature_std" runs one arm only (its rows alone in the CSV); "spec" is an arm
+# with molds/plate.yaml's own objectives (temperature_std, temperature_max, cost). FIELDS=DIR keeps the
 # per-sample T2d and T3 fields of every best layout there, named as plate_diagnosis.py caches them.
 # VOID=plane sets thermal.cavity_void: plane (the line sinks see the cavity as an adiabatic cut;
 # experiments/thermal/void_plane.md) in both arms' specs (uniformity does not use it). LAYOUTS=DIR
-# keeps the best layouts there instead of experiments/thermal/es_plate_layouts.
+# keeps the best layouts there instead of experiments/thermal/es_plate_layouts. WALL_IMAGES=n sets
+# thermal.wall_images: n in both arms' specs (the line sinks' exact reflection levels; T3 and
+# uniformity do not use it): experiments/thermal/plate_wall_images.md.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 mtcs=${MTCS:-./build/mtcs}
@@ -27,9 +30,11 @@ trap 'rm -rf "$work"' EXIT
 out=${OUT:-experiments/thermal/es_plate_physics_vs_distance.csv}
 layouts=${LAYOUTS:-experiments/thermal/es_plate_layouts}
 mkdir -p "$layouts"
-for objective in temperature_std uniformity; do
+for objective in temperature_std uniformity spec; do
   sed "s/^  use: .*/  use: [$objective]/" molds/plate.yaml > "$work/$objective.yaml"
+  if [ "$objective" = spec ]; then cp molds/plate.yaml "$work/spec.yaml"; fi
   if [ -n "${VOID:-}" ]; then sed -i "s/^  tier: t2d$/  tier: t2d\n  cavity_void: $VOID/" "$work/$objective.yaml"; fi
+  if [ -n "${WALL_IMAGES:-}" ]; then sed -i "s/^  tier: t2d$/  tier: t2d\n  wall_images: $WALL_IMAGES/" "$work/$objective.yaml"; fi
 done
 # Every cavity sample (the order of mtcs's sample_box), for the std over the whole surface.
 python3 -c "

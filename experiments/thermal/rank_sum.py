@@ -1,5 +1,7 @@
 """Median T3 std per objective and the exact two-sided Mann-Whitney rank-sum test (continuous
-values: no ties), from es_physics_vs_distance.csv."""
+values: no ties), from es_physics_vs_distance.csv. With a second CSV: the temperature_std runs of
+the first against those of the second (two settings of the physics arm; each file one arm).
+  python3 rank_sum.py STUDY.csv [OTHER.csv]"""
 import csv
 import statistics
 import sys
@@ -9,7 +11,13 @@ rows = list(csv.DictReader(open(sys.argv[1])))
 by = {}
 for r in rows:
     by.setdefault(r["objective"], []).append(float(r["t3_std_k"]))
-a, b = by["temperature_std"], by["uniformity"]
+names = "physics (temperature_std)", "wall distance (uniformity)"
+if len(sys.argv) > 2:  # one arm per file, whatever its objectives
+    a = [float(r["t3_std_k"]) for r in rows]
+    b = [float(r["t3_std_k"]) for r in csv.DictReader(open(sys.argv[2]))]
+    names = sys.argv[1], sys.argv[2]
+else:
+    a, b = by["temperature_std"], by["uniformity"]
 n, m = len(a), len(b)
 u = sum(x < y for x in a for y in b)  # pairs in which the physics run's layout is cooler-even
 
@@ -28,9 +36,10 @@ def ways(n, m, u):
 total = sum(ways(n, m, k) for k in range(n * m + 1))
 centre = n * m / 2
 p = sum(ways(n, m, k) for k in range(n * m + 1) if abs(k - centre) >= abs(u - centre)) / total
-print(f"T3 patch std, median over {n} seeds: physics (temperature_std) {statistics.median(a):.4f} K, "
-      f"wall distance (uniformity) {statistics.median(b):.4f} K")
-print(f"U = {u} of {n * m} pairs have the physics run's layout more uniform; exact two-sided p = {p:.2e}")
+whose = "the physics run's" if len(sys.argv) <= 2 else "the first's"
+print(f"T3 patch std, median over {n} seeds: {names[0]} {statistics.median(a):.4f} K, "
+      f"{names[1]} {statistics.median(b):.4f} K")
+print(f"U = {u} of {n * m} pairs have {whose} layout more uniform; exact two-sided p = {p:.2e}")
 if "t2d_std_k" in rows[0]:
     # How well the loop's tier ranks the best layouts as the reference does (both arms together).
     solved = [r for r in rows if r["t2d_std_k"]]
