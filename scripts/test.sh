@@ -3,6 +3,12 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
+# Three build trees (Release, the sanitizers', the fuzzers') take ~10 GB; a full disk fails the
+# compiler half-way with "No space left on device". Say so first.
+free_gb=$(df -Pk . | awk 'NR == 2 {print int($4 / 1048576)}')
+if [ "${free_gb:-0}" -lt 12 ]; then
+  echo "test.sh: warning: ${free_gb} GB free here; the build trees need ~10 GB (set MTCS_SKIP_SANITIZE=1 for one tree)" >&2
+fi
 bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j2
 # The same tests under AddressSanitizer and UBSan (set MTCS_SKIP_SANITIZE=1 to skip).
