@@ -16,7 +16,8 @@
 # experiments/thermal/void_plane.md) in both arms' specs (uniformity does not use it). LAYOUTS=DIR
 # keeps the best layouts there instead of experiments/thermal/es_plate_layouts. WALL_IMAGES=n sets
 # thermal.wall_images: n in both arms' specs (the line sinks' exact reflection levels; T3 and
-# uniformity do not use it): experiments/thermal/plate_wall_images.md.
+# uniformity do not use it): experiments/thermal/plate_wall_images.md. CONFIG=FILE: the run config
+# (`mtcs optimize --config`) of every run.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 mtcs=${MTCS:-./build/mtcs}
@@ -48,7 +49,8 @@ run_seed() {
   for objective in $objectives; do
     dir="$work/$objective-$seed"
     start=$(date +%s.%N)
-    "$mtcs" optimize "$work/$objective.yaml" --seed "$seed" --evaluations "$budget" --threads 1 --out "$dir" --quiet
+    "$mtcs" optimize "$work/$objective.yaml" ${CONFIG:+--config "$CONFIG"} --seed "$seed" --evaluations "$budget" \
+      --threads 1 --out "$dir" --quiet
     seconds=$(echo "$(date +%s.%N) - $start" | bc)
     t2d=$("$mtcs" thermal "$work/$objective.yaml" --layout "$dir/best.layout.yaml" --json \
           --samples "$work/samples.csv" --out "$dir/t2d.csv")
