@@ -62,42 +62,38 @@ MatrixXd LineSinkModel::Impl::columns_at(const ChannelAxis& source, const PointS
   return out;
 }
 
-// The rows' functionals from the columns at the wall points (4 per element): the mean and the
-// half-differences along n1 and n2.
-MatrixXd LineSinkModel::Impl::rows_from_walls(const ChannelAxis& rows, const MatrixXd& v) const {
-  MatrixXd out(rows.elements * kinds, v.cols());
-  for (int e = 0; e < rows.elements; ++e) {
-    out.row(e * kinds) = 0.25 * (v.row(4 * e) + v.row(4 * e + 1) + v.row(4 * e + 2) + v.row(4 * e + 3));
-    if (kinds == 3) {
-      out.row(e * kinds + 1) = 0.5 * (v.row(4 * e) - v.row(4 * e + 1));
-      out.row(e * kinds + 2) = 0.5 * (v.row(4 * e + 2) - v.row(4 * e + 3));
+namespace {
+
+// The rows' functionals from the columns at the wall points (4 per element, v(point, column)):
+// the mean and the half-differences along n1 and n2.
+template <class At>
+MatrixXd rows_from(const ChannelAxis& rows, int kinds, Eigen::Index cols, At v) {
+  MatrixXd out(rows.elements * kinds, cols);
+  for (Eigen::Index c = 0; c < cols; ++c)
+    for (int e = 0; e < rows.elements; ++e) {
+      const double a = v(4 * e, c), b = v(4 * e + 1, c), p = v(4 * e + 2, c), q = v(4 * e + 3, c);
+      out(e * kinds, c) = 0.25 * (a + b + p + q);
+      if (kinds == 3) out(e * kinds + 1, c) = 0.5 * (a - b), out(e * kinds + 2, c) = 0.5 * (p - q);
     }
-  }
   return out;
 }
+
+}  // namespace
 
 MatrixXd LineSinkModel::Impl::channel_at_rows(const LineSinkCache::ChannelBlock& rows, const ChannelAxis& source) const {
   // An element at least pair_far element lengths from a slot's wall points (all of them) takes
   // its multipole expansion there: q = h / d <= 1 / (2 pair_far), the walls' chunk boxes.
   const double ratio = options.pair_far > 0 ? 0.5 / options.pair_far : 0.0;
-  if (!rows.walls_single || rows.walls.slots == 0)
-    return rows_from_walls(rows.axis, columns_at(source, rows.walls, rows.walls_single, rows.walls_origin, ratio));
-  // rows_from_walls straight from the float columns (the same sums in the same order): no
-  // walls x columns matrix in double between them.
+  if (!rows.walls_single || rows.walls.slots == 0) {
+    const MatrixXd v = columns_at(source, rows.walls, rows.walls_single, rows.walls_origin, ratio);
+    return rows_from(rows.axis, kinds, v.cols(), [&](int i, Eigen::Index c) { return v(i, c); });
+  }
+  // Straight from the float columns: no walls x columns matrix in double between them.
   thread_local std::vector<float> acc;
   float_columns_into(source, rows.walls, rows.walls_origin, ratio, acc);
-  const int cols = source.elements * kinds;
   const std::size_t T = rows.walls.targets();
-  MatrixXd out(rows.axis.elements * kinds, cols);
-  for (int c = 0; c < cols; ++c) {
-    const float* v = acc.data() + std::size_t(c) * T;
-    for (int e = 0; e < rows.axis.elements; ++e) {
-      const double a = v[4 * e], b = v[4 * e + 1], p = v[4 * e + 2], q = v[4 * e + 3];
-      out(e * kinds, c) = 0.25 * (a + b + p + q);
-      if (kinds == 3) out(e * kinds + 1, c) = 0.5 * (a - b), out(e * kinds + 2, c) = 0.5 * (p - q);
-    }
-  }
-  return out;
+  return rows_from(rows.axis, kinds, source.elements * kinds,
+                   [&](int i, Eigen::Index c) { return double(acc[std::size_t(c) * T + std::size_t(i)]); });
 }
 
 std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(const Channel& ch) const {

@@ -207,7 +207,6 @@ struct LineSinkModel::Impl {
   // half-differences; wall image slots options.pair_far element lengths or more from an element
   // of the source see it as its multipole expansion (line_sink_fields.h, FarChunks).
   MatrixXd channel_at_rows(const LineSinkCache::ChannelBlock& rows, const ChannelAxis& source) const;
-  MatrixXd rows_from_walls(const ChannelAxis& rows, const MatrixXd& at_walls) const;
   // Everything of one channel that does not depend on the others (line_sink_channel.cpp).
   std::shared_ptr<LineSinkCache::ChannelBlock> build_channel(const Channel& ch) const;
 };

@@ -219,9 +219,7 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
       to = b.far_rows.lazyProduct(m.face_moments);
       to += b.face_rows;
     }
-    thread_local VectorXd heat_rows;
-    heat_rows.noalias() = b.far_rows * m.heat_moments;
-    heat_rows = b.heat_rows + heat_rows;
+    const VectorXd heat_rows = b.heat_rows + b.far_rows * m.heat_moments;
     for (int r = 0; r < b.cols; ++r) {
       const int row = offset[c] + r;
       const bool mean_row = r % m.kinds == 0;
