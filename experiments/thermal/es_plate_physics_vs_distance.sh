@@ -32,8 +32,8 @@ out=${OUT:-experiments/thermal/es_plate_physics_vs_distance.csv}
 layouts=${LAYOUTS:-experiments/thermal/es_plate_layouts}
 mkdir -p "$layouts"
 for objective in temperature_std uniformity spec; do
-  sed "s/^  use: .*/  use: [$objective]/" molds/plate.yaml > "$work/$objective.yaml"
-  if [ "$objective" = spec ]; then cp molds/plate.yaml "$work/spec.yaml"; fi
+  if [ "$objective" = spec ]; then cp molds/plate.yaml "$work/spec.yaml"
+  else sed "s/^  use: .*/  use: [$objective]/" molds/plate.yaml > "$work/$objective.yaml"; fi
   if [ -n "${VOID:-}" ]; then sed -i "s/^  tier: t2d$/  tier: t2d\n  cavity_void: $VOID/" "$work/$objective.yaml"; fi
   if [ -n "${WALL_IMAGES:-}" ]; then sed -i "s/^  tier: t2d$/  tier: t2d\n  wall_images: $WALL_IMAGES/" "$work/$objective.yaml"; fi
 done

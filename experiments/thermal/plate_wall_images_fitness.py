@@ -8,6 +8,8 @@ import statistics
 import subprocess
 import sys
 
+from rank_sum import p_exact  # this folder
+
 
 def arm(table, layouts):
     out = []
@@ -22,22 +24,6 @@ def arm(table, layouts):
     return out
 
 
-def p_two_sided(n, m, u):
-    ways = {}
-
-    def w(n, m, u):
-        if u < 0:
-            return 0
-        if n == 0 or m == 0:
-            return int(u == 0)
-        if (n, m, u) not in ways:
-            ways[n, m, u] = w(n, m - 1, u - n) + w(n - 1, m, u)
-        return ways[n, m, u]
-
-    total = sum(w(n, m, k) for k in range(n * m + 1))
-    return sum(w(n, m, k) for k in range(n * m + 1) if abs(k - n * m / 2) >= abs(u - n * m / 2)) / total
-
-
 a, b = arm(sys.argv[1], sys.argv[2]), arm(sys.argv[3], sys.argv[4])
 print("arm,seed,t3_std_k,t3_max_c,cost,t3_fitness,seconds,bores")
 for name, x in ((sys.argv[1], a), (sys.argv[3], b)):
@@ -49,4 +35,4 @@ for name, x in ((sys.argv[1], a), (sys.argv[3], b)):
           f"fitness {med['fitness']:.3f}, run {med['seconds']:.2f} s")
 u = sum(p["fitness"] < q["fitness"] for p in a for q in b)
 print(f"# U = {u} of {len(a) * len(b)} pairs have the first's layout fitter under T3; "
-      f"exact two-sided p = {p_two_sided(len(a), len(b), u):.2f}")
+      f"exact two-sided p = {p_exact(len(a), len(b), u):.2f}")
