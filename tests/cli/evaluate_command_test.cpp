@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include <unistd.h>
+#include "support/scratch_file.h"
 
 namespace fs = std::filesystem;
 
@@ -18,11 +19,8 @@ struct Run {
   std::string out, err;
 };
 
-// CTest runs test cases in parallel processes: every file name carries the process id.
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_eval_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
+  return mtcs_test::scratch_dir("eval_cli") / name;
 }
 
 Run run_mtcs(const std::string& args) {

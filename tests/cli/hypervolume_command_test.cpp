@@ -8,15 +8,14 @@
 #include <sstream>
 
 #include <unistd.h>
+#include "support/scratch_file.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_hv_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
+  return mtcs_test::scratch_dir("hv_cli") / name;
 }
 
 int run(const std::string& args, std::string* out) {

@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "mtcs/mesh/mesh_io.h"
+#include "support/scratch_file.h"
 
 namespace fs = std::filesystem;
 using namespace mtcs;
@@ -19,9 +20,7 @@ using namespace mtcs;
 namespace {
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_interfere_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
+  return mtcs_test::scratch_dir("interfere_cli") / name;
 }
 
 int run(const std::string& args, std::string* out) {

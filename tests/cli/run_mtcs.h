@@ -1,6 +1,6 @@
 #pragma once
-// Running the built mtcs as a user would, from CLI tests: a scratch folder per test process
-// (tests run in parallel), the exit code, files read whole.
+// Running the built mtcs as a user would, from CLI tests: files in the test process's scratch
+// folder (support/scratch_file.h), the exit code, files read whole.
 
 #include <cstdlib>
 #include <filesystem>
@@ -9,18 +9,15 @@
 #include <string>
 
 #include <sys/wait.h>
-#include <unistd.h>
+
+#include "support/scratch_file.h"
 
 namespace mtcs_test {
 
 namespace fs = std::filesystem;
 
-// DIR/name in a folder of this process, e.g. scratch("replay", "run").
-inline fs::path scratch(const std::string& topic, const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_" + topic + "_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
-}
+// DIR/name in this process's scratch folder of `topic`, e.g. scratch("replay", "run").
+inline fs::path scratch(const std::string& topic, const std::string& name) { return scratch_dir(topic) / name; }
 
 // mtcs ARGS with stderr to `err`; the exit code.
 inline int run_mtcs(const std::string& args, const fs::path& err = "/dev/null") {

@@ -19,6 +19,7 @@
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/thermal/line_sinks.h"
+#include "support/scratch_file.h"
 
 using namespace mtcs;
 using geometry::Vec3;
@@ -130,8 +131,7 @@ TEST_CASE("cavity temperature: the heated surface's figures are those of its sam
                            "objectives: {use: [temperature_std, temperature_mean]}\n"
                            "thermal:\n  heat_flux: 20000\n"
                            "  regions: [{box: {min: [0, 0, 35], max: [100, 100, 50]}, heat_flux: 0}]\n";
-  const auto dir = std::filesystem::temp_directory_path() / ("cavity_temperature_test." + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const auto dir = mtcs_test::scratch_dir("cavity_temperature");
   auto scene_of = [&](const std::string& name, const std::string& extra) {
     std::ofstream(dir / name) << text << extra;
     return mold::Scene(mold::load_mold_spec((dir / name).string()));

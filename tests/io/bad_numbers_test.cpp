@@ -14,6 +14,7 @@
 #include "mtcs/io/input_error.h"
 #include "mtcs/io/pairs_csv.h"
 #include "mtcs/io/points_csv.h"
+#include "support/scratch_file.h"
 
 using mtcs::io::InputError;
 namespace fs = std::filesystem;
@@ -21,8 +22,7 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string write(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_io_bad_numbers_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = mtcs_test::scratch_dir("io_bad_numbers");
   std::ofstream(dir / name) << text;
   return (dir / name).string();
 }

@@ -11,6 +11,7 @@
 #include "mtcs/io/cylinders_csv.h"
 #include "mtcs/io/input_error.h"
 #include "fuzz_mutate.h"
+#include "support/scratch_file.h"
 
 TEST_CASE("cylinders CSV reader survives mutated input", "[io][fuzz]") {
   const std::string seed =
@@ -19,7 +20,7 @@ TEST_CASE("cylinders CSV reader survives mutated input", "[io][fuzz]") {
       "b,1e6,-1e6,1e6,1e6,1e6,1e6,0.5,,,buried\n";
   const std::string alphabet = "0123456789,.-+eE\n\r\t xnaif#\"";
   std::mt19937_64 rng(7);
-  const auto path = std::filesystem::temp_directory_path() / ("mtcs_fuzz_cyl_" + std::to_string(::getpid()) + ".csv");
+  const auto path = mtcs_test::scratch_dir("fuzz_cylinders") / "input.csv";
   int parsed = 0, rejected = 0;
   for (int i = 0; i < 3000; ++i) {
     const std::string s = mtcs_test::mutate(seed, alphabet, rng, 6, 8);

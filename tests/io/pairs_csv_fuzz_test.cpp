@@ -9,6 +9,7 @@
 #include "mtcs/io/input_error.h"
 #include "mtcs/io/pairs_csv.h"
 #include "fuzz_mutate.h"
+#include "support/scratch_file.h"
 
 TEST_CASE("pairs CSV reader survives mutated input", "[cli][fuzz]") {
   const std::string seed =
@@ -17,7 +18,7 @@ TEST_CASE("pairs CSV reader survives mutated input", "[cli][fuzz]") {
       "b,1e6,1e6,1e6,1e6,1e6,1e6,0.5,-3,4,5,6,7,8,0.25,,,x\n";
   const std::string alphabet = "0123456789,.-+eE\n\r\t xnaif#";
   std::mt19937_64 rng(99);
-  const auto path = std::filesystem::temp_directory_path() / "mtcs_fuzz.csv";
+  const auto path = mtcs_test::scratch_dir("fuzz_pairs") / "input.csv";
   int parsed = 0, rejected = 0;
   for (int i = 0; i < 3000; ++i) {
     const std::string s = mtcs_test::mutate(seed, alphabet, rng, 6, 8);

@@ -12,6 +12,7 @@
 #include "mtcs/mesh/mesh_check.h"
 #include "mtcs/mesh/mesh_io.h"
 #include "fuzz_mutate.h"
+#include "support/scratch_file.h"
 
 TEST_CASE("mesh reader survives mutated OFF, STL and OBJ input", "[mesh][fuzz]") {
   // A tetrahedron, outward, in each format.
@@ -27,7 +28,7 @@ TEST_CASE("mesh reader survives mutated OFF, STL and OBJ input", "[mesh][fuzz]")
   std::mt19937_64 rng(31);
   int read = 0, solid = 0, rejected = 0;
   for (const auto& [ext, seed] : seeds) {
-    const auto path = std::filesystem::temp_directory_path() / ("mtcs_fuzz_mesh_" + std::to_string(::getpid()) + ext);
+    const auto path = mtcs_test::scratch_dir("fuzz_mesh") / ("input" + ext);
     for (int i = 0; i < 600; ++i) {
       const std::string s = mtcs_test::mutate(seed, alphabet, rng, 5, 6);
       std::ofstream(path, std::ios::binary) << s;

@@ -10,6 +10,7 @@
 
 #include "mtcs/mesh/mesh_io.h"
 #include "support/thrown_by.h"
+#include "support/scratch_file.h"
 
 using mtcs::mesh::MeshError;
 using mtcs::mesh::read_mesh;
@@ -18,8 +19,7 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string write(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_mesh_defects_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = mtcs_test::scratch_dir("mesh_defects");
   std::ofstream(dir / name, std::ios::binary) << text;
   return (dir / name).string();
 }
@@ -206,6 +206,6 @@ TEST_CASE("mesh reader defect: a PLY halfedge element needs uint source and targ
 
 // The reader's side of fuzz crash #16: a path the file system refuses to look up is a MeshError.
 TEST_CASE("mesh reader defect: a file name too long for the file system is a MeshError", "[mesh][fuzz-defect]") {
-  const std::string path = fs::temp_directory_path() / (std::string(300, 'b') + ".off");
+  const std::string path = mtcs_test::scratch_dir("mesh_defects") / (std::string(300, 'b') + ".off");
   CHECK_THAT(error_of(path), Catch::Contains("mesh file not found") && Catch::Contains("too long"));
 }

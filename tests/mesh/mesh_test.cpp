@@ -10,6 +10,7 @@
 #include "mtcs/mesh/bvh.h"
 #include "mtcs/mesh/mesh_check.h"
 #include "mtcs/mesh/mesh_io.h"
+#include "support/scratch_file.h"
 
 using namespace mtcs;
 using geometry::Vec3;
@@ -29,7 +30,7 @@ TEST_CASE("meshes: a box is closed and outward; holes and flipped faces are repo
 
 TEST_CASE("meshes: binary STL round trip through CGAL's reader", "[mesh]") {
   const auto box = mesh::box_mesh({{-1, -2, -3}, {1, 2, 3}});
-  const auto path = (std::filesystem::temp_directory_path() / "mtcs_box.stl").string();
+  const auto path = (mtcs_test::scratch_dir("meshes") / "box.stl").string();
   mesh::write_stl(path, box);
   const auto back = mesh::read_mesh(path);
   CHECK(back.triangles.size() == 12);
@@ -129,8 +130,7 @@ TEST_CASE("meshes: validation names self-intersecting triangles, holes and flipp
 
 TEST_CASE("meshes: OBJ and PLY (colours, quality) read back through CGAL's readers", "[mesh]") {
   const auto gear = mesh::read_mesh(MTCS_TEST_DATA "/meshes/mcad_herringbone_gear.off");
-  const auto dir = std::filesystem::temp_directory_path() / ("mtcs_writers_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const auto dir = mtcs_test::scratch_dir("writers");
   mesh::FaceAttributes faces;
   for (std::size_t t = 0; t < gear.triangles.size(); ++t) {
     faces.colors.push_back({static_cast<unsigned char>(t % 256), 200, 30});

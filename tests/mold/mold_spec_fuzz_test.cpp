@@ -12,6 +12,7 @@
 #include "mtcs/io/input_error.h"
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/mold/mold_spec.h"
+#include "support/scratch_file.h"
 
 using namespace mtcs;
 namespace fs = std::filesystem;
@@ -43,8 +44,7 @@ std::string mutate(std::string s, std::mt19937_64& rng) {
 }  // namespace
 
 TEST_CASE("mold spec and layout readers survive mutated input", "[mold][fuzz]") {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_spec_fuzz_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = mtcs_test::scratch_dir("spec_fuzz");
   const std::string spec_text = slurp(MTCS_SOURCE_DIR "/molds/extreme.yaml");
   const std::string layout_text = slurp(MTCS_SOURCE_DIR "/molds/plate.layout.yaml");
   const auto plate = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml");

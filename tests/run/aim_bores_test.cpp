@@ -15,6 +15,7 @@
 #include "mtcs/mold/decoder.h"
 #include "mtcs/run/mold_problem.h"
 #include "run/aim_bores.h"
+#include "support/scratch_file.h"
 
 using namespace mtcs;
 using geometry::Vec3;
@@ -22,8 +23,7 @@ using geometry::Vec3;
 namespace {
 
 std::string gear_spec_path() {
-  const auto dir = std::filesystem::temp_directory_path() / ("mtcs_aim_test_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const auto dir = mtcs_test::scratch_dir("aim");
   const auto p = dir / "gear.yaml";
   std::ofstream(p) << "block: {box: {min: [0, 0, 0], max: [160, 160, 90]}}\n"
                       "cavity: {mesh: " MTCS_TEST_DATA "/meshes/mcad_herringbone_gear.off, translate: [80, 80, 55]}\n"

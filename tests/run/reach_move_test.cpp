@@ -21,6 +21,7 @@
 #include "mtcs/run/mold_problem.h"
 #include "mtcs/run/session.h"
 #include "run/reach_move.h"
+#include "support/scratch_file.h"
 
 using namespace mtcs;
 using geometry::Vec3;
@@ -28,8 +29,7 @@ using geometry::Vec3;
 namespace {
 
 mold::MoldSpec trough_spec() {
-  const auto dir = std::filesystem::temp_directory_path() / ("mtcs_reach_test_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const auto dir = mtcs_test::scratch_dir("reach");
   const auto p = dir / "trough.yaml";
   std::ofstream(p) << "block: {box: {min: [0, 0, 0], max: [120, 120, 60]}}\n"
                       "cavity: {box: {min: [30, 30, 10], max: [90, 90, 40]}, sample_spacing: 5}\n"

@@ -17,6 +17,7 @@
 #include "mtcs/opt/hypervolume.h"
 #include "mtcs/run/replay.h"
 #include "mtcs/run/stored_run.h"
+#include "support/scratch_file.h"
 
 using namespace mtcs;
 namespace fs = std::filesystem;
@@ -76,8 +77,7 @@ TEST_CASE("issue 16: replay files a sample of generations by default, --every N 
 }
 
 TEST_CASE("issue 16: replay writes DIR/replay whole or not at all", "[run][replay][issue16]") {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_replay_run_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
+  const fs::path dir = mtcs_test::fresh_scratch_dir("replay", "run");
   fs::create_directories(dir);
   run::RunOverrides o;
   o.algorithm = "sms-emoa";
@@ -119,8 +119,7 @@ TEST_CASE("issue 16: replay writes DIR/replay whole or not at all", "[run][repla
 }
 
 TEST_CASE("issue 14: replay writes the run's anytime trace (best and hypervolume against evaluations and time)", "[run][replay][anytime]") {
-  const fs::path dir = fs::temp_directory_path() / ("mtcs_replay_anytime_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
+  const fs::path dir = mtcs_test::fresh_scratch_dir("replay", "anytime");
   fs::create_directories(dir);
   run::RunOverrides o;
   o.algorithm = "sms-emoa";

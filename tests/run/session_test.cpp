@@ -12,6 +12,7 @@
 #include "mtcs/io/input_error.h"
 #include "mtcs/opt/rng.h"
 #include "mtcs/run/session.h"
+#include "support/scratch_file.h"
 
 using namespace mtcs;
 
@@ -33,7 +34,7 @@ int run_in_process(std::vector<std::string> args) {
 }  // namespace
 
 TEST_CASE("compare-penalties builds the Scene once for all its variants", "[run][session]") {
-  const auto out = std::filesystem::temp_directory_path() / ("mtcs_session_" + std::to_string(::getpid()));
+  const auto out = mtcs_test::fresh_scratch_dir("session", "compare");
   const long before = run::Session::scenes_built();
   REQUIRE(run_in_process({"compare-penalties", kMold, "--variants", "constrained_domination,static_linear,death",
                           "--seeds", "2", "--evaluations", "150", "--algorithm", "es", "--quiet", "--out",

@@ -11,6 +11,7 @@
 
 #include "mtcs/io/input_error.h"
 #include "mtcs/store/run_store.h"
+#include "support/scratch_file.h"
 
 using mtcs::store::RunStore;
 using namespace mtcs;
@@ -26,7 +27,7 @@ opt::Generation generation(int index, long evaluations, double first) {
 }
 
 std::string fresh(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("mtcs_island_rows_" + std::to_string(::getpid()) + "_" + name);
+  const fs::path p = mtcs_test::scratch_dir("island_rows") / name;
   fs::remove(p);
   fs::remove(p.string() + ".lock");
   return p.string();
