@@ -107,7 +107,7 @@ Command add_access_map_command(CLI::App& app) {
       "    heat map (python3 with matplotlib). The pivot must lie outside the part.");
   sub->footer(
       "Examples:\n"
-      "  mtcs access-map --case shared/cases/access_maps/drilling_homer_p00.txt --out am.txt\n"
+      "  mtcs access-map --case tests/data/access_maps/drilling_homer_p00.txt --out am.txt\n"
       "  mtcs access-map --case case.txt --mesh part.off --out am.txt --method checkbox --threads 1\n"
       "  mtcs access-map part.off --pivot 0,0,30 --bore 4,60 --grid 128 --am 64,64 --out am.png\n"
       "  mtcs access-map part.off --pivot 0,0,30 --tool tool.yaml --out am.csv\n"

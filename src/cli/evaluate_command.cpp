@@ -28,7 +28,7 @@ Command add_evaluate_command(CLI::App& app) {
   sub->add_option("mold", opt->mold, "mold spec (YAML, see docs/mold-spec.md)")->required();
   sub->add_option("--layout", opt->layout, "layout (YAML: circuits of waypoints)")->required();
   sub->add_flag("--json", opt->json,
-                "one JSON object on stdout: {feasible, objectives, violation, violations[{kind, elements, "
+                "one JSON object on stdout: {feasible, objectives, scalarised, violation, violations[{kind, elements, "
                 "distance, margin, where}], drillable[{bore, free, cell, map, free_cells, pivot, tool, draw}] (with "
                 "drilling.access_map), stages[{name, seconds}], changes[{circuit, waypoint, what}] (what reading the layout "
                 "changed: snaps within 0.01 mm, diagonal steps drilled as axis-parallel legs)}");
@@ -37,8 +37,8 @@ Command add_evaluate_command(CLI::App& app) {
             const mold::WrittenLayout w = mold::read_layout(opt->layout, session.spec());
             const eval::Evaluation e = session.pipeline().evaluate(w.genome, true);
             const mold::Layout layout = mold::decode(session.scene(), w.genome);
-            if (opt->json) eval::write_evaluation_json(std::cout, e, session.pipeline(), layout, w.changes);
-            else eval::write_evaluation_text(std::cout, e, session.pipeline(), layout, w.changes);
+            if (opt->json) eval::write_evaluation_json(std::cout, e, session.pipeline(), session.spec(), layout, w.changes);
+            else eval::write_evaluation_text(std::cout, e, session.pipeline(), session.spec(), layout, w.changes);
             return 0;
           }};
 }

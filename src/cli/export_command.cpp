@@ -26,7 +26,9 @@ Command add_export_command(CLI::App& app) {
   sub->add_option("--generation", o->generation, "stored generation (default: the last)");
   sub->add_option("--member", o->member, "its member by rank (default: 0, the best)");
   sub->add_option("--format", o->format, "step, vtp, obj or csv")->check(CLI::IsMember({"step", "vtp", "obj", "csv"}));
-  sub->add_option("--out", o->out, "the file (default: SOURCE's folder/bores.FORMAT)");
+  sub->add_option("--out", o->out,
+                  "the file (default: RUN_DIR/exports/generation_G_member_K.FORMAT, or beside the layout\n"
+                  "file: L.FORMAT)");
   add_log_flags(sub);
   return {sub, [o] {
             const report::Exported e = report::export_bores(*o);

@@ -5,11 +5,13 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "mtcs/cli/commands.h"
 #include "mtcs/eval/cavity_temperature.h"
 #include "mtcs/eval/cavity_temperature_report.h"
 #include "mtcs/io/atomic_file.h"
+#include "mtcs/io/input_error.h"
 #include "mtcs/io/points_csv.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
@@ -68,7 +70,25 @@ Command add_thermal_command(CLI::App& app) {
                          : opt->tier == "fd" ? mold::ThermalTier::Fd : mold::ThermalTier::T2d;
             if (opt->cell > 0) query.cell = opt->cell;
             if (opt->elements > 0) query.elements = opt->elements;
-            const std::vector<geometry::Vec3> points = opt->samples.empty() ? std::vector<geometry::Vec3>{} : io::read_points_csv(opt->samples);
+            const bool fd = query.tier == mold::ThermalTier::Fd;
+            if (opt->cell > 0 && !fd) std::cerr << "mtcs thermal: note: --cell is the finite volumes' (fd) cell: ignored by the line sinks\n";
+            if (opt->elements > 0 && (fd || query.tier == mold::ThermalTier::T1))
+              std::cerr << "mtcs thermal: note: --elements is t2/t2d's elements per bore: ignored by " << (fd ? "fd" : "t1") << "\n";
+            if (const auto& cavity = session.spec().cavity; cavity && cavity->mesh)
+              std::cerr << "mtcs thermal: the model of a mesh cavity (" << cavity->mesh->mesh.triangles.size()
+                        << " triangles) can take minutes to build (molds/README.md, \"Speed\")\n";
+            std::vector<geometry::Vec3> points;
+            if (!opt->samples.empty()) {
+              std::vector<int> lines;
+              points = io::read_points_csv(opt->samples, &lines);
+              for (std::size_t i = 0; i < points.size(); ++i)
+                if (const std::string why = eval::not_in_steel(session.scene(), layout, points[i]); !why.empty()) {
+                  std::ostringstream at;
+                  at << "point (" << points[i].x() << ", " << points[i].y() << ", " << points[i].z() << ") lies " << why
+                     << ": the model gives temperatures in the steel only";
+                  throw io::InputError(opt->samples, lines[i], 1, "x,y,z", at.str());
+                }
+            }
             const double edge = opt->samples.empty() && !opt->out.empty() ? session.spec().cavity->sample_spacing / 2 : 0;
             const eval::CavityTemperature r = eval::cavity_temperature(session.scene(), layout, query, points, edge);
 
@@ -76,6 +96,7 @@ Command add_thermal_command(CLI::App& app) {
               io::AtomicFile file(opt->out);
               eval::write_point_temperatures_csv(file.stream(), points, r.at_points);
               file.commit();
+              std::cerr << "mtcs thermal: " << points.size() << " temperatures to " << opt->out << "\n";
             } else if (!opt->out.empty()) {
               const bool png = ext == ".png";
               const std::string field_path = png ? opt->out + ".ply" : opt->out;
@@ -87,6 +108,7 @@ Command add_thermal_command(CLI::App& app) {
                 const std::string title = "cavity temperature, tier " + r.tier;
                 if (render_plot("plot_surface_field.py", {field_path, opt->out, title}, std::cerr)) std::filesystem::remove(field_path);
               }
+              if (std::filesystem::exists(opt->out)) std::cerr << "mtcs thermal: the cavity-surface temperature to " << opt->out << "\n";
             }
             if (opt->json) eval::write_cavity_temperature_json(std::cout, r);
             else eval::write_cavity_temperature_text(std::cout, r);

@@ -2,8 +2,10 @@
 
 #include <chrono>
 #include <map>
+#include <sstream>
 
 #include "mtcs/eval/thermal_model.h"
+#include "mtcs/geometry/segment_distance.h"
 #include "mtcs/thermal/finite_volume.h"
 #include "mtcs/thermal/line_sinks.h"
 #include "mtcs/thermal/void_plane.h"
@@ -25,6 +27,13 @@ mesh::TriangleMesh heated_surface(const thermal::Setting& setting) {
   };
   for (const auto& t : setting.heat_in) m.triangles.push_back({vertex(t.a), vertex(t.b), vertex(t.c)});
   return m;
+}
+
+std::string describe(const geometry::Box& b) {
+  std::ostringstream s;
+  s << "x " << b.min.x() << ".." << b.max.x() << ", y " << b.min.y() << ".." << b.max.y() << ", z " << b.min.z() << ".."
+    << b.max.z() << " mm";
+  return s.str();
 }
 
 thermal::Tier line_sink_tier(mold::ThermalTier t) {
@@ -98,6 +107,22 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
   if (n > 0) out.hottest = samples.points[out.summary.hottest];
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
+}
+
+std::string not_in_steel(const mold::Scene& scene, const mold::Layout& layout, const Vec3& p) {
+  const geometry::Box& block = scene.block_bounds();
+  if (!block.contains(p)) return "outside the block (" + describe(block) + ")";
+  if (const auto& cavity = scene.spec().cavity; cavity && cavity->box && !cavity->is_patch()) {
+    // Strictly inside: the cavity's surface is the steel's boundary, where the samples lie.
+    const geometry::Box& part = *cavity->box;
+    const double tolerance = 1e-6 * (1 + part.size().norm());
+    if (((p.array() > part.min.array() + tolerance) && (p.array() < part.max.array() - tolerance)).all())
+      return "inside the cavity (the part, " + describe(part) + ")";
+  }
+  for (const mold::Bore& b : layout.bores)
+    if (geometry::point_segment_distance(p, {b.hole.p0, b.hole.p1}) < b.hole.radius)
+      return "inside bore " + b.name() + " (the coolant)";
+  return "";
 }
 
 }  // namespace mtcs::eval

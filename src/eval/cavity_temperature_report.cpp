@@ -1,5 +1,6 @@
 #include "mtcs/eval/cavity_temperature_report.h"
 
+#include <charconv>
 #include <iomanip>
 #include <nlohmann/json.hpp>
 
@@ -35,9 +36,18 @@ void write_cavity_temperature_json(std::ostream& out, const CavityTemperature& r
 
 void write_point_temperatures_csv(std::ostream& out, const std::vector<geometry::Vec3>& points,
                                   const std::vector<double>& temperatures) {
-  out << "x,y,z,T\n" << std::setprecision(17);
-  for (std::size_t i = 0; i < points.size(); ++i)
-    out << points[i].x() << ',' << points[i].y() << ',' << points[i].z() << ',' << temperatures[i] << '\n';
+  // The shortest text that reads back to the same double: the user's 83.9 stays 83.9.
+  auto number = [&](double v) {
+    char text[32];
+    out.write(text, std::to_chars(text, text + sizeof text, v).ptr - text);
+  };
+  out << "x,y,z,T\n";
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    number(points[i].x()), out << ',';
+    number(points[i].y()), out << ',';
+    number(points[i].z()), out << ',';
+    number(temperatures[i]), out << '\n';
+  }
 }
 
 }  // namespace mtcs::eval

@@ -18,7 +18,7 @@ class DrillableStage final : public Stage {
       const DrillVerdict v = access_.check(b);
       if (v.free) continue;
       out.violations.push_back({ViolationKind::Drillable, {b.name(), "cavity"}, v.angle_to_free_deg, 0,
-                                std::max(v.angle_to_free_deg, 1e-9) / cell_deg, b.hole.p0});
+                                std::max(v.angle_to_free_deg, 1e-9) / cell_deg, b.hole.p0, std::nullopt});
     }
   }
 

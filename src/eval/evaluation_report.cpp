@@ -44,13 +44,14 @@ std::string found_and_needed(const Violation& v) {
 
 }  // namespace
 
-void write_evaluation_json(std::ostream& out, const Evaluation& e, const Pipeline& pipeline,
+void write_evaluation_json(std::ostream& out, const Evaluation& e, const Pipeline& pipeline, const mold::MoldSpec& spec,
                            const mold::Layout& layout, const std::vector<mold::LayoutChange>& changes) {
   nlohmann::ordered_json j;
   j["feasible"] = e.feasible();
   j["objectives"] = nlohmann::ordered_json::object();
   const auto names = pipeline.objective_names();
   for (std::size_t k = 0; k < names.size(); ++k) j["objectives"][names[k]] = e.objectives[k];
+  j["scalarised"] = scalar_fitness(e, spec, {});
   j["violation"] = e.violation;
   j["violations"] = nlohmann::ordered_json::array();
   for (const auto& v : e.violations) {
@@ -77,7 +78,7 @@ void write_evaluation_json(std::ostream& out, const Evaluation& e, const Pipelin
   out << j.dump(2) << "\n";
 }
 
-void write_evaluation_text(std::ostream& out, const Evaluation& e, const Pipeline& pipeline,
+void write_evaluation_text(std::ostream& out, const Evaluation& e, const Pipeline& pipeline, const mold::MoldSpec& spec,
                            const mold::Layout& layout, const std::vector<mold::LayoutChange>& changes) {
   // What the drilling plan changed in the layout as written comes first: the rest scores it.
   if (!changes.empty()) out << "changed from the layout as written\n";
@@ -91,6 +92,8 @@ void write_evaluation_text(std::ostream& out, const Evaluation& e, const Pipelin
   const auto names = pipeline.objective_names();
   for (std::size_t k = 0; k < names.size(); ++k)
     out << "  " << std::left << std::setw(16) << names[k] << std::setprecision(10) << e.objectives[k] << "\n";
+  out << "  scalarised      " << scalar_fitness(e, spec, {})
+      << "  (sum of objective / scale + penalty: what mtcs optimize ranks with weights 1)\n";
   out << "\n"
       << (e.feasible() ? "feasible" : "infeasible") << ": " << e.violations.size()
       << " violated constraint(s), total violation " << e.violation << "\n";

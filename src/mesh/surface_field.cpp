@@ -79,13 +79,14 @@ void check(const SurfaceField& field) {
 void write_vtp(std::ostream& out, const SurfaceField& field) {
   check(field);
   const TriangleMesh& m = field.surface;
+  // The active scalars name the array itself, unit included, or ParaView shows none.
+  const std::string array = field.name + (field.unit.empty() ? "" : " [" + field.unit + "]");
   out << std::setprecision(std::numeric_limits<double>::max_digits10);
   out << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n<PolyData>\n"
       << "<Piece NumberOfPoints=\"" << m.vertices.size() << "\" NumberOfPolys=\"" << m.triangles.size() << "\">\n"
-      << "<PointData Scalars=\"" << field.name << "\">\n"
-      << "<DataArray type=\"Float64\" Name=\"" << field.name << (field.unit.empty() ? "" : " [" + field.unit + "]")
-      << "\" format=\"ascii\">\n";
+      << "<PointData Scalars=\"" << array << "\">\n"
+      << "<DataArray type=\"Float64\" Name=\"" << array << "\" format=\"ascii\">\n";
   for (double v : field.values) out << v << '\n';
   out << "</DataArray>\n</PointData>\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
   for (const Vec3& v : m.vertices) out << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';

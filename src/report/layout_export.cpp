@@ -148,14 +148,20 @@ StoredLayout layout_to_export(const std::string& source, const std::string& layo
   return s;
 }
 
+std::string default_export_path(const ExportRequest& r, const StoredLayout& s) {
+  if (!r.layout_file.empty()) return std::filesystem::path(r.layout_file).replace_extension(r.format).string();
+  return (std::filesystem::path(r.source) / "exports" /
+          ("generation_" + std::to_string(s.generation) + "_member_" + std::to_string(s.member) + "." + r.format))
+      .string();
+}
+
 Exported export_bores(const ExportRequest& r) {
   const auto format = export_format(r.format);
   if (!format) throw io::InputError("", 0, 0, "--format", "'" + r.format + "': give step, vtp, obj or csv");
   if (*format == ExportFormat::Step && !step_available()) throw io::InputError("", 0, 0, "--format", kStepMissing);
   StoredLayout s = layout_to_export(r.source, r.layout_file, r.generation, r.member);
-  const std::filesystem::path source(r.source);
-  const std::filesystem::path folder = r.layout_file.empty() ? source : source.parent_path();
-  Exported e{r.out.empty() ? (folder / ("bores." + r.format)).string() : r.out, s.note, s.layout.bores.size()};
+  Exported e{r.out.empty() ? default_export_path(r, s) : r.out, s.note, s.layout.bores.size()};
+  if (r.out.empty()) std::filesystem::create_directories(std::filesystem::path(e.path).parent_path());
   export_layout(e.path, s.layout, *format);
   return e;
 }

@@ -23,10 +23,13 @@ std::string polish_note(const std::string& run_dir) {
   std::ifstream in(std::filesystem::path(run_dir) / "summary.json");
   const nlohmann::json summary = nlohmann::json::parse(in, nullptr, false);
   if (summary.is_discarded() || !summary.contains("polish") || !summary["polish"].value("improved", false)) return "";
-  return "best.layout.yaml is the best after a polish (objective " + std::to_string(summary["polish"].value("after", 0.0)) +
-         ") that the run store does not keep; the last generation's best is given as stored, rounded for the shop; "
-         "export the polished one with mtcs export MOLD.yaml --layout " +
-         (std::filesystem::path(run_dir) / "best.layout.yaml").string();
+  const std::string mold =
+      summary.contains("mold") && summary["mold"].is_string() ? summary["mold"].get<std::string>() : "MOLD.yaml";
+  return "best.layout.yaml and bores.csv hold the best after a polish (objective " +
+         std::to_string(summary["polish"].value("after", 0.0)) +
+         ") that the run store does not keep; this is the last generation's best as stored, rounded for the shop "
+         "(the polished one: mtcs export " + mold + " --layout " + (std::filesystem::path(run_dir) / "best.layout.yaml").string() +
+         ")";
 }
 
 }  // namespace mtcs::report

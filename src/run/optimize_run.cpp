@@ -145,9 +145,10 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
   outcome.genome = shop_layout(problem, scene, outcome.genome);
   outcome.best = problem.evaluate(problem.encode(outcome.genome));
   const mold::Layout layout = write_run_outputs(out_dir, scene, optimizer, names, config.es.seed, outcome);
-  spdlog::info("{} best layout: {} bores in {} circuits, objective {:.6g}, {} evaluations in {:.6g} s",
-               outcome.best.feasible ? "feasible" : "INFEASIBLE", layout.bores.size(), outcome.genome.circuits.size(),
-               outcome.best.value, last.evaluations, stored.seconds);
+  const std::size_t bores = layout.bores.size(), circuits = outcome.genome.circuits.size();
+  spdlog::info("{} best layout: {} bore{} in {} circuit{}, objective {:.6g}, {} evaluations in {:.6g} s",
+               outcome.best.feasible ? "feasible" : "INFEASIBLE", bores, bores == 1 ? "" : "s", circuits,
+               circuits == 1 ? "" : "s", outcome.best.value, last.evaluations, stored.seconds);
   spdlog::info("results in {}/: best.layout.yaml (mtcs evaluate {} --layout {}/best.layout.yaml), bores.csv, holes.csv, "
                "bores.stl, summary.json, run.sqlite",
                out_dir, mold_path, out_dir);

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include <unistd.h>
+
 #include "support/scratch_file.h"
 
 namespace fs = std::filesystem;
@@ -19,9 +20,7 @@ struct Run {
   std::string out, err;
 };
 
-fs::path scratch(const std::string& name) {
-  return mtcs_test::scratch_dir("eval_cli") / name;
-}
+fs::path scratch(const std::string& name) { return mtcs_test::scratch_dir("eval_cli") / name; }
 
 Run run_mtcs(const std::string& args) {
   const fs::path out = scratch("run.out"), err = scratch("run.err");
@@ -52,6 +51,22 @@ TEST_CASE("mtcs evaluate --json prints one object with the documented fields", "
     mesh_stage = mesh_stage || s["name"] == "bore_cavity_mesh";
   }
   CHECK(mesh_stage);
+}
+
+TEST_CASE("mtcs evaluate --json: `scalarised` is the objective mtcs optimize gives its best", "[cli]") {
+  // A new user could not check "objective 11.15" of a run against a hand-made layout.
+  const fs::path run = scratch("run");
+  fs::remove_all(run);
+  REQUIRE(run_mtcs("optimize " MTCS_SOURCE_DIR "/molds/plate.yaml --evaluations 300 --seed 4 --quiet --out " + run.string()).code == 0);
+  const auto summary = nlohmann::json::parse(std::ifstream(run / "summary.json"));
+  const Run r = run_mtcs("evaluate " MTCS_SOURCE_DIR "/molds/plate.yaml --layout " + (run / "best.layout.yaml").string() + " --json");
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["scalarised"].get<double>() == Approx(summary["best_objective"].get<double>()).epsilon(1e-9));
+  // molds/plate.yaml's scales: temperature_std 1 K, temperature_max 10 C, cost 1000.
+  const auto& o = j["objectives"];
+  const double by_hand = o["temperature_std"].get<double>() + o["temperature_max"].get<double>() / 10 + o["cost"].get<double>() / 1000;
+  if (j["feasible"].get<bool>()) CHECK(j["scalarised"].get<double>() == Approx(by_hand).epsilon(1e-12));
 }
 
 TEST_CASE("mtcs evaluate reports violations with elements, distance and margin", "[cli]") {

@@ -62,7 +62,8 @@ TEST_CASE("mtcs thermal --out: a field ParaView opens, and bad input refused", "
   REQUIRE(run_mtcs("thermal " + kMold + " --layout " + kLayout + " --tier t2 --out " + vtp.string() + " >/dev/null") == 0);
   const std::string text = read_text(vtp);
   CHECK(text.find("<VTKFile type=\"PolyData\"") != std::string::npos);
-  CHECK(text.find("temperature [degC]") != std::string::npos);
+  CHECK(text.find("Scalars=\"temperature [degC]\"") != std::string::npos);  // ParaView's active array, by its name
+  CHECK(text.find("Name=\"temperature [degC]\"") != std::string::npos);
   // A field in a format we do not write, --samples without --out: exit 2, nothing written.
   const auto bad = run_mtcs_err("thermal", "thermal " + kMold + " --layout " + kLayout + " --out " +
                                                scratch("thermal", "field.txt").string());
@@ -79,6 +80,17 @@ TEST_CASE("mtcs thermal --out: a field ParaView opens, and bad input refused", "
   CHECK(malformed.err.find("points.csv:3:") != std::string::npos);
   CHECK(malformed.err.find("'y'") != std::string::npos);
   CHECK_FALSE(fs::exists(scratch("thermal", "t.csv")));
+  // Points with no steel temperature (a new user's find: a point outside the block got a number,
+  // one on a bore's axis NaN, both with exit 0): exit 2, the point's line, why, nothing written.
+  for (const auto& [row, why] : {std::pair{"400,0,0", "outside the block"}, std::pair{"60,40,47.5", "inside bore c1.b0"}}) {
+    std::ofstream(points) << "x,y,z\n# a comment line\n60,10,50\n" << row << "\n";
+    const auto outside = run_mtcs_err("thermal", "thermal " + kMold + " --layout " + kLayout + " --samples " +
+                                                   points.string() + " --out " + scratch("thermal", "t.csv").string());
+    CHECK(outside.code == 2);
+    CHECK(outside.err.find("points.csv:4:") != std::string::npos);
+    CHECK(outside.err.find(why) != std::string::npos);
+    CHECK_FALSE(fs::exists(scratch("thermal", "t.csv")));
+  }
 }
 
 TEST_CASE("mtcs bench thermal --json: every tier judged against the finite volumes", "[cli][thermal]") {

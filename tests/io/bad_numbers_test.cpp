@@ -44,13 +44,13 @@ TEST_CASE("bad numbers: a CSV cell of NaN, inf or beyond double is refused at it
   for (const std::string v : {"nan", "NaN", "-nan", "inf", "-inf", "infinity", "1e309", "-2e308"}) {
     INFO(v);
     const auto path = write("points.csv", "x,y,z\n1,2,3\n4," + v + ",6\n");
-    const auto e = error_of(mtcs::io::read_points_csv, path);
+    const auto e = error_of([](const std::string& p) { return mtcs::io::read_points_csv(p); }, path);
     CHECK(e.file() == path);
     CHECK(e.line() == 3);
     CHECK(e.column() == 3);
     CHECK(e.field() == "y");
   }
-  const auto e = error_of(mtcs::io::read_points_csv, write("big.csv", "x,y,z\n1e400,0,0\n"));
+  const auto e = error_of([](const std::string& p) { return mtcs::io::read_points_csv(p); }, write("big.csv", "x,y,z\n1e400,0,0\n"));
   CHECK_THAT(std::string(e.what()), Catch::Contains("beyond the range of a double"));
 }
 

@@ -32,6 +32,7 @@ TEST_CASE("write_vtp writes one value per point and the polygons") {
   const std::string s = out.str();
   CHECK(s.find("NumberOfPoints=\"8\" NumberOfPolys=\"12\"") != std::string::npos);
   CHECK(s.find("Name=\"temperature [degC]\"") != std::string::npos);
+  CHECK(s.find("Scalars=\"temperature [degC]\"") != std::string::npos);  // the active scalars name an array that exists
   // The point data: the eight values in order, right after their DataArray tag.
   std::istringstream data(s.substr(s.find('>', s.find("Name=\"temperature")) + 1));
   for (int v = 0; v < 8; ++v) {

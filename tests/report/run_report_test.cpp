@@ -311,6 +311,27 @@ TEST_CASE("export: every bore of the run's best layout as a closed tube of the r
   }
 }
 
+TEST_CASE("export without --out: never over the run's own files; beside a layout file, named after it", "[report][export]") {
+  // A new user's find: `export RUN_DIR --format csv` replaced optimize's bores.csv (the polished
+  // best's) with the last generation's best.
+  const std::string before = mtcs_test::read_text(plate_run() / "bores.csv");
+  const auto err = mtcs_test::scratch("report", "export_default.err");
+  REQUIRE(mtcs_test::run_mtcs("export " + plate_run().string() + " --format csv --member 1", err) == 0);
+  CHECK(mtcs_test::read_text(plate_run() / "bores.csv") == before);
+  const json summary = json::parse(mtcs_test::read_text(plate_run() / "summary.json"));
+  const path exported = plate_run() / "exports" /
+                        ("generation_" + std::to_string(summary["generations"].get<int>()) + "_member_1.csv");
+  CHECK(mtcs_test::fs::exists(exported));
+  CHECK(mtcs_test::read_text(err).find(exported.string()) != std::string::npos);
+  // A layout file: L.yaml -> L.FORMAT beside it, the bores of bores.csv.
+  const path layout = mtcs_test::scratch("report", "export_default") / "chosen.layout.yaml";
+  mtcs_test::fs::create_directories(layout.parent_path());
+  mtcs_test::fs::copy_file(plate_run() / "best.layout.yaml", layout, mtcs_test::fs::copy_options::overwrite_existing);
+  REQUIRE(mtcs_test::run_mtcs("export " + std::string(MTCS_SOURCE_DIR) + "/molds/plate.yaml --layout " + layout.string() +
+                              " --format csv") == 0);
+  CHECK(mtcs_test::read_text(layout.parent_path() / "chosen.layout.csv") == before);
+}
+
 TEST_CASE("report: a run whose best was polished says that best.layout.yaml is not the stored best", "[report]") {
   const path dir = mtcs_test::scratch("report", "polished");
   mtcs_test::fs::create_directories(dir);

@@ -45,4 +45,9 @@ struct CavityTemperature {
 CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layout& layout, const ThermalQuery& query,
                                      const std::vector<geometry::Vec3>& points = {}, double field_edge = 0);
 
+// Why a point asked for (mtcs thermal --samples) has no steel temperature: outside the block's
+// bounds, inside a box cavity (the part), or inside a bore (the coolant, where the line sinks are
+// singular); empty when it lies in the steel or on its surface.
+std::string not_in_steel(const mold::Scene& scene, const mold::Layout& layout, const geometry::Vec3& p);
+
 }  // namespace mtcs::eval

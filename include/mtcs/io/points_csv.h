@@ -9,7 +9,8 @@
 
 namespace mtcs::io {
 
-// Throws InputError (file, line, column, field) on the first malformed row.
-std::vector<geometry::Vec3> read_points_csv(const std::string& path);
+// Throws InputError (file, line, column, field) on the first malformed row. `lines`, when given,
+// receives each point's line in the file (for errors about a point the reader cannot judge).
+std::vector<geometry::Vec3> read_points_csv(const std::string& path, std::vector<int>* lines = nullptr);
 
 }  // namespace mtcs::io

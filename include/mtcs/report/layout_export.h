@@ -52,8 +52,8 @@ StoredLayout stored_layout(const std::string& run_dir, std::optional<int> genera
 StoredLayout layout_to_export(const std::string& source, const std::string& layout_file, std::optional<int> generation,
                               std::optional<int> member);
 
-// `mtcs export` below the command line: the layout above written as `format` to `out` (default:
-// the run's folder or the spec's, bores.FORMAT). Checks the format before building anything.
+// `mtcs export` below the command line: the layout above written as `format` to `out`, by default
+// default_export_path. Checks the format before building anything.
 struct ExportRequest {
   std::string source, layout_file, format = "vtp", out;
   std::optional<int> generation, member;
@@ -63,5 +63,10 @@ struct Exported {
   std::size_t bores = 0;
 };
 Exported export_bores(const ExportRequest& request);
+
+// Where `mtcs export` writes without --out: beside the layout file with the format's extension
+// (best.layout.yaml -> best.layout.step), or RUN_DIR/exports/generation_G_member_K.FORMAT; never
+// one of the run's own files (its bores.csv is the polished best's).
+std::string default_export_path(const ExportRequest& request, const StoredLayout& layout);
 
 }  // namespace mtcs::report
