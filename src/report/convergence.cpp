@@ -62,10 +62,10 @@ Json convergence_json(const store::RunStore& db, const mold::MoldSpec& spec, con
   return out;
 }
 
-Json anytime_json(const run::AnytimeTrace& trace, const std::vector<double>& ref) {
+Json anytime_json(const run::AnytimeTrace& trace) {
   Json out{{"generation", Json::array()}, {"evaluations", Json::array()}, {"seconds", Json::array()},
            {"best_feasible", Json::array()}, {"best_so_far", Json::array()}, {"hypervolume", Json::array()},
-           {"hypervolume_so_far", Json::array()}, {"ref", ref}};
+           {"hypervolume_so_far", Json::array()}, {"ref", trace.reference()}};
   const auto finite_or_null = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
   for (const run::AnytimeRow& r : trace.rows()) {
     out["generation"].push_back(r.generation);

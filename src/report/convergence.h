@@ -16,8 +16,8 @@ Json convergence_json(const store::RunStore& db, const mold::MoldSpec& spec, con
 
 // The anytime curves (the rows of replay's anytime.csv): per stored generation evaluations,
 // seconds, the best feasible weighted objective and the feasible front's hypervolume, each also
-// as the best so far, against the run's own reference point `ref` (summary.json's, scaled): a
-// generation without a feasible layout has best null.
-Json anytime_json(const run::AnytimeTrace& trace, const std::vector<double>& ref);
+// as the best so far, against the trace's reference point (scaled; SMS-EMOA's is summary.json's):
+// a generation without a feasible layout has best null.
+Json anytime_json(const run::AnytimeTrace& trace);
 
 }  // namespace mtcs::report

@@ -165,7 +165,7 @@ RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
   report.bores = shown.bores.size();
   data["convergence"] = convergence_json(db, session.spec(), names);
   const run::MoldOptimizer optimizer(session.problem(), scene, session.config());
-  data["anytime"] = anytime_json(run::stored_anytime(optimizer, db), optimizer.scaled_reference());
+  data["anytime"] = anytime_json(run::stored_anytime(optimizer, db));
   report.generations = summaries.size();
   data["temperature"] = nullptr;
   if (options.temperature && session.spec().cavity) {

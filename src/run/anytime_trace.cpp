@@ -8,7 +8,12 @@
 
 namespace mtcs::run {
 
+AnytimeTrace::AnytimeTrace(const MoldOptimizer& optimizer) : optimizer_(optimizer) {
+  if (!optimizer.reference_from_first_generation()) reference_ = optimizer.scaled_reference();
+}
+
 void AnytimeTrace::add(const opt::Generation& g, const store::GenerationSummary& summary) {
+  if (reference_.empty()) reference_ = scaled_reference_of(g, optimizer_.scales());
   AnytimeRow row;
   row.generation = g.index;
   row.evaluations = g.evaluations;
@@ -16,7 +21,7 @@ void AnytimeTrace::add(const opt::Generation& g, const store::GenerationSummary&
   row.best_feasible = std::numeric_limits<double>::infinity();
   for (const auto& ind : g.population)
     if (ind.score.feasible) row.best_feasible = std::min(row.best_feasible, ind.score.value);
-  row.hypervolume = optimizer_.scaled_hypervolume(opt::SmsEmoa::front(g));
+  row.hypervolume = optimizer_.scaled_hypervolume(opt::SmsEmoa::front(g), reference_);
   row.best_so_far = rows_.empty() ? row.best_feasible : std::min(rows_.back().best_so_far, row.best_feasible);
   row.hypervolume_so_far = rows_.empty() ? row.hypervolume : std::max(rows_.back().hypervolume_so_far, row.hypervolume);
   rows_.push_back(row);

@@ -28,11 +28,16 @@ RunConfig resolve_run_config(const RunOverrides& o, const std::vector<std::strin
 
 std::vector<double> scaled_reference(const RunConfig& config, const MoldProblem& problem, const mold::Objectives& obj) {
   if (!config.ref.empty()) return config.ref;
-  std::vector<double> worst(obj.use.size(), -std::numeric_limits<double>::infinity());
-  const opt::Generation initial = opt::sample_population(problem, config.es.seed, config.es.mu);
+  std::vector<double> scales;
+  for (const auto o : obj.use) scales.push_back(obj.scale(o));
+  return scaled_reference_of(opt::sample_population(problem, config.es.seed, config.es.mu), scales);
+}
+
+std::vector<double> scaled_reference_of(const opt::Generation& initial, const std::vector<double>& scales) {
+  std::vector<double> worst(scales.size(), -std::numeric_limits<double>::infinity());
   for (const auto& ind : initial.population)
     for (std::size_t k = 0; k < worst.size() && k < ind.score.objectives.size(); ++k)
-      if (std::isfinite(ind.score.objectives[k])) worst[k] = std::max(worst[k], ind.score.objectives[k] / obj.scale(obj.use[k]));
+      if (std::isfinite(ind.score.objectives[k])) worst[k] = std::max(worst[k], ind.score.objectives[k] / scales[k]);
   std::vector<double> ref;
   for (const double w : worst) ref.push_back(std::isfinite(w) && w > 0 ? 2 * w : 4.0);
   return ref;
@@ -69,7 +74,7 @@ opt::SmsConfig MoldOptimizer::sms_config(const MoldProblem& problem, const mold:
 MoldOptimizer::MoldOptimizer(const MoldProblem& problem, const mold::Scene& scene, const RunConfig& config)
     : es_(problem, es_config(scene, config)), sms_(problem, sms_config(problem, scene, config)),
       pareto_(config.algorithm == "sms-emoa"), final_cell_(config.final_cell),
-      reference_origin_(run::reference_origin(config)) {
+      reference_origin_(run::reference_origin(config)), reference_from_first_generation_(!pareto_ && config.ref.empty()) {
   const auto& obj = scene.spec().objectives;
   for (const auto o : obj.use) scales_.push_back(obj.scale(o));
 }
@@ -81,10 +86,14 @@ std::vector<double> MoldOptimizer::scaled_reference() const {
 }
 
 double MoldOptimizer::scaled_hypervolume(const std::vector<opt::Point>& raw_front) const {
+  return scaled_hypervolume(raw_front, scaled_reference());
+}
+
+double MoldOptimizer::scaled_hypervolume(const std::vector<opt::Point>& raw_front, const std::vector<double>& scaled_ref) const {
   std::vector<opt::Point> front = raw_front;
   for (auto& p : front)
     for (std::size_t k = 0; k < p.size(); ++k) p[k] /= scales_[k];
-  return opt::hypervolume(front, scaled_reference());
+  return opt::hypervolume(front, scaled_ref);
 }
 
 opt::Generation MoldOptimizer::run(const opt::Generation* start,

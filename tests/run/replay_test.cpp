@@ -15,6 +15,7 @@
 
 #include "mtcs/io/input_error.h"
 #include "mtcs/opt/hypervolume.h"
+#include "mtcs/run/anytime_trace.h"
 #include "mtcs/run/replay.h"
 #include "mtcs/run/stored_run.h"
 #include "support/scratch_file.h"
@@ -182,4 +183,28 @@ TEST_CASE("issue 14: replay writes the run's anytime trace (best and hypervolume
   CHECK(most > 0);
   CHECK(nlohmann::json::parse(read_text(dir / "replay" / "frames.json"))["anytime"] == "anytime.csv");
   fs::remove_all(dir);
+}
+
+TEST_CASE("replay: an ES run's hypervolumes are against its first generation's reference point, not 0", "[run][replay][anytime]") {
+  // A new user's find: every ES run's anytime hypervolume was 0 (a fixed 4 per scaled
+  // objective: the plate's temperature_max / 10 is ~8).
+  const fs::path dir = mtcs_test::fresh_scratch_dir("replay", "anytime_es");
+  fs::create_directories(dir);
+  run::RunOverrides o;
+  o.seed = 2;
+  o.evaluations = 250;
+  const run::Session session(MTCS_SOURCE_DIR "/molds/plate.yaml", o);
+  const run::MoldOptimizer optimizer(session.problem(), session.scene(), session.config());
+  REQUIRE_FALSE(optimizer.pareto());
+  CHECK(optimizer.reference_from_first_generation());
+  store::RunStore db = store::RunStore::create((dir / "run.sqlite").string(), {{"mold", "plate"}});
+  const opt::Generation last = run::run_stored(optimizer, session.problem(), db, {}).last;
+  const run::AnytimeTrace trace = run::stored_anytime(optimizer, db);
+  // SMS-EMOA's rule on a fresh sample of the same seed and size: the same point.
+  CHECK(trace.reference() == run::scaled_reference(session.config(), session.problem(), session.spec().objectives));
+  const std::vector<opt::Point> front = opt::SmsEmoa::front(last);
+  REQUIRE_FALSE(front.empty());
+  CHECK(optimizer.scaled_hypervolume(front, std::vector<double>(front[0].size(), 4.0)) == 0);  // the old point
+  CHECK(trace.rows().back().hypervolume == Approx(optimizer.scaled_hypervolume(front, trace.reference())));
+  CHECK(trace.rows().back().hypervolume_so_far > 0);
 }

@@ -25,14 +25,18 @@ struct AnytimeRow {
 
 class AnytimeTrace {
  public:
-  explicit AnytimeTrace(const MoldOptimizer& optimizer) : optimizer_(optimizer) {}
+  explicit AnytimeTrace(const MoldOptimizer& optimizer);
   // Generations in stored order, each with its summary (for its wall time).
   void add(const opt::Generation& g, const store::GenerationSummary& summary);
   const std::vector<AnytimeRow>& rows() const { return rows_; }
+  // The reference point of the hypervolumes, scaled: the run's (MoldOptimizer::scaled_reference),
+  // or for the ES the rule's on the first generation added.
+  const std::vector<double>& reference() const { return reference_; }
   void write_csv(const std::string& path) const;
 
  private:
   const MoldOptimizer& optimizer_;
+  std::vector<double> reference_;
   std::vector<AnytimeRow> rows_;
 };
 

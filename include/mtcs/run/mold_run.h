@@ -34,6 +34,9 @@ RunConfig resolve_run_config(const RunOverrides& overrides, const std::vector<st
 // where that population has no finite value.
 std::vector<double> scaled_reference(const RunConfig& config, const MoldProblem& problem,
                                      const mold::Objectives& objectives);
+// That rule on a given initial population (the ES's stored generation 0 is the same sample),
+// with each objective's scale.
+std::vector<double> scaled_reference_of(const opt::Generation& initial, const std::vector<double>& scales);
 // How that reference point was chosen, for the outputs.
 std::string reference_origin(const RunConfig& config);
 
@@ -59,6 +62,11 @@ class MoldOptimizer {
   const std::vector<double>& scales() const { return scales_; }
   std::vector<double> scaled_reference() const;
   double scaled_hypervolume(const std::vector<opt::Point>& raw_front) const;
+  double scaled_hypervolume(const std::vector<opt::Point>& raw_front, const std::vector<double>& scaled_ref) const;
+  // The ES has no reference point of its own (it ranks by one weighted value) and samples no
+  // extra population for one: its hypervolumes (replay's anytime trace, the report) take
+  // scaled_reference_of its first generation. False with SMS-EMOA or a given --ref.
+  bool reference_from_first_generation() const { return reference_from_first_generation_; }
   // From a stored generation (resume) or a fresh population to the budget; on_generation sees
   // every ES generation and every SMS-EMOA step. With `stop`, it ends early once stop() is true
   // at the end of a generation (SMS-EMOA: of mu steps, the generations the store keeps).
@@ -75,6 +83,7 @@ class MoldOptimizer {
   double final_cell_;
   std::vector<double> scales_;
   std::string reference_origin_;
+  bool reference_from_first_generation_;
 };
 
 }  // namespace mtcs::run
