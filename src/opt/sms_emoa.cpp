@@ -129,7 +129,7 @@ std::vector<Point> SmsEmoa::front(const Generation& g) {
     bool dominated = false;
     for (std::size_t j = 0; j < g.population.size() && !dominated; ++j)
       dominated = j != i && constrained_dominates(g.population[j].score, s);
-    if (!dominated) out.push_back(s.objectives);
+    if (!dominated && std::find(out.begin(), out.end(), s.objectives) == out.end()) out.push_back(s.objectives);
   }
   return out;
 }

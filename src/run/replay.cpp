@@ -82,17 +82,20 @@ class StagedFolder {
   bool committed_ = false;
 };
 
-// A generation's feasible non-dominated members: front_G.csv and the JSON list of them.
+// A generation's feasible non-dominated members, one per point of the front (the best ranked of
+// equal ones): front_G.csv and the JSON list of them.
 nlohmann::ordered_json write_front(const opt::Generation& g, const std::vector<std::string>& names, const fs::path& out) {
   nlohmann::ordered_json front = nlohmann::ordered_json::array();
   io::AtomicFile csv((out / ("front_" + std::to_string(g.index) + ".csv")).string());
   csv.stream() << "rank";
   for (const auto& n : names) csv.stream() << ',' << n;
   csv.stream() << '\n';
-  const auto points = opt::SmsEmoa::front(g);
+  auto points = opt::SmsEmoa::front(g);
   for (std::size_t r = 0; r < g.population.size(); ++r) {
     const auto& ind = g.population[r];
-    if (!ind.score.feasible || std::find(points.begin(), points.end(), ind.score.objectives) == points.end()) continue;
+    const auto point = std::find(points.begin(), points.end(), ind.score.objectives);
+    if (!ind.score.feasible || point == points.end()) continue;
+    points.erase(point);  // listed: its equals further down are not
     csv.stream() << r;
     nlohmann::ordered_json member{{"rank", r}};
     for (std::size_t k = 0; k < names.size(); ++k) {

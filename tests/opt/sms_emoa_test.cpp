@@ -153,3 +153,18 @@ TEST_CASE("SMS-EMOA: the evaluations a mutation spends count in the budget", "[o
   CHECK(counts.back() >= c.evaluations);
   CHECK(counts.size() < 200);  // half the steps of a mutation that spends nothing
 }
+
+TEST_CASE("SmsEmoa::front: each non-dominated point once, the dominated and infeasible left out", "[opt][sms]") {
+  // A converged ES population holds one layout many times: replay listed it five times.
+  Generation g;
+  for (const auto& [objectives, feasible] : std::vector<std::pair<Point, bool>>{
+           {{1, 3}, true}, {{2, 2}, true}, {{1, 3}, true}, {{1, 3}, true}, {{3, 3}, true}, {{0, 0}, false}, {{2, 2}, true}}) {
+    Individual ind;
+    ind.score.objectives = objectives;
+    ind.score.feasible = feasible;
+    ind.score.violation = feasible ? 0 : 1;
+    g.population.push_back(ind);
+  }
+  CHECK(SmsEmoa::front(g) == std::vector<Point>{{1, 3}, {2, 2}});
+  CHECK(hypervolume(SmsEmoa::front(g), {4, 4}) == Approx(3 * 1 + 2 * 1));  // (4-1)(4-3) + (4-2)(3-2)
+}

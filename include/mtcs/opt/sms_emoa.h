@@ -45,7 +45,8 @@ class SmsEmoa {
   const SmsConfig& config() const { return config_; }
 
   // The feasible non-dominated points of a population (by the scores themselves, whatever the
-  // ranking the search used).
+  // ranking the search used), each once: members with equal objectives are one point of the front
+  // (a converged ES population holds the same layout many times).
   static std::vector<Point> front(const Generation& g);
 
   // Island migration hooks (opt/migration.h): up to k members of the first front (by the
