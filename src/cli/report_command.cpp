@@ -41,9 +41,9 @@ Command add_report_command(CLI::App& app) {
             io::AtomicFile file(out);
             file.stream() << r.html;
             file.commit();
-            spdlog::info("report: {} ({:.2f} MB): generation {}, {} layouts ({} on the front), member {} shown ({} bores){}, "
+            spdlog::info("report: {} ({:.2f} MB): generation {}, {} layouts ({} point{} on the front), member {} shown ({} bores){}, "
                          "{} generations charted",
-                         out, double(r.html.size()) / 1e6, r.generation, r.members, r.front, r.member, r.bores,
+                         out, double(r.html.size()) / 1e6, r.generation, r.members, r.front, r.front == 1 ? "" : "s", r.member, r.bores,
                          r.temperature ? " with its cavity temperature" : "", r.generations);
             return 0;
           }};

@@ -144,13 +144,13 @@ RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
     rounded.population[r].score = shop.back().score;
   }
   const auto front = opt::SmsEmoa::front(rounded);
+  report.front = front.size();
   data["members"] = Json::array();
   mold::Layout shown;
   for (std::size_t r = 0; r < population.size(); ++r) {
     const opt::Score& score = shop[r].score;
     const eval::Evaluation e = session.pipeline().evaluate(shop[r].layout);
     const bool on_front = score.feasible && std::find(front.begin(), front.end(), score.objectives) != front.end();
-    report.front += on_front;
     data["members"].push_back({{"rank", r},
                                {"objectives", score.objectives},
                                {"value", score.value},

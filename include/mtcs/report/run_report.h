@@ -23,7 +23,7 @@ struct RunReport {
   int generation = 0;
   int member = 0;
   std::size_t members = 0;   // layouts on the page (the generation's population)
-  std::size_t front = 0;     // of them, on the feasible non-dominated front
+  std::size_t front = 0;     // points of the feasible non-dominated front (equal members count once)
   std::size_t generations = 0;  // in the convergence charts
   std::size_t bores = 0;     // of the member shown first
   bool temperature = false;  // the page has a temperature field
