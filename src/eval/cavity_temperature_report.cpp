@@ -37,16 +37,16 @@ void write_cavity_temperature_json(std::ostream& out, const CavityTemperature& r
 void write_point_temperatures_csv(std::ostream& out, const std::vector<geometry::Vec3>& points,
                                   const std::vector<double>& temperatures) {
   // The shortest text that reads back to the same double: the user's 83.9 stays 83.9.
-  auto number = [&](double v) {
+  auto cell = [&](double v, char then) {
     char text[32];
-    out.write(text, std::to_chars(text, text + sizeof text, v).ptr - text);
+    out.write(text, std::to_chars(text, text + sizeof text, v).ptr - text) << then;
   };
   out << "x,y,z,T\n";
   for (std::size_t i = 0; i < points.size(); ++i) {
-    number(points[i].x()), out << ',';
-    number(points[i].y()), out << ',';
-    number(points[i].z()), out << ',';
-    number(temperatures[i]), out << '\n';
+    cell(points[i].x(), ',');
+    cell(points[i].y(), ',');
+    cell(points[i].z(), ',');
+    cell(temperatures[i], '\n');
   }
 }
 
