@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 
 #include "mtcs/io/atomic_file.h"
 #include "mtcs/io/number_text.h"
@@ -94,7 +95,11 @@ WrittenLayout read_layout(const std::string& path, const MoldSpec& spec) {
     circuit.diameter = r.number(cs[c]["diameter"], cp + ".diameter", 1e-9, 1e9);
     bool listed = false;
     for (const double d : spec.drilling.diameters) listed = listed || std::abs(d - circuit.diameter) <= 1e-9 * d;
-    if (!listed) r.fail(cs[c]["diameter"], cp + ".diameter", "not one of drilling.diameters of the mold spec");
+    if (!listed) {
+      std::ostringstream sizes;
+      for (std::size_t k = 0; k < spec.drilling.diameters.size(); ++k) sizes << (k ? ", " : "") << spec.drilling.diameters[k];
+      r.fail(cs[c]["diameter"], cp + ".diameter", "not one of drilling.diameters of the mold spec (" + sizes.str() + " mm)");
+    }
     const YAML::Node& w = cs[c]["waypoints"];
     r.expect_sequence(w, cp + ".waypoints");
     if (w.size() < 2) r.fail(w, cp + ".waypoints", "a circuit needs at least an inlet and an outlet");

@@ -93,6 +93,7 @@ TEST_CASE("mtcs evaluate rejects bad input with exit code 2", "[cli]") {
   CHECK(r.code == 2);
   CHECK(r.err.find(layout.string() + ":2:16:") != std::string::npos);
   CHECK(r.err.find("circuits[0].diameter") != std::string::npos);
+  CHECK(r.err.find("(6, 8, 10 mm)") != std::string::npos);  // the drills the plate allows
   r = run_mtcs("evaluate /nonexistent.yaml --layout " + layout.string());
   CHECK(r.code == 2);
 }
