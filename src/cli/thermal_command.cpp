@@ -5,14 +5,11 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "mtcs/cli/commands.h"
 #include "mtcs/eval/cavity_temperature.h"
 #include "mtcs/eval/cavity_temperature_report.h"
 #include "mtcs/io/atomic_file.h"
-#include "mtcs/io/input_error.h"
-#include "mtcs/io/points_csv.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/run/session.h"
@@ -77,18 +74,8 @@ Command add_thermal_command(CLI::App& app) {
             if (const auto& cavity = session.spec().cavity; cavity && cavity->mesh)
               std::cerr << "mtcs thermal: the model of a mesh cavity (" << cavity->mesh->mesh.triangles.size()
                         << " triangles) can take minutes to build (molds/README.md, \"Speed\")\n";
-            std::vector<geometry::Vec3> points;
-            if (!opt->samples.empty()) {
-              std::vector<int> lines;
-              points = io::read_points_csv(opt->samples, &lines);
-              for (std::size_t i = 0; i < points.size(); ++i)
-                if (const std::string why = eval::not_in_steel(session.scene(), layout, points[i]); !why.empty()) {
-                  std::ostringstream at;
-                  at << "point (" << points[i].x() << ", " << points[i].y() << ", " << points[i].z() << ") lies " << why
-                     << ": the model gives temperatures in the steel only";
-                  throw io::InputError(opt->samples, lines[i], 1, "x,y,z", at.str());
-                }
-            }
+            const std::vector<geometry::Vec3> points =
+                opt->samples.empty() ? std::vector<geometry::Vec3>{} : eval::read_steel_points(opt->samples, session.scene(), layout);
             const double edge = opt->samples.empty() && !opt->out.empty() ? session.spec().cavity->sample_spacing / 2 : 0;
             const eval::CavityTemperature r = eval::cavity_temperature(session.scene(), layout, query, points, edge);
 

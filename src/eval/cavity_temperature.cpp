@@ -6,6 +6,8 @@
 
 #include "mtcs/eval/thermal_model.h"
 #include "mtcs/geometry/segment_distance.h"
+#include "mtcs/io/input_error.h"
+#include "mtcs/io/points_csv.h"
 #include "mtcs/thermal/finite_volume.h"
 #include "mtcs/thermal/line_sinks.h"
 #include "mtcs/thermal/void_plane.h"
@@ -123,6 +125,19 @@ std::string not_in_steel(const mold::Scene& scene, const mold::Layout& layout, c
     if (geometry::point_segment_distance(p, {b.hole.p0, b.hole.p1}) < b.hole.radius)
       return "inside bore " + b.name() + " (the coolant)";
   return "";
+}
+
+std::vector<Vec3> read_steel_points(const std::string& path, const mold::Scene& scene, const mold::Layout& layout) {
+  std::vector<int> lines;
+  const std::vector<Vec3> points = io::read_points_csv(path, &lines);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (const std::string why = not_in_steel(scene, layout, points[i]); !why.empty()) {
+      std::ostringstream at;
+      at << "point (" << points[i].x() << ", " << points[i].y() << ", " << points[i].z() << ") lies " << why
+         << ": the model gives temperatures in the steel only";
+      throw io::InputError(path, lines[i], 1, "x,y,z", at.str());
+    }
+  return points;
 }
 
 }  // namespace mtcs::eval

@@ -49,5 +49,8 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
 // bounds, inside a box cavity (the part), or inside a bore (the coolant, where the line sinks are
 // singular); empty when it lies in the steel or on its surface.
 std::string not_in_steel(const mold::Scene& scene, const mold::Layout& layout, const geometry::Vec3& p);
+// The points of a CSV with columns x,y,z (io::read_points_csv), each in the steel: io::InputError
+// naming the file, the point's line and why otherwise.
+std::vector<geometry::Vec3> read_steel_points(const std::string& path, const mold::Scene& scene, const mold::Layout& layout);
 
 }  // namespace mtcs::eval
