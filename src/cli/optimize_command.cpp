@@ -42,12 +42,14 @@ struct Options {
   bool json = false;
   run::IslandSettings islands;  // islands 0: one population
   std::string topology = "ring";
+  std::vector<std::string> start;  // layouts the first population starts from
 };
 
 // A built-in multi-objective test problem with SMS-EMOA: prints a JSON summary, and stores the
 // population every mu steps when --out is given.
 int run_test_problem(const Options& o) {
   if (o.algorithm != "sms-emoa") throw option_error("--algorithm", "test problems run with --algorithm sms-emoa");
+  if (!o.start.empty()) throw option_error("--start", "a mold's layout; test problems start from samples");
   std::unique_ptr<opt::Problem> problem;
   try {
     problem = opt::make_benchmark_problem(o.problem);
@@ -73,6 +75,7 @@ int run_optimize(const Options& o) {
                                {o.config, o.algorithm == "es" ? "" : o.algorithm, o.ref, o.seed, o.evaluations}, o.polish,
                                [](const std::string& dir) { make_output_folder(dir); }, o.islands};
   request.islands.topology = opt::parse_topology(o.topology);
+  request.start = o.start;
   const run::Interruption interruption;  // Ctrl-C: stop after this generation, write, say how to resume
   const run::OptimizeResult r = run::optimize_mold(
       request, [](const run::MoldOptimizer& optimizer, int log_every) { return run::ProgressSink(run::ProgressPrinter(optimizer, log_every)); },
@@ -116,6 +119,10 @@ Command add_optimize_command(CLI::App& app) {
   sub->add_option("--polish", o->polish,
                   "then refine the best layout's hole coordinates with NLopt's COBYLA for this many evaluations")
       ->check(CLI::Range(0, 10000000));
+  sub->add_option("--start", o->start,
+                  "begin from this layout (LAYOUT.yaml: a run's best.layout.yaml or your own, as mtcs evaluate\n"
+                  "reads it); the rest of the first population is sampled. Repeat for several. The ES keeps a\n"
+                  "feasible start until a better layout replaces it (plus selection, the default)");
   sub->add_option("--problem", o->problem, "a built-in test problem instead of a mold: zdt1-4, zdt6, dtlz1-7");
   sub->add_option("--algorithm", o->algorithm,
                   "es (one weighted objective) or sms-emoa (a Pareto front; writes front.csv)")->capture_default_str()

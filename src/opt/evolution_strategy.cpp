@@ -33,7 +33,7 @@ const Individual& worst_of(const Problem& problem, const std::vector<Individual>
 }  // namespace
 
 Generation EvolutionStrategy::initial() const {
-  Generation g = sample_population(problem_, config_.seed, config_.mu);
+  Generation g = sample_population(problem_, config_.seed, config_.mu, config_.start);
   sort_population(problem_, g.population);
   return g;
 }

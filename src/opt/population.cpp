@@ -2,6 +2,9 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+#include <cstddef>
+
 #include "mtcs/opt/rng.h"
 
 namespace mtcs::opt {
@@ -24,10 +27,11 @@ std::vector<Score> screen_all(const Problem& problem, const std::vector<Genotype
   return scores;
 }
 
-Generation sample_population(const Problem& problem, std::uint64_t seed, int count) {
+Generation sample_population(const Problem& problem, std::uint64_t seed, int count,
+                             const std::vector<Genotype>& given) {
   Generation g;
-  std::vector<Genotype> xs;
-  for (int i = 0; i < count; ++i) {
+  std::vector<Genotype> xs(given.begin(), given.begin() + std::min<std::ptrdiff_t>(std::ptrdiff_t(given.size()), count));
+  for (int i = int(xs.size()); i < count; ++i) {
     Rng rng = Rng::for_individual(seed, 0, std::uint64_t(i));
     xs.push_back(problem.sample(rng));
   }

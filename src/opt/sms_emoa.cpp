@@ -17,7 +17,7 @@ SmsEmoa::SmsEmoa(const Problem& problem, SmsConfig config)
     : problem_(problem), config_(std::move(config)), fronts_(std::make_shared<Fronts>()) {}
 
 Generation SmsEmoa::initial() const {
-  return sample_population(problem_, config_.seed, config_.mu);
+  return sample_population(problem_, config_.seed, config_.mu, config_.start);
 }
 
 Generation SmsEmoa::step(const Generation& prev) const {

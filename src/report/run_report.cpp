@@ -164,7 +164,7 @@ RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
   report.members = population.size();
   report.bores = shown.bores.size();
   data["convergence"] = convergence_json(db, session.spec(), names);
-  const run::MoldOptimizer optimizer(session.problem(), scene, session.config());
+  const run::MoldOptimizer optimizer(session.problem(), scene, session.config(), run::stored_start(meta, db_path + ":start"));
   data["anytime"] = anytime_json(run::stored_anytime(optimizer, db));
   report.generations = summaries.size();
   data["temperature"] = nullptr;

@@ -26,11 +26,12 @@ RunConfig resolve_run_config(const RunOverrides& o, const std::vector<std::strin
   return config;
 }
 
-std::vector<double> scaled_reference(const RunConfig& config, const MoldProblem& problem, const mold::Objectives& obj) {
+std::vector<double> scaled_reference(const RunConfig& config, const MoldProblem& problem, const mold::Objectives& obj,
+                                     const std::vector<opt::Genotype>& start) {
   if (!config.ref.empty()) return config.ref;
   std::vector<double> scales;
   for (const auto o : obj.use) scales.push_back(obj.scale(o));
-  return scaled_reference_of(opt::sample_population(problem, config.es.seed, config.es.mu), scales);
+  return scaled_reference_of(opt::sample_population(problem, config.es.seed, config.es.mu, start), scales);
 }
 
 std::vector<double> scaled_reference_of(const opt::Generation& initial, const std::vector<double>& scales) {
@@ -49,30 +50,35 @@ std::string reference_origin(const RunConfig& config) {
          ", " + std::to_string(config.es.mu) + " layouts)";
 }
 
-opt::EsConfig MoldOptimizer::es_config(const mold::Scene& scene, const RunConfig& config) {
+opt::EsConfig MoldOptimizer::es_config(const mold::Scene& scene, const RunConfig& config,
+                                       const std::vector<opt::Genotype>& start) {
   opt::EsConfig c = config.es;
+  c.start = start;
   // Waypoint moves finer than a tenth of the smallest drill change nothing that matters.
   const auto& d = scene.spec().drilling.diameters;
   c.min_step = 0.1 * *std::min_element(d.begin(), d.end());
   return c;
 }
 
-opt::SmsConfig MoldOptimizer::sms_config(const MoldProblem& problem, const mold::Scene& scene, const RunConfig& config) {
+opt::SmsConfig MoldOptimizer::sms_config(const MoldProblem& problem, const mold::Scene& scene, const RunConfig& config,
+                                         const std::vector<opt::Genotype>& start) {
   opt::SmsConfig c;
+  c.start = start;
   c.mu = config.es.mu;
   c.evaluations = config.es.evaluations;
   c.seed = config.es.seed;
   // The reference point in raw units, from the scaled one of the config.
   const auto& obj = scene.spec().objectives;
   // Only SMS-EMOA needs it: the ES's runs evaluate no extra population.
-  const std::vector<double> scaled = config.algorithm == "sms-emoa" ? run::scaled_reference(config, problem, obj)
+  const std::vector<double> scaled = config.algorithm == "sms-emoa" ? run::scaled_reference(config, problem, obj, start)
                                      : config.ref.empty() ? std::vector<double>(obj.use.size(), 4.0) : config.ref;
   for (std::size_t k = 0; k < obj.use.size(); ++k) c.ref.push_back(scaled[k] * obj.scale(obj.use[k]));
   return c;
 }
 
-MoldOptimizer::MoldOptimizer(const MoldProblem& problem, const mold::Scene& scene, const RunConfig& config)
-    : es_(problem, es_config(scene, config)), sms_(problem, sms_config(problem, scene, config)),
+MoldOptimizer::MoldOptimizer(const MoldProblem& problem, const mold::Scene& scene, const RunConfig& config,
+                             const std::vector<opt::Genotype>& start)
+    : es_(problem, es_config(scene, config, start)), sms_(problem, sms_config(problem, scene, config, start)),
       pareto_(config.algorithm == "sms-emoa"), final_cell_(config.final_cell),
       reference_origin_(run::reference_origin(config)), reference_from_first_generation_(!pareto_ && config.ref.empty()) {
   const auto& obj = scene.spec().objectives;

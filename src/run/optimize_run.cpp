@@ -35,6 +35,33 @@ std::unique_ptr<IslandTransport> transport_for(const OptimizeRequest& r) {
   return mpi;
 }
 
+// The --start layouts as genotypes, each read as `mtcs evaluate --layout` reads it and scored
+// once, so that the user can compare the run's best with it.
+std::vector<opt::Genotype> start_genotypes(const std::vector<std::string>& paths, const Session& session) {
+  const int mu = session.config().es.mu;
+  if (int(paths.size()) > mu)
+    throw io::InputError("", 0, 0, "--start", std::to_string(paths.size()) + " layouts, more than the population (mu " +
+                                                  std::to_string(mu) + ")");
+  const mold::CircuitLimits& lim = session.spec().circuits;
+  std::vector<opt::Genotype> start;
+  for (const std::string& path : paths) {
+    const mold::Genome genome = session.read_layout(path);
+    start.push_back(session.problem().encode(genome));
+    const opt::Score s = session.problem().evaluate(start.back());
+    if (s.feasible)
+      spdlog::info("start layout {}: objective {:.6g}", path, s.value);
+    else
+      spdlog::warn("start layout {} is INFEASIBLE ({}): the search keeps it only while nothing feasible beats it", path,
+                   s.detail);
+    // Kept as it is; its children's circuit moves head for the spec's range.
+    if (const int k = int(genome.circuits.size()); k < lim.min || k > lim.max)
+      spdlog::warn("start layout {} has {} circuit{}; the search makes {}-{} (circuits.min, circuits.max): its children "
+                   "add or remove circuits toward that",
+                   path, k, k == 1 ? "" : "s", lim.min, lim.max);
+  }
+  return start;
+}
+
 }  // namespace
 
 OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& make_progress,
@@ -49,6 +76,7 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
   IslandSettings islands = r.islands;
   std::string mold_path = r.mold;
   int polish_budget = r.polish;
+  std::vector<opt::Genotype> start;
   // Opens or makes the store (the writer) and the session; under MPI every rank learns whether
   // all could, so that none waits for a failed one.
   auto set_up = [&] {
@@ -59,8 +87,11 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
       const auto meta = writer ? db->meta() : store::RunStore::open(db_path).meta();
       for (const char* key : {"mold", "mold_hash", "config"})
         if (!meta.count(key)) throw io::InputError(db_path, 0, 0, key, "missing from the store: not a mold run to resume");
+      if (!r.start.empty())
+        throw io::InputError(db_path, 0, 0, "--start", "a resumed run keeps the layouts it started from: drop --start");
       mold_path = meta.at("mold");
       config_text = meta.at("config");
+      start = stored_start(meta, db_path + ":start");
       // The run's polish budget is part of the run: a resume polishes as the run would have.
       if (meta.count("polish") && r.polish == 0) {
         try {
@@ -78,6 +109,7 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
     // A resumed run keeps its stored config; a new one resolves RUN.yaml and the command line.
     made = resuming ? std::make_unique<const Session>(mold::load_mold_spec(mold_path), config_text, db_path + ":config")
                     : std::make_unique<const Session>(mold::load_mold_spec(mold_path), r.overrides);
+    if (!resuming) start = start_genotypes(r.start, *made);
     if (!resuming && writer) {
       if (r.prepare_out) r.prepare_out(out_dir);
       if (store::RunStore::in_use(db_path))
@@ -87,6 +119,8 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
       auto meta = mold_run_meta(mold_path, *made);
       if (islands.islands > 0) meta["islands"] = islands.to_text();
       if (r.polish > 0) meta["polish"] = std::to_string(r.polish);
+      if (!start.empty()) meta["start"] = start_text(start);
+      for (std::size_t i = 0; i < r.start.size(); ++i) meta["start_layout_" + std::to_string(i)] = fs::absolute(r.start[i]).string();
       db = store::RunStore::create(db_path, meta);
     }
   };
@@ -109,7 +143,7 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
   const std::vector<std::string>& names = session.objective_names();
   const RunConfig& config = session.config();
   const MoldProblem& problem = session.problem();
-  const MoldOptimizer optimizer(problem, scene, config);
+  const MoldOptimizer optimizer(problem, scene, config, start);
   spdlog::debug("mold {}: {} surface samples; run config:\n{}", mold_path, session.pipeline().surface_samples(),
                 config.to_yaml(names));
   if (optimizer.pareto() && writer) spdlog::info(hypervolume_basis(optimizer, names));

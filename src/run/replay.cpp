@@ -16,6 +16,7 @@
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/opt/sms_emoa.h"
 #include "mtcs/run/anytime_trace.h"
+#include "mtcs/run/run_record.h"
 #include "mtcs/run/shop_layout.h"
 
 namespace mtcs::run {
@@ -141,7 +142,7 @@ ReplayResult write_replay(const Session& session, const store::RunStore& db, con
   const std::vector<store::GenerationSummary> summaries = db.summaries();
   for (const auto& s : summaries) stored.push_back(s.index);
   // Anytime behaviour over every stored generation (a --generation replay: that one only).
-  const MoldOptimizer optimizer(problem, session.scene(), session.config());
+  const MoldOptimizer optimizer(problem, session.scene(), session.config(), stored_start(db.meta(), db_path + ":start"));
   AnytimeTrace anytime(optimizer);
   const std::vector<int> indices = replayed_generations(stored, choice, db_path);
 

@@ -1,6 +1,8 @@
 #include "mtcs/run/run_record.h"
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -73,6 +75,41 @@ RunMeta mold_run_meta(const std::string& mold_path, const Session& session) {
           {"seed", std::to_string(session.config().es.seed)},
           {"objectives", objectives},
           {"program", "mtcs 0.1.0"}};
+}
+
+std::string start_text(const std::vector<opt::Genotype>& start) {
+  std::string out;
+  char buf[32];
+  for (const opt::Genotype& g : start) {
+    for (std::size_t i = 0; i < g.size(); ++i) {
+      std::snprintf(buf, sizeof buf, "%.17g", g[i]);
+      out += (i ? " " : "") + std::string(buf);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+std::vector<opt::Genotype> stored_start(const RunMeta& meta, const std::string& origin) {
+  std::vector<opt::Genotype> start;
+  const auto it = meta.find("start");
+  if (it == meta.end()) return start;
+  std::istringstream lines(it->second);
+  std::string line;
+  for (int number = 1; std::getline(lines, line); ++number) {
+    std::istringstream in(line);
+    opt::Genotype g;
+    std::string word;
+    while (in >> word) {
+      char* end = nullptr;
+      g.push_back(std::strtod(word.c_str(), &end));
+      if (end != word.c_str() + word.size() || !std::isfinite(g.back()))
+        throw io::InputError(origin, number, 0, "start", "not a number in the stored start layout: " + word);
+    }
+    if (g.empty()) throw io::InputError(origin, number, 0, "start", "an empty stored start layout");
+    start.push_back(std::move(g));
+  }
+  return start;
 }
 
 std::string MoldCheck::describe() const {

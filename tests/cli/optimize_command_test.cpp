@@ -229,6 +229,36 @@ TEST_CASE("mtcs optimize: option errors name the command and option without a :0
   for (const auto& r : {algorithm, ref, resume}) CHECK_THAT(r.err, !Catch::Contains(":0:0:"));
 }
 
+TEST_CASE("mtcs optimize --start: the run says what the layout scores and ends no worse; bad starts exit 2",
+          "[cli][optimize][start]") {
+  const std::string layout = MTCS_SOURCE_DIR "/molds/plate.layout.yaml";
+  const fs::path out = scratch("start");
+  fs::remove_all(out);
+  const auto run = mtcs_test::run_mtcs_err("optimize_cli", "optimize " + kMold + " --start " + layout + " --seed 2 --evaluations 600 --out " + out.string());
+  REQUIRE(run.code == 0);
+  CHECK_THAT(run.err, Catch::Contains("start layout " + layout + ": objective 2.54727"));
+  std::ifstream in(out / "summary.json");
+  CHECK(nlohmann::json::parse(in)["best_objective"].get<double>() <= 2.54727);
+
+  // One circuit where the spec's search makes 3-4 (the part's default circuits.min): kept, and said.
+  const fs::path one = scratch("start_one");
+  fs::remove_all(one);
+  const auto few = mtcs_test::run_mtcs_err("optimize_cli", "optimize " MTCS_SOURCE_DIR "/docs/first-mold/part.yaml --start "
+                                           MTCS_SOURCE_DIR "/docs/first-mold/first.layout.yaml --seed 1 --evaluations 300 --out " + one.string());
+  CHECK(few.code == 0);
+  CHECK_THAT(few.err, Catch::Contains("has 1 circuit; the search makes 3-4 (circuits.min, circuits.max)"));
+
+  const auto problem = mtcs_test::run_mtcs_err("optimize_cli", "optimize --problem zdt1 --algorithm sms-emoa --start " + layout);
+  CHECK(problem.code == 2);
+  CHECK_THAT(problem.err, Catch::StartsWith("mtcs optimize: --start: a mold's layout; test problems start from samples"));
+  const fs::path none = scratch("start_missing");
+  fs::remove_all(none);
+  const auto missing = mtcs_test::run_mtcs_err("optimize_cli", "optimize " + kMold + " --start nowhere.layout.yaml --out " + none.string());
+  CHECK(missing.code == 2);
+  CHECK_THAT(missing.err, Catch::Contains("nowhere.layout.yaml"));
+  CHECK_FALSE(fs::exists(none));
+}
+
 TEST_CASE("mtcs optimize with fidelity: the T3 re-score of the best layout is mtcs thermal --tier fd on it",
           "[cli][optimize][fidelity]") {
   const std::string block = MTCS_SOURCE_DIR "/molds/thermal_block.yaml";

@@ -177,3 +177,27 @@ TEST_CASE("ES: the evaluations a mutation spends count in the budget", "[opt][es
   CHECK(end.evaluations >= c.evaluations);
   CHECK(end.evaluations < c.evaluations + 3 * c.lambda);
 }
+
+TEST_CASE("ES: a given start is member 0 of the first generation, the rest are the plain run's samples",
+          "[opt][es][start]") {
+  const auto f = make_test_function("rosenbrock", 6, false);
+  const Genotype optimum(6, 1.0);  // Rosenbrock's minimum, 0 there
+  EsConfig c;
+  c.evaluations = 600;
+  c.seed = 5;
+  const Generation plain = sample_population(*f, c.seed, c.mu);
+  const Generation given = sample_population(*f, c.seed, c.mu, {optimum});
+  REQUIRE(given.population.size() == plain.population.size());
+  CHECK(given.population[0].x == optimum);
+  CHECK(given.population[0].score.value == 0.0);
+  for (std::size_t i = 1; i < plain.population.size(); ++i) CHECK(given.population[i].x == plain.population[i].x);
+  CHECK(given.evaluations == plain.evaluations);
+
+  // Plus selection keeps the exact optimum from generation 0 to the end; the plain run's random
+  // samples never reach 0 in 600 evaluations.
+  EsConfig started = c;
+  started.start = {optimum};
+  const Generation end = run(EvolutionStrategy(*f, started), nullptr, {});
+  CHECK(end.population.front().score.value == 0.0);
+  CHECK(run(EvolutionStrategy(*f, c), nullptr, {}).population.front().score.value > 0.0);
+}

@@ -3,7 +3,8 @@
 # demo runs it (--polish 500), one seed at a time on one thread, a row per seed appended to
 # results.csv (objective, bores, circuits, seconds, the objectives, the polish); run folders deleted.
 #   bash experiments/optimize/plate_demo/run.sh VARIANT CONFIG MOLD BUDGET SEED...
-# MTCS=path/to/mtcs (default ./build/mtcs).
+# MTCS=path/to/mtcs (default ./build/mtcs); START=LAYOUT.yaml starts each run from that layout
+# (mtcs optimize --start).
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
 here=experiments/optimize/plate_demo
@@ -15,7 +16,7 @@ trap 'rm -rf "$work"' EXIT
 for s in "$@"; do
   d=$work/run_${v}_${budget}_${s}
   t0=$(date +%s.%N)
-  nice -n 5 "$mtcs" optimize "$mold" --config "$cfg" --evaluations "$budget" --seed "$s" --polish 500 --out "$d" --threads 1 --quiet
+  nice -n 5 "$mtcs" optimize "$mold" --config "$cfg" --evaluations "$budget" --seed "$s" --polish 500 --out "$d" --threads 1 --quiet ${START:+--start "$START"}
   t1=$(date +%s.%N)
   python3 - "$v" "$(basename "$cfg")" "$(basename "$mold")" "$budget" "$s" "$d" "$t0" "$t1" >> $here/results.csv <<'PY'
 import json, sys, csv

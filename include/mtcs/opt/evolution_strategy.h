@@ -47,6 +47,9 @@ struct EsConfig {
   double restart_tolerance = 1e-3;  // relative: smaller gains of the best count as a stall
   enum class Restart { steps, population };
   Restart restart = Restart::population;
+  // Members of the initial population as given (a designer's layouts to improve on); the rest
+  // of its mu are sampled.
+  std::vector<Genotype> start;
 };
 
 class EvolutionStrategy {

@@ -31,8 +31,11 @@ std::vector<Score> evaluate_all(const Problem& problem, const std::vector<Genoty
 std::vector<Score> evaluate_all(const Problem& problem, const std::vector<Genotype>& xs, const Score& bar);
 // The same with Problem::screen.
 std::vector<Score> screen_all(const Problem& problem, const std::vector<Genotype>& xs);
-// `count` samples drawn from the generators of generation 0, evaluated in parallel, in
-// sampling order (unsorted).
-Generation sample_population(const Problem& problem, std::uint64_t seed, int count);
+// `count` members evaluated in parallel, in order (unsorted): first the `given` genotypes (a
+// user's designs to start from; at most count), then samples, member i drawn from generator i of
+// generation 0 (given members take the first generators' places: the samples after them are the
+// ones a run without them draws).
+Generation sample_population(const Problem& problem, std::uint64_t seed, int count,
+                             const std::vector<Genotype>& given = {});
 
 }  // namespace mtcs::opt

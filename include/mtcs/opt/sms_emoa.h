@@ -30,6 +30,7 @@ struct SmsConfig {
   Point ref;                     // reference point for the contributions (and the reported HV)
   bool domcount_then_hv = true;  // false: least contribution only
   int lambda = 1;                // offspring per step, evaluated in parallel
+  std::vector<Genotype> start;   // members of the initial population as given; the rest sampled
 };
 
 class SmsEmoa {

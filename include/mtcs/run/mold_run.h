@@ -30,10 +30,10 @@ RunConfig resolve_run_config(const RunOverrides& overrides, const std::vector<st
 
 // The reference point in scaled objectives (objective / its scale): the config's (--ref), or
 // one that fits the mold: twice the worst value of each objective over the initial population
-// of the config's seed (a fixed 4 each left new molds' fronts outside it: hypervolume 0); 4
-// where that population has no finite value.
+// of the config's seed, `start` layouts included (a fixed 4 each left new molds' fronts outside
+// it: hypervolume 0); 4 where that population has no finite value.
 std::vector<double> scaled_reference(const RunConfig& config, const MoldProblem& problem,
-                                     const mold::Objectives& objectives);
+                                     const mold::Objectives& objectives, const std::vector<opt::Genotype>& start = {});
 // That rule on a given initial population (the ES's stored generation 0 is the same sample),
 // with each objective's scale.
 std::vector<double> scaled_reference_of(const opt::Generation& initial, const std::vector<double>& scales);
@@ -42,7 +42,10 @@ std::string reference_origin(const RunConfig& config);
 
 class MoldOptimizer {
  public:
-  MoldOptimizer(const MoldProblem& problem, const mold::Scene& scene, const RunConfig& config);
+  // `start`: members of the initial population as given (mtcs optimize --start: a designer's
+  // layouts, encoded); the rest are sampled.
+  MoldOptimizer(const MoldProblem& problem, const mold::Scene& scene, const RunConfig& config,
+                const std::vector<opt::Genotype>& start = {});
 
   bool pareto() const { return pareto_; }
   // SMS-EMOA's population size and reference point (raw objective units).
@@ -74,8 +77,9 @@ class MoldOptimizer {
                       const std::function<bool()>& stop = {}) const;
 
  private:
-  static opt::EsConfig es_config(const mold::Scene& scene, const RunConfig& config);
-  static opt::SmsConfig sms_config(const MoldProblem& problem, const mold::Scene& scene, const RunConfig& config);
+  static opt::EsConfig es_config(const mold::Scene& scene, const RunConfig& config, const std::vector<opt::Genotype>& start);
+  static opt::SmsConfig sms_config(const MoldProblem& problem, const mold::Scene& scene, const RunConfig& config,
+                                   const std::vector<opt::Genotype>& start);
 
   opt::EvolutionStrategy es_;
   opt::SmsEmoa sms_;

@@ -26,6 +26,8 @@ struct OptimizeRequest {
   // A new run's islands (run/islands.h; islands 0: one population). Started by mpirun, one
   // island per rank: rank 0 writes the store and the outputs, the others only search.
   IslandSettings islands;
+  // Layout files a new run's initial population starts from (--start); the rest is sampled.
+  std::vector<std::string> start;
 };
 
 struct OptimizeResult {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mtcs/mold/mold_spec.h"
+#include "mtcs/opt/problem.h"
 
 namespace mtcs::run {
 
@@ -22,6 +23,13 @@ std::string read_file_text(const std::string& path);
 
 // The record of a new run on the session's mold, read from `mold_path`.
 RunMeta mold_run_meta(const std::string& mold_path, const Session& session);
+
+// A run's --start layouts (meta "start"), as the genotypes its initial population began with:
+// one line of numbers each, written to round-trip exactly (a resume, a replay and a report
+// rebuild the same initial population and reference point without the layout files).
+std::string start_text(const std::vector<opt::Genotype>& start);
+// None when the run had none; io::InputError naming `origin` and the line for a damaged record.
+std::vector<opt::Genotype> stored_start(const RunMeta& meta, const std::string& origin);
 
 // The mold at `mold_path` against the run's record.
 struct MoldCheck {
