@@ -1,9 +1,12 @@
 #include "mtcs/io/yaml_reader.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <set>
 #include <sstream>
+#include <string_view>
+#include <vector>
 
 namespace mtcs::io {
 
@@ -14,6 +17,38 @@ std::string indexed(const std::string& path, std::size_t i) {
   s += ']';
   return s;
 }
+
+namespace {
+
+// Optimal string alignment distance (Levenshtein plus adjacent swaps): a typo's size.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i)
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t change = a[i - 1] == b[j - 1] ? 0 : 1;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + change});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+
+// The allowed key a mistyped one most likely meant: the single nearest within a third of its
+// length (at least one edit), or none.
+std::string_view nearest_key(const std::string& key, std::initializer_list<std::string_view> allowed) {
+  std::string_view best;
+  std::size_t best_d = std::max<std::size_t>(1, key.size() / 3) + 1;
+  bool tie = false;
+  for (const auto& a : allowed) {
+    const std::size_t d = edit_distance(key, a);
+    if (d < best_d) best = a, best_d = d, tie = false;
+    else if (d == best_d) tie = true;
+  }
+  return tie ? std::string_view() : best;
+}
+
+}  // namespace
 
 YAML::Node YamlReader::load() const {
   try {
@@ -42,7 +77,10 @@ void YamlReader::expect_map(const YAML::Node& n, const std::string& path,
     if (!known) {
       std::ostringstream list;
       for (const auto& a : allowed) list << (list.tellp() > 0 ? ", " : "") << a;
-      fail(it->first, child, "unknown key; expected one of: " + list.str());
+      const std::string_view near = nearest_key(key, allowed);
+      fail(it->first, child,
+           near.empty() ? "unknown key; expected one of: " + list.str()
+                        : "unknown key; did you mean '" + std::string(near) + "'? (expected one of: " + list.str() + ")");
     }
     if (!seen.insert(key).second) fail(it->first, child, "duplicate key");
   }

@@ -52,6 +52,16 @@ TEST_CASE("mold spec: bad input names file, line, column and field", "[mold][err
     CHECK(e.column() == 3);
     CHECK(e.field() == "drilling.diameter");
     CHECK(std::string(e.what()).find("unknown key") != std::string::npos);
+    // A typo names the key it most likely meant, then the list.
+    CHECK_THAT(e.what(), Catch::Contains("did you mean 'diameters'? (expected one of: "));
+  }
+  SECTION("unknown key: a swap, a missing letter; nothing near, or two equally near, names none") {
+    CHECK_THAT(error_of(kBlock + "cirucits: {min: 1}\n").what(), Catch::Contains("did you mean 'circuits'?"));
+    CHECK_THAT(error_of(kBlock + "clearances: {bore_bor: 4}\n").what(), Catch::Contains("did you mean 'bore_bore'?"));
+    CHECK_THAT(error_of(kBlock + "colour: red\n").what(), !Catch::Contains("did you mean"));
+    CHECK_THAT(error_of(kBlock + "colour: red\n").what(), Catch::Contains("unknown key; expected one of: "));
+    // "mix" is one edit from both "min" and "max": no guess.
+    CHECK_THAT(error_of(kBlock + "circuits: {mix: 3}\n").what(), !Catch::Contains("did you mean"));
   }
   SECTION("duplicate key") {
     const auto e = error_of(kBlock + "clearances:\n  bore_bore: 4\n  bore_bore: 5\n");
