@@ -131,9 +131,10 @@ StoredLayout stored_layout(const std::string& run_dir, std::optional<int> genera
   if (s.member < 0 || std::size_t(s.member) >= g->population.size())
     throw io::InputError(db_path, 0, 0, "--member",
                          "generation " + std::to_string(s.generation) + " has members 0.." + std::to_string(g->population.size() - 1));
-  s.layout = shop_member(*s.session, g->population[std::size_t(s.member)].x).plan;
-  if (s.member == 0 && s.generation == summaries.back().index)
-    if (const std::string polished = polish_note(run_dir); !polished.empty()) s.note += (s.note.empty() ? "" : "; ") + polished;
+  // The last generation's best as optimize wrote it: polished, when it was.
+  std::optional<ShopMember> polished;
+  if (s.member == 0 && s.generation == summaries.back().index) polished = polished_best(run_dir, *s.session, s.note);
+  s.layout = polished ? polished->plan : shop_member(*s.session, g->population[std::size_t(s.member)].x).plan;
   return s;
 }
 

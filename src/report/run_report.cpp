@@ -101,8 +101,6 @@ RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
   if (!meta.count("mold")) throw io::InputError(db_path, 0, 0, "", "a test-problem run: no mold to report on");
   RunReport report;
   const run::Session session(run::stored_mold_spec(meta, options.mold, &report.note), meta.at("config"), db_path + ":config");
-  if (const std::string polished = polish_note(run_dir); !polished.empty())
-    report.note += (report.note.empty() ? "" : "; ") + polished;
   const mold::Scene& scene = session.scene();
   const auto& names = session.objective_names();
 
@@ -139,10 +137,12 @@ RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
   // best.layout.yaml and bores.csv, the front members replay's layouts; the front of those scores.
   std::vector<ShopMember> shop;
   opt::Generation rounded = *generation;
-  for (std::size_t r = 0; r < population.size(); ++r) {
-    shop.push_back(shop_member(session, population[r].x));
-    rounded.population[r].score = shop.back().score;
-  }
+  for (std::size_t r = 0; r < population.size(); ++r) shop.push_back(shop_member(session, population[r].x));
+  // The last generation's best as optimize wrote it: polished, when it was.
+  if (report.generation == summaries.back().index)
+    if (auto polished = polished_best(run_dir, session, report.note)) shop[0] = std::move(*polished);
+  data["run"]["note"] = report.note;
+  for (std::size_t r = 0; r < population.size(); ++r) rounded.population[r].score = shop[r].score;
   const auto front = opt::SmsEmoa::front(rounded);
   report.front = front.size();
   data["members"] = Json::array();

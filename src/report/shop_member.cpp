@@ -1,10 +1,13 @@
 #include "shop_member.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "mtcs/mold/decoder.h"
+#include "mtcs/mold/layout_io.h"
 #include "mtcs/run/shop_layout.h"
 
 namespace mtcs::report {
@@ -19,17 +22,31 @@ ShopMember shop_member(const run::Session& session, const opt::Genotype& x) {
   return m;
 }
 
-std::string polish_note(const std::string& run_dir) {
-  std::ifstream in(std::filesystem::path(run_dir) / "summary.json");
+std::optional<ShopMember> polished_best(const std::string& run_dir, const run::Session& session, std::string& note) {
+  const std::filesystem::path dir(run_dir);
+  std::ifstream in(dir / "summary.json");
   const nlohmann::json summary = nlohmann::json::parse(in, nullptr, false);
-  if (summary.is_discarded() || !summary.contains("polish") || !summary["polish"].value("improved", false)) return "";
-  const std::string mold =
-      summary.contains("mold") && summary["mold"].is_string() ? summary["mold"].get<std::string>() : "MOLD.yaml";
-  return "best.layout.yaml and bores.csv hold the best after a polish (objective " +
-         std::to_string(summary["polish"].value("after", 0.0)) +
-         ") that the run store does not keep; this is the last generation's best as stored, rounded for the shop "
-         "(the polished one: mtcs export " + mold + " --layout " + (std::filesystem::path(run_dir) / "best.layout.yaml").string() +
-         ")";
+  if (summary.is_discarded() || !summary.contains("polish") || !summary["polish"].value("improved", false) ||
+      !summary.contains("best_objective") || !summary["best_objective"].is_number())
+    return std::nullopt;
+  const double written = summary["best_objective"].get<double>();
+  const std::string layout_file = (dir / "best.layout.yaml").string();
+  std::optional<ShopMember> best;
+  try {
+    const mold::Genome genome = mold::read_layout(layout_file, session.spec()).genome;
+    best = shop_member(session, session.problem().encode(genome));
+  } catch (const std::exception&) {
+    best.reset();  // gone or unreadable: as edited
+  }
+  const auto add = [&](const std::string& s) { note += (note.empty() ? "" : "; ") + s; };
+  if (best && std::abs(best->score.value - written) <= 1e-9 * std::max(1.0, std::abs(written))) {
+    add("member 0 is the polished best of best.layout.yaml (objective " + std::to_string(written) +
+        "); the run store keeps it unpolished (" + std::to_string(summary["polish"].value("before", 0.0)) + ")");
+    return best;
+  }
+  add(layout_file + " no longer holds the polished best the run wrote (objective " + std::to_string(written) +
+      "): member 0 is the stored best, unpolished, rounded for the shop");
+  return std::nullopt;
 }
 
 }  // namespace mtcs::report

@@ -3,6 +3,7 @@
 // optimize writes best.layout.yaml and replay the front layouts), re-scored as written, and its
 // hole table (run::shop_plan: what bores.csv, bores.stl and the exports give).
 
+#include <optional>
 #include <string>
 
 #include "mtcs/mold/genome.h"
@@ -22,8 +23,10 @@ struct ShopMember {
 ShopMember shop_member(const run::Session& session, const opt::Genotype& x);
 
 // What the run store cannot show: `optimize --polish` refines the best after the last generation
-// and writes that to best.layout.yaml without storing it. A sentence saying so when RUN_DIR's
-// summary.json records a polish that improved the best; empty otherwise.
-std::string polish_note(const std::string& run_dir);
+// and writes it to best.layout.yaml without storing it. That layout, as the shop receives it, when
+// RUN_DIR's summary.json records a polish that improved the best and best.layout.yaml still scores
+// the summary's best_objective (not edited since); `note` then says so. None otherwise, and where
+// the file no longer matches, `note` says the stored best stands in for it.
+std::optional<ShopMember> polished_best(const std::string& run_dir, const run::Session& session, std::string& note);
 
 }  // namespace mtcs::report

@@ -332,12 +332,33 @@ TEST_CASE("export without --out: never over the run's own files; beside a layout
   CHECK(mtcs_test::read_text(layout.parent_path() / "chosen.layout.csv") == before);
 }
 
-TEST_CASE("report: a run whose best was polished says that best.layout.yaml is not the stored best", "[report]") {
+TEST_CASE("report and export: a polished run's member 0 is best.layout.yaml's polished best; an edited file is said",
+          "[report][export]") {
   const path dir = mtcs_test::scratch("report", "polished");
-  mtcs_test::fs::create_directories(dir);
-  std::ofstream(dir / "summary.json") << R"({"polish": {"evaluations": 501, "improved": true, "before": 9.03, "after": 9.01}})";
-  CHECK(mtcs::report::polish_note(dir.string()).find("polish") != std::string::npos);
-  std::ofstream(dir / "summary.json") << R"({"polish": {"evaluations": 501, "improved": false, "before": 9.03, "after": 9.03}})";
-  CHECK(mtcs::report::polish_note(dir.string()).empty());
-  CHECK(mtcs::report::polish_note(plate_run().string()).empty());  // no polish: the stored best is optimize's
+  mtcs_test::fs::remove_all(dir);
+  const std::string mold = std::string(MTCS_SOURCE_DIR) + "/molds/plate_wall_distance.yaml";
+  REQUIRE(mtcs_test::run_mtcs("optimize " + mold + " --evaluations 600 --seed 2 --polish 300 --quiet --out " + dir.string()) == 0);
+  const json summary = json::parse(mtcs_test::read_text(dir / "summary.json"));
+  REQUIRE(summary["polish"]["improved"].get<bool>());
+  const double written = summary["best_objective"].get<double>(), stored = summary["polish"]["before"].get<double>();
+  REQUIRE(written < stored - 1e-6);
+
+  mtcs::report::ReportOptions options;
+  options.temperature = false, options.drilling_maps = false;
+  const auto polished = mtcs::report::run_report(dir.string(), options);
+  CHECK(page_data(polished.html)["members"][0]["value"].get<double>() == Approx(written).epsilon(1e-12));
+  CHECK_THAT(polished.note, Catch::Contains("member 0 is the polished best of best.layout.yaml"));
+  // export's member 0 is the run's bores.csv, byte for byte.
+  const path csv = mtcs_test::scratch("report", "polished_member0.csv");
+  REQUIRE(mtcs_test::run_mtcs("export " + dir.string() + " --format csv --out " + csv.string()) == 0);
+  CHECK(mtcs_test::read_text(csv) == mtcs_test::read_text(dir / "bores.csv"));
+
+  // best.layout.yaml gone (or edited): the stored best stands in, and the note says why.
+  mtcs_test::fs::rename(dir / "best.layout.yaml", dir / "moved.layout.yaml");
+  const auto fallback = mtcs::report::run_report(dir.string(), options);
+  CHECK(page_data(fallback.html)["members"][0]["value"].get<double>() > written + 1e-6);
+  CHECK_THAT(fallback.note, Catch::Contains("no longer holds the polished best"));
+  const path stored_csv = mtcs_test::scratch("report", "stored_member0.csv");
+  REQUIRE(mtcs_test::run_mtcs("export " + dir.string() + " --format csv --out " + stored_csv.string()) == 0);
+  CHECK(mtcs_test::read_text(stored_csv) != mtcs_test::read_text(dir / "bores.csv"));
 }
