@@ -73,9 +73,8 @@ int run_optimize(const Options& o) {
     limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
   run::OptimizeRequest request{o.mold, o.resume, o.out,
                                {o.config, o.algorithm == "es" ? "" : o.algorithm, o.ref, o.seed, o.evaluations}, o.polish,
-                               [](const std::string& dir) { make_output_folder(dir); }, o.islands};
+                               [](const std::string& dir) { make_output_folder(dir); }, o.islands, o.start};
   request.islands.topology = opt::parse_topology(o.topology);
-  request.start = o.start;
   const run::Interruption interruption;  // Ctrl-C: stop after this generation, write, say how to resume
   const run::OptimizeResult r = run::optimize_mold(
       request, [](const run::MoldOptimizer& optimizer, int log_every) { return run::ProgressSink(run::ProgressPrinter(optimizer, log_every)); },
@@ -120,8 +119,8 @@ Command add_optimize_command(CLI::App& app) {
                   "then refine the best layout's hole coordinates with NLopt's COBYLA for this many evaluations")
       ->check(CLI::Range(0, 10000000));
   sub->add_option("--start", o->start,
-                  "begin from this layout (LAYOUT.yaml: a run's best.layout.yaml or your own, as mtcs evaluate\n"
-                  "reads it); the rest of the first population is sampled. Repeat for several. The ES keeps a\n"
+                  "begin from this layout (LAYOUT.yaml, as mtcs evaluate reads it, or a run's folder: its\n"
+                  "best.layout.yaml); the rest of the first population is sampled. Repeat for several. The ES keeps a\n"
                   "feasible start until a better layout replaces it (plus selection, the default)");
   sub->add_option("--problem", o->problem, "a built-in test problem instead of a mold: zdt1-4, zdt6, dtlz1-7");
   sub->add_option("--algorithm", o->algorithm,

@@ -44,7 +44,9 @@ std::vector<opt::Genotype> start_genotypes(const std::vector<std::string>& paths
                                                   std::to_string(mu) + ")");
   const mold::CircuitLimits& lim = session.spec().circuits;
   std::vector<opt::Genotype> start;
-  for (const std::string& path : paths) {
+  for (const std::string& given : paths) {
+    // A run's folder stands for the layout it wrote.
+    const std::string path = fs::is_directory(given) ? (fs::path(given) / "best.layout.yaml").string() : given;
     const mold::Genome genome = session.read_layout(path);
     start.push_back(session.problem().encode(genome));
     const opt::Score s = session.problem().evaluate(start.back());

@@ -64,6 +64,15 @@ TEST_CASE("optimize --start: the layout is in generation 0 as encoded, and the E
   // Plus selection: no stored generation's best is worse than the start.
   for (const auto& s : db.summaries()) CHECK(db.generation(s.index)->population.front().score.value <= start_score.value);
 
+  // A run's folder starts from the layout it wrote.
+  const fs::path again = scratch("es_from_run");
+  auto from_run = request(again, "es", 100);
+  from_run.start = {dir.string()};
+  optimize(from_run);
+  const opt::Genotype written = session.problem().encode(session.read_layout((dir / "best.layout.yaml").string()));
+  CHECK(run::stored_start(store::RunStore::open((again / "run.sqlite").string()).meta(), "meta") ==
+        std::vector<opt::Genotype>{written});
+
   // Without --start the same seed's generation 0 holds no such layout: the option did something.
   const fs::path plain = scratch("es_plain");
   auto r = request(plain, "es", 200);
