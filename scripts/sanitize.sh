@@ -7,7 +7,10 @@ cd "$(dirname "$0")/.."
 export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
 # Debug builds (-g) hash the working folder too unless told not to: clones would never hit.
 export CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMTCS_SANITIZE=ON >/dev/null
+# -O1 and line tables only (what OSS-Fuzz builds with): stack traces keep file:line, and a cold
+# build takes ~2.5x less than -O2 -g (experiments/ci/README.md).
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
+  -DMTCS_SANITIZE=ON >/dev/null
 cmake --build build-asan -j2
 # OpenCASCADE's libraries (the STEP export) keep allocations for the process's life: suppressed.
 ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$PWD/scripts/lsan_suppressions.txt" \
