@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include <APIHeaderSection_MakeHeader.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Static.hxx>
@@ -13,6 +14,7 @@
 #include <Message_PrinterOStream.hxx>
 #include <STEPCAFControl_Writer.hxx>
 #include <Standard_Failure.hxx>
+#include <TCollection_HAsciiString.hxx>
 #include <TDataStd_Name.hxx>
 #include <TDocStd_Document.hxx>
 #include <XCAFApp_Application.hxx>
@@ -46,6 +48,13 @@ void write_step(const std::string& path, const mold::Layout& layout) {
     STEPCAFControl_Writer writer;
     writer.SetNameMode(Standard_True);
     if (!writer.Transfer(doc, STEPControl_AsIs)) throw std::runtime_error("STEP: OpenCASCADE could not transfer the bores");
+    // The header's FILE_NAME says who wrote the file (OpenCASCADE's default author is 'Unknown').
+    APIHeaderSection_MakeHeader header(writer.ChangeWriter().Model());
+    header.SetAuthorValue(1, new TCollection_HAsciiString("mtcs"));
+    header.SetOrganizationValue(1, new TCollection_HAsciiString("mtcs cooling bores"));
+    header.SetOriginatingSystem(new TCollection_HAsciiString("mtcs 0.1.0 (OpenCASCADE)"));
+    header.SetAuthorisation(new TCollection_HAsciiString(""));
+    header.SetName(new TCollection_HAsciiString(std::filesystem::path(path).filename().string().c_str()));
     // Beside the target, then renamed: nothing half-written under the name asked for.
     const std::string tmp = path + ".tmp";
     if (writer.Write(tmp.c_str()) != IFSelect_RetDone) {
