@@ -118,10 +118,8 @@ Command add_optimize_command(CLI::App& app) {
   sub->add_option("--polish", o->polish,
                   "then refine the best layout's hole coordinates with NLopt's COBYLA for this many evaluations")
       ->check(CLI::Range(0, 10000000));
-  sub->add_option("--start", o->start,
-                  "begin from this layout (LAYOUT.yaml, as mtcs evaluate reads it, or a run's folder: its\n"
-                  "best.layout.yaml); the rest of the first population is sampled. Repeat for several. The ES keeps a\n"
-                  "feasible start until a better layout replaces it (plus selection, the default)");
+  sub->add_option("--start", o->start, "begin from this layout (LAYOUT.yaml or a run's folder: its best.layout.yaml),\n"
+                  "the rest of the first population sampled; repeatable. The ES keeps it until a better one replaces it");
   sub->add_option("--problem", o->problem, "a built-in test problem instead of a mold: zdt1-4, zdt6, dtlz1-7");
   sub->add_option("--algorithm", o->algorithm,
                   "es (one weighted objective) or sms-emoa (a Pareto front; writes front.csv)")->capture_default_str()

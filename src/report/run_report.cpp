@@ -121,7 +121,7 @@ RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
   data["run"] = {{"dir", fs::absolute(run_dir).lexically_normal().string()}, {"mold", meta.at("mold")},
                  {"algorithm", session.config().algorithm}, {"seed", meta.count("seed") ? meta.at("seed") : ""},
                  {"evaluations", summaries.back().evaluations}, {"seconds", summaries.back().seconds},
-                 {"program", meta.count("program") ? meta.at("program") : ""}, {"note", report.note}};
+                 {"program", meta.count("program") ? meta.at("program") : ""}};
   data["objectives"] = Json::array();
   for (const auto& name : names) {
     const auto o = mold::objective_named(name);
@@ -141,7 +141,7 @@ RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
   // The last generation's best as optimize wrote it: polished, when it was.
   if (report.generation == summaries.back().index)
     if (auto polished = polished_best(run_dir, session, report.note)) shop[0] = std::move(*polished);
-  data["run"]["note"] = report.note;
+  data["run"]["note"] = report.note;  // with what the polished best adds
   for (std::size_t r = 0; r < population.size(); ++r) rounded.population[r].score = shop[r].score;
   const auto front = opt::SmsEmoa::front(rounded);
   report.front = front.size();
