@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "run_mtcs.h"
+#include "support/paths.h"
 
 namespace fs = std::filesystem;
 using namespace mtcs_test;
@@ -16,7 +17,7 @@ TEST_CASE("mtcs bench access-map --json over three public cases", "[cli][bench][
                            "public_mcad_herringbone_gear_N128_am32_p00.txt"})
     fs::copy_file(fs::path(MTCS_TEST_DATA) / "access_maps" / name, cases / name, fs::copy_options::overwrite_existing);
   const fs::path out = scratch("access_map_bench", "bench.json");
-  REQUIRE(run_mtcs("bench access-map --cases " + cases.string() + " --mesh-root " MTCS_TEST_DATA "/meshes --repeat 1 --json >" +
+  REQUIRE(run_mtcs("bench access-map --cases " + cases.string() + " --mesh-root " + MTCS_TEST_DATA + "/meshes --repeat 1 --json >" +
                    out.string()) == 0);
   const auto j = nlohmann::json::parse(read_text(out));
   CHECK(j.at("cases") == 3);

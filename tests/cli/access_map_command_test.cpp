@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "run_mtcs.h"
+#include "support/paths.h"
 
 namespace fs = std::filesystem;
 
@@ -30,10 +31,10 @@ std::string cube_case(const fs::path& off, const std::string& pivot) {
 }  // namespace
 
 TEST_CASE("access-map rewrites a public case byte for byte", "[cli][access-map]") {
-  const std::string in = MTCS_TEST_DATA "/access_maps/drilling_mcad_herringbone_gear_p04.txt";
+  const std::string in = MTCS_TEST_DATA + "/access_maps/drilling_mcad_herringbone_gear_p04.txt";
   for (const std::string method : {"aica", "ica", "checkbox"}) {
     const fs::path out = scratch("am_" + method + ".txt");
-    const auto r = run_mtcs("access-map --case " + in + " --mesh " MTCS_TEST_DATA "/meshes/mcad_herringbone_gear.off --out " +
+    const auto r = run_mtcs("access-map --case " + in + " --mesh " + MTCS_TEST_DATA + "/meshes/mcad_herringbone_gear.off --out " +
                             out.string() + " --method " + method + " --threads 2");
     REQUIRE(r.code == 0);
     CHECK(mtcs_test::read_text(out) == mtcs_test::read_text(in));

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "cli/run_mtcs.h"
+#include "support/paths.h"
 
 using namespace mtcs_test;
 

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "run_mtcs.h"
+#include "support/paths.h"
 
 namespace fs = std::filesystem;
 
@@ -33,8 +34,8 @@ std::vector<std::vector<std::string>> read_rows(const fs::path& p) {
   return rows;
 }
 
-const std::string kMesh = MTCS_TEST_DATA "/meshes/homer.off";
-const std::string kCases = MTCS_TEST_DATA "/mesh_clearance/homer.csv";
+const std::string kMesh = MTCS_TEST_DATA + "/meshes/homer.off";
+const std::string kCases = MTCS_TEST_DATA + "/mesh_clearance/homer.csv";
 
 }  // namespace
 

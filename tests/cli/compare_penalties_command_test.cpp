@@ -9,6 +9,7 @@
 #include <map>
 
 #include "run_mtcs.h"
+#include "support/paths.h"
 
 using mtcs_test::has_matplotlib;
 using mtcs_test::run_mtcs;
@@ -51,7 +52,7 @@ double median(std::vector<double> v) {
 }
 
 // The plate scored by wall distances: these runs optimise, and the temperatures would make them ~50x slower.
-const std::string kMold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";
+const std::string kMold = MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml";
 const std::string kVariants = "constrained_domination,static_quadratic,death";
 
 }  // namespace
@@ -61,7 +62,7 @@ TEST_CASE("mtcs compare-penalties: outputs parse and the table agrees with the r
   fs::remove_all(dir);
   // Without the reach move (tests/data/configs/no_reach.yaml): deciles then end at exact steps.
   REQUIRE(run_mtcs("compare-penalties " + kMold + " --variants " + kVariants + " --seeds 3 --evaluations 500 --config " +
-                   std::string(MTCS_TEST_DATA "/configs/no_reach.yaml") + " --out " +
+                   std::string(MTCS_TEST_DATA + "/configs/no_reach.yaml") + " --out " +
                    dir.string(), scratch("plain.err")) == 0);
   for (const char* f : {"runs.csv", "feasible_share.csv", "rank_tests.csv", "summary.md"}) CHECK(fs::exists(dir / f));
   if (has_matplotlib()) CHECK(fs::file_size(dir / "penalties.png") > 1000);
@@ -198,7 +199,7 @@ TEST_CASE("issue 16: compare-penalties with its default reference point gives ev
           "[cli][compare-penalties][issue16]") {
   // The first-mold part (docs/first-mold.md): the old fixed reference point of 4 per scaled
   // objective lies inside its objectives' range, and gave hypervolume 0 on most runs.
-  const std::string part = MTCS_SOURCE_DIR "/docs/first-mold/part.yaml";
+  const std::string part = MTCS_SOURCE_DIR + "/docs/first-mold/part.yaml";
   const std::string base = "compare-penalties " + part + " --seeds 2 --evaluations 2000 --quiet --out ";
   const fs::path dir = scratch("new_part"), fixed = scratch("new_part_ref4");
   fs::remove_all(dir);

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "support/scratch_file.h"
+#include "support/paths.h"
 
 namespace fs = std::filesystem;
 
@@ -37,7 +38,7 @@ Run run_mtcs(const std::string& args) {
 }  // namespace
 
 TEST_CASE("mtcs evaluate --json prints one object with the documented fields", "[cli]") {
-  const Run r = run_mtcs("evaluate " MTCS_SOURCE_DIR "/molds/gear.yaml --layout " MTCS_SOURCE_DIR
+  const Run r = run_mtcs("evaluate " + MTCS_SOURCE_DIR + "/molds/gear.yaml --layout " + MTCS_SOURCE_DIR +
                          "/molds/gear.layout.yaml --json");
   REQUIRE(r.code == 0);
   const auto j = nlohmann::json::parse(r.out);
@@ -57,9 +58,9 @@ TEST_CASE("mtcs evaluate --json: `scalarised` is the objective mtcs optimize giv
   // A new user could not check "objective 11.15" of a run against a hand-made layout.
   const fs::path run = scratch("run");
   fs::remove_all(run);
-  REQUIRE(run_mtcs("optimize " MTCS_SOURCE_DIR "/molds/plate.yaml --evaluations 300 --seed 4 --quiet --out " + run.string()).code == 0);
+  REQUIRE(run_mtcs("optimize " + MTCS_SOURCE_DIR + "/molds/plate.yaml --evaluations 300 --seed 4 --quiet --out " + run.string()).code == 0);
   const auto summary = nlohmann::json::parse(std::ifstream(run / "summary.json"));
-  const Run r = run_mtcs("evaluate " MTCS_SOURCE_DIR "/molds/plate.yaml --layout " + (run / "best.layout.yaml").string() + " --json");
+  const Run r = run_mtcs("evaluate " + MTCS_SOURCE_DIR + "/molds/plate.yaml --layout " + (run / "best.layout.yaml").string() + " --json");
   REQUIRE(r.code == 0);
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j["scalarised"].get<double>() == Approx(summary["best_objective"].get<double>()).epsilon(1e-9));
@@ -75,7 +76,7 @@ TEST_CASE("mtcs evaluate reports violations with elements, distance and margin",
   std::ofstream(layout) << "circuits:\n"
                            "  - {diameter: 8, waypoints: [[100, 0, 80], [100, 200, 80], [100, 200, 80]]}\n"
                            "  - {diameter: 8, waypoints: [[110, 0, 80], [110, 100, 80], [300, 100, 80]]}\n";
-  const Run r = run_mtcs("evaluate " MTCS_SOURCE_DIR "/molds/plate.yaml --layout " + layout.string() + " --json");
+  const Run r = run_mtcs("evaluate " + MTCS_SOURCE_DIR + "/molds/plate.yaml --layout " + layout.string() + " --json");
   REQUIRE(r.code == 0);
   const auto j = nlohmann::json::parse(r.out);
   CHECK_FALSE(j["feasible"].get<bool>());
@@ -89,7 +90,7 @@ TEST_CASE("mtcs evaluate reports violations with elements, distance and margin",
 TEST_CASE("mtcs evaluate rejects bad input with exit code 2", "[cli]") {
   const fs::path layout = scratch("bad.layout.yaml");
   std::ofstream(layout) << "circuits:\n  - {diameter: 7, waypoints: [[0, 0, 0], [1, 1, 1]]}\n";
-  Run r = run_mtcs("evaluate " MTCS_SOURCE_DIR "/molds/plate.yaml --layout " + layout.string());
+  Run r = run_mtcs("evaluate " + MTCS_SOURCE_DIR + "/molds/plate.yaml --layout " + layout.string());
   CHECK(r.code == 2);
   CHECK(r.err.find(layout.string() + ":2:16:") != std::string::npos);
   CHECK(r.err.find("circuits[0].diameter") != std::string::npos);
@@ -105,7 +106,7 @@ TEST_CASE("mtcs evaluate prints violation lines with units: mm for clearances an
   std::ofstream(layout) << "circuits:\n"
                            "  - {diameter: 8, waypoints: [[100, 0, 80], [100, 200, 80], [100, 200, 80]]}\n"
                            "  - {diameter: 8, waypoints: [[110, 0, 80], [110, 100, 80], [300, 100, 80]]}\n";
-  std::ifstream in(MTCS_SOURCE_DIR "/molds/plate.yaml");
+  std::ifstream in(MTCS_SOURCE_DIR + "/molds/plate.yaml");
   std::stringstream spec;
   spec << in.rdbuf();
   std::string text = spec.str();
@@ -125,7 +126,7 @@ TEST_CASE("mtcs evaluate gives each bore's drillable evidence, and its draw comm
           "[cli][drillable]") {
   const fs::path spec = scratch("gear_angled.yaml"), layout = scratch("gear_angled.layout.yaml");
   std::ofstream(spec) << "block: {box: {min: [0, 0, 0], max: [160, 160, 90]}}\n"
-                         "cavity: {mesh: " MTCS_TEST_DATA "/meshes/mcad_herringbone_gear.off, translate: [80, 80, 55]}\n"
+                         "cavity: {mesh: " + MTCS_TEST_DATA + "/meshes/mcad_herringbone_gear.off, translate: [80, 80, 55]}\n"
                          "drilling: {diameters: [8], axis_parallel: false, max_angle_deg: 30,\n"
                          "           access_map: {grid: 32, cells: [16, 16]}}\n"
                          "circuits: {inlet_faces: [-y], outlet_faces: [-y]}\n";

@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 #include "support/scratch_file.h"
+#include "support/paths.h"
 
 namespace fs = std::filesystem;
 

@@ -13,6 +13,7 @@
 
 #include "mtcs/mesh/mesh_io.h"
 #include "support/scratch_file.h"
+#include "support/paths.h"
 
 namespace fs = std::filesystem;
 using namespace mtcs;
@@ -33,7 +34,7 @@ int run(const std::string& args, std::string* out) {
   return WEXITSTATUS(status);
 }
 
-const std::string kMeshes = MTCS_TEST_DATA "/meshes/";
+const std::string kMeshes = MTCS_TEST_DATA + "/meshes/";
 // Rows of mesh_interference.csv: homer against the gear, 16 pairs at the overlap placement,
 // [0.0012250035083989301, 0.0012250035083989307] apart at the gap placement.
 const std::string kOverlap = " --translate 29.132630030337086,0.029399999999998983,-1.0000930000000001";
@@ -127,7 +128,7 @@ TEST_CASE("mtcs bench interfere: ours, FCL and CGAL agree on the homer/gear plac
                           "homer,mcad_herringbone_gear,29.152630030337086,0.029399999999998983,-1.0000930000000001,-1,"
                           "0.0012250035083989301,0.0012250035083989307\n";
   std::string out;
-  REQUIRE(run("bench interfere --repeat 1 --cases " + cases.string() + " --meshes " + MTCS_TEST_DATA "/meshes", &out) == 0);
+  REQUIRE(run("bench interfere --repeat 1 --cases " + cases.string() + " --meshes " + MTCS_TEST_DATA + "/meshes", &out) == 0);
   std::istringstream lines(out);
   std::string header, line;
   std::getline(lines, header);

@@ -15,13 +15,14 @@
 
 #include "stored_run.h"
 #include "run_mtcs.h"
+#include "support/paths.h"
 
 using mtcs::store::RunStore;
 using namespace mtcs_test;
 
 namespace {
 
-const std::string kMold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";
+const std::string kMold = MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml";
 
 // Starts `mtcs optimize MOLD --out DIR ARGS...` with stderr into `err`, sends `signal` once
 // `stored` generations are in its store, and returns its exit code.

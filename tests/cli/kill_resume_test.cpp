@@ -21,13 +21,14 @@
 #include "mtcs/store/run_store.h"
 #include "run_mtcs.h"
 #include "stored_run.h"
+#include "support/paths.h"
 
 using mtcs::store::RunStore;
 using namespace mtcs_test;
 
 namespace {
 
-const std::string kMold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";
+const std::string kMold = MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml";
 const std::vector<std::string> kRun{"--seed", "7", "--evaluations", "2000", "--polish", "200", "--threads", "1", "--quiet"};
 const std::vector<std::string> kFiles{"best.layout.yaml", "bores.csv", "holes.csv", "bores.stl"};
 

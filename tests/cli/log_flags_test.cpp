@@ -4,12 +4,13 @@
 #include <catch2/catch.hpp>
 
 #include "run_mtcs.h"
+#include "support/paths.h"
 
 using mtcs_test::run_mtcs_err;
 namespace fs = std::filesystem;
 
 TEST_CASE("mtcs optimize and replay: --quiet, default and --verbose logs", "[cli][log]") {
-  const std::string mold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";  // fast: wall distances
+  const std::string mold = MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml";  // fast: wall distances
   const fs::path dir = mtcs_test::scratch("log_flags", "runs");
   fs::remove_all(dir);
   const auto out = [&](const std::string& name) { return " --evaluations 200 --out " + (dir / name).string(); };

@@ -14,6 +14,7 @@
 
 #include "run_mtcs.h"
 #include "stored_run.h"
+#include "support/paths.h"
 
 namespace fs = std::filesystem;
 using mtcs::store::RunStore;
@@ -26,7 +27,7 @@ using mtcs_test::run_mtcs;
 std::vector<std::vector<double>> generations(const fs::path& dir) { return mtcs_test::stored_rows(dir); }
 
 // The plate scored by wall distances: these runs optimise, and the temperatures would make them ~50x slower.
-const std::string kMold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";
+const std::string kMold = MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml";
 
 }  // namespace
 
@@ -231,7 +232,7 @@ TEST_CASE("mtcs optimize: option errors name the command and option without a :0
 
 TEST_CASE("mtcs optimize --start: the run says what the layout scores and ends no worse; bad starts exit 2",
           "[cli][optimize][start]") {
-  const std::string layout = MTCS_SOURCE_DIR "/molds/plate.layout.yaml";
+  const std::string layout = MTCS_SOURCE_DIR + "/molds/plate.layout.yaml";
   const fs::path out = scratch("start");
   fs::remove_all(out);
   const auto run = mtcs_test::run_mtcs_err("optimize_cli", "optimize " + kMold + " --start " + layout + " --seed 2 --evaluations 600 --out " + out.string());
@@ -243,8 +244,8 @@ TEST_CASE("mtcs optimize --start: the run says what the layout scores and ends n
   // One circuit where the spec's search makes 3-4 (the part's default circuits.min): kept, and said.
   const fs::path one = scratch("start_one");
   fs::remove_all(one);
-  const auto few = mtcs_test::run_mtcs_err("optimize_cli", "optimize " MTCS_SOURCE_DIR "/docs/first-mold/part.yaml --start "
-                                           MTCS_SOURCE_DIR "/docs/first-mold/first.layout.yaml --seed 1 --evaluations 300 --out " + one.string());
+  const auto few = mtcs_test::run_mtcs_err("optimize_cli", "optimize " + MTCS_SOURCE_DIR + "/docs/first-mold/part.yaml --start "
+                                           + MTCS_SOURCE_DIR + "/docs/first-mold/first.layout.yaml --seed 1 --evaluations 300 --out " + one.string());
   CHECK(few.code == 0);
   CHECK_THAT(few.err, Catch::Contains("has 1 circuit; the search makes 3-4 (circuits.min, circuits.max)"));
 
@@ -261,7 +262,7 @@ TEST_CASE("mtcs optimize --start: the run says what the layout scores and ends n
 
 TEST_CASE("mtcs optimize with fidelity: the T3 re-score of the best layout is mtcs thermal --tier fd on it",
           "[cli][optimize][fidelity]") {
-  const std::string block = MTCS_SOURCE_DIR "/molds/thermal_block.yaml";
+  const std::string block = MTCS_SOURCE_DIR + "/molds/thermal_block.yaml";
   const fs::path dir = scratch("fidelity");
   fs::remove_all(dir);
   const fs::path config = scratch("fidelity.yaml");

@@ -8,6 +8,7 @@
 
 #include "mtcs/mesh/mesh_io.h"
 #include "run_mtcs.h"
+#include "support/paths.h"
 
 using mtcs_test::has_matplotlib;
 using mtcs_test::run_mtcs;
@@ -41,7 +42,7 @@ double prism_volume(const fs::path& bores_csv) {
 TEST_CASE("mtcs replay writes a front plot per generation and an STL per final front member", "[cli][replay]") {
   const fs::path dir = scratch("run");
   fs::remove_all(dir);
-  REQUIRE(run_mtcs("optimize " MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml --algorithm sms-emoa --evaluations 400 --seed 2 --config " MTCS_TEST_DATA
+  REQUIRE(run_mtcs("optimize " + MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml --algorithm sms-emoa --evaluations 400 --seed 2 --config " + MTCS_TEST_DATA +
                    "/configs/no_reach.yaml --out " +
                    dir.string() + " --quiet") == 0);
   REQUIRE(run_mtcs("replay " + dir.string()) == 0);
@@ -82,9 +83,9 @@ TEST_CASE("mtcs replay: the run keeps its mold; moved, deleted or edited molds a
   fs::remove_all(dir);
   fs::create_directories(dir / "a" / "meshes");
   // A primitive mold (plate) and a mold with a mesh file (cup), each in a folder of its own.
-  fs::copy_file(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml", dir / "a" / "plate.yaml");  // fast: wall distances
-  fs::copy_file(MTCS_SOURCE_DIR "/molds/cup.yaml", dir / "a" / "cup.yaml");
-  fs::copy_file(MTCS_SOURCE_DIR "/molds/meshes/cup.off", dir / "a" / "meshes" / "cup.off");
+  fs::copy_file(MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml", dir / "a" / "plate.yaml");  // fast: wall distances
+  fs::copy_file(MTCS_SOURCE_DIR + "/molds/cup.yaml", dir / "a" / "cup.yaml");
+  fs::copy_file(MTCS_SOURCE_DIR + "/molds/meshes/cup.off", dir / "a" / "meshes" / "cup.off");
   for (const std::string mold : {"plate", "cup"})
     REQUIRE(run_mtcs("optimize " + (dir / "a" / (mold + ".yaml")).string() + " --algorithm sms-emoa --evaluations 120 --quiet --out " +
                      (dir / ("run_" + mold)).string()) == 0);

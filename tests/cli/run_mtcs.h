@@ -11,6 +11,7 @@
 #include <sys/wait.h>
 
 #include "support/scratch_file.h"
+#include "support/paths.h"
 
 namespace mtcs_test {
 

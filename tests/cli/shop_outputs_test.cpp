@@ -11,12 +11,13 @@
 #include <sstream>
 
 #include "run_mtcs.h"
+#include "support/paths.h"
 
 using namespace mtcs_test;
 
 namespace {
 
-const std::string kMold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";
+const std::string kMold = MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml";
 
 std::vector<std::map<std::string, std::string>> read_csv(const fs::path& p) {
   std::ifstream in(p);

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "run_mtcs.h"
+#include "support/paths.h"
 
 using namespace mtcs_test;
 

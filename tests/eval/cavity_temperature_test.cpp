@@ -20,18 +20,19 @@
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/thermal/line_sinks.h"
 #include "support/scratch_file.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 using geometry::Vec3;
 
 namespace {
 
-const char* kBlockSpec = MTCS_SOURCE_DIR "/molds/thermal_block.yaml";
-const char* kBlockLayout = MTCS_SOURCE_DIR "/molds/thermal_block.layout.yaml";
+const std::string kBlockSpec = MTCS_SOURCE_DIR + "/molds/thermal_block.yaml";
+const std::string kBlockLayout = MTCS_SOURCE_DIR + "/molds/thermal_block.layout.yaml";
 
 // The FreeFem++ P2 reference at the 720 patch samples: points and temperatures.
 std::pair<std::vector<Vec3>, std::vector<double>> freefem() {
-  std::ifstream in(MTCS_TEST_DATA "/thermal/patch_samples.csv");
+  std::ifstream in(MTCS_TEST_DATA + "/thermal/patch_samples.csv");
   std::string line;
   std::getline(in, line);
   std::vector<Vec3> p;

@@ -18,6 +18,7 @@
 #include "mtcs/io/input_error.h"
 #include "mtcs/mesh/bvh.h"
 #include "mtcs/voxel/part_map.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 using geometry::Vec3;

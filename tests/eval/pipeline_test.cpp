@@ -17,6 +17,7 @@
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/mesh/bvh.h"
 #include "mtcs/mesh/mesh_io.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 using geometry::Vec3;
@@ -76,9 +77,9 @@ TEST_CASE("pipeline: a bore at a known depth under the plate has a known wall di
 }
 
 TEST_CASE("pipeline: designed junctions are not collisions, other crossings are", "[eval]") {
-  const mold::Scene scene(mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml"));
+  const mold::Scene scene(mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate.yaml"));
   const eval::Pipeline pipeline(scene);
-  const auto genome = mold::load_layout(MTCS_SOURCE_DIR "/molds/plate.layout.yaml", scene.spec());
+  const auto genome = mold::load_layout(MTCS_SOURCE_DIR + "/molds/plate.layout.yaml", scene.spec());
   const auto layout = mold::decode(scene, genome);
   CHECK(layout.junctions.size() == 6);
   CHECK(pipeline.evaluate(genome).feasible());
@@ -139,7 +140,7 @@ TEST_CASE("pipeline: the thermal proxy agrees with a Monte Carlo estimate", "[ev
 }
 
 TEST_CASE("pipeline: decoder routes axis-parallel holes, plugs side entries", "[eval][mold]") {
-  const mold::Scene scene(mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml"));
+  const mold::Scene scene(mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate.yaml"));
   // A diagonal step is routed along the axes, longest leg first.
   const mold::Circuit c{{{70, 0, 88}, {110, 150, 88}, {110, 0, 88}}, 8};
   const auto pts = mold::routed_waypoints(scene, c);
@@ -162,8 +163,8 @@ TEST_CASE("pipeline: decoder routes axis-parallel holes, plugs side entries", "[
 }
 
 TEST_CASE("layout files round-trip", "[mold]") {
-  const auto spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml");
-  const auto g = mold::load_layout(MTCS_SOURCE_DIR "/molds/plate.layout.yaml", spec);
+  const auto spec = mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate.yaml");
+  const auto g = mold::load_layout(MTCS_SOURCE_DIR + "/molds/plate.layout.yaml", spec);
   const auto p = write("round.layout.yaml", "");
   mold::save_layout(p.string(), g);
   const auto h = mold::load_layout(p.string(), spec);
@@ -175,7 +176,7 @@ TEST_CASE("layout files round-trip", "[mold]") {
 }
 
 TEST_CASE("penalty variants order layouts as documented", "[eval]") {
-  auto spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml");
+  auto spec = mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate.yaml");
   eval::Evaluation feasible, infeasible;
   feasible.objectives = {10, 10, 10};
   infeasible.objectives = {1, 1, 1};
@@ -241,7 +242,7 @@ TEST_CASE("pipeline: constraints alone are evaluate's violations, objectives ski
   // The reach move asks only for feasibility (Pipeline::constraints): the same violations, in
   // the same order, and the same CV as a full evaluation, on layouts with many violations.
   const std::string mold = GENERATE(std::string("plate_wall_distance"), std::string("gear"));
-  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/" + mold + ".yaml");
+  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/" + mold + ".yaml");
   const mold::Scene scene(spec);
   const eval::Pipeline pipeline(scene);
   std::mt19937 gen(5);
@@ -284,7 +285,7 @@ TEST_CASE("pipeline: the thermal stage's reused arrays carry nothing from one la
   // fill): a layout scored after others (more circuits, other diameters, none at all) must equal
   // the same layout scored on a thread that has seen nothing (a new thread and pipeline per
   // layout: the arrays are per thread, not per pipeline).
-  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml");
+  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml");
   const mold::Scene scene(spec);
   const eval::Pipeline warm(scene);
   const geometry::Box& b = scene.block_bounds();
@@ -315,7 +316,7 @@ TEST_CASE("pipeline: the thermal stage's rows of a layout stay whole when its ci
   // generation turns over; then, 90 rows later (row 0 written over), a layout of revived circuits
   // whose first rows were 0-3. Each layout scored warm must equal it scored on a thread and
   // pipeline that saw nothing.
-  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml");
+  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml");
   const mold::Scene scene(spec);
   const geometry::Box& b = scene.block_bounds();
   const double d = spec.drilling.diameters.front();

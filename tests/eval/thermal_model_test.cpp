@@ -17,6 +17,7 @@
 #include "mtcs/eval/thermal_model.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 using geometry::Vec3;
@@ -28,8 +29,8 @@ fs::path write(const std::string& name, const std::string& text) {
   return mtcs_test::write_scratch("thermal_model_test", name, text);
 }
 
-const char* kBlockSpec = MTCS_SOURCE_DIR "/molds/thermal_block.yaml";
-const char* kBlockLayout = MTCS_SOURCE_DIR "/molds/thermal_block.layout.yaml";
+const std::string kBlockSpec = MTCS_SOURCE_DIR + "/molds/thermal_block.yaml";
+const std::string kBlockLayout = MTCS_SOURCE_DIR + "/molds/thermal_block.layout.yaml";
 
 Vec3 normal(const thermal::HeatedTriangle& t) { return (t.b - t.a).cross(t.c - t.a); }
 double area(const thermal::HeatedTriangle& t) { return normal(t).norm() / 2; }
@@ -79,7 +80,7 @@ TEST_CASE("thermal model: the reference block's setting is block3d_case.txt", "[
 TEST_CASE("thermal model: the patch samples are the 720 points of the FEM reference", "[eval][thermal]") {
   const mold::Scene scene(mold::load_mold_spec(kBlockSpec));
   const thermal::Samples samples = eval::thermal_samples(scene);
-  std::ifstream in(MTCS_TEST_DATA "/thermal/patch_samples.csv");
+  std::ifstream in(MTCS_TEST_DATA + "/thermal/patch_samples.csv");
   std::string line;
   std::getline(in, line);
   REQUIRE(line == "x,y,z,T");
@@ -239,8 +240,8 @@ TEST_CASE("thermal model: the reference layout's channels are the case's bores B
 }
 
 TEST_CASE("thermal model: channels leave out plugged dead ends and drill points", "[eval][thermal]") {
-  const mold::Scene scene(mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml"));
-  const auto layout = mold::decode(scene, mold::load_layout(MTCS_SOURCE_DIR "/molds/plate.layout.yaml", scene.spec()));
+  const mold::Scene scene(mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate.yaml"));
+  const auto layout = mold::decode(scene, mold::load_layout(MTCS_SOURCE_DIR + "/molds/plate.layout.yaml", scene.spec()));
   const auto channels = eval::thermal_channels(layout, scene.spec());
   REQUIRE(channels.size() == layout.bores.size());
   int plugged = 0;
@@ -376,7 +377,7 @@ TEST_CASE("temperature objectives: the default tier scores the reference block a
   const auto e = pipeline.evaluate(mold::load_layout(kBlockLayout, scene.spec()));
   REQUIRE(e.feasible());
   // The FreeFem++ P2 reference at the same 720 samples (equal weights): population std and max.
-  std::ifstream in(MTCS_TEST_DATA "/thermal/patch_samples.csv");
+  std::ifstream in(MTCS_TEST_DATA + "/thermal/patch_samples.csv");
   std::string line;
   std::getline(in, line);
   std::vector<double> t;
@@ -418,7 +419,7 @@ TEST_CASE("issue 16: a layout that decodes to no bore scores the worst temperatu
   // SMS-EMOA with defaults on molds/plate.yaml stopped on 5 of 11 seeds with "line sinks: no
   // channel and no isothermal face: no steady state": a genome whose circuit collapsed reached
   // the temperature stage with no bore.
-  const mold::Scene scene(mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml"));
+  const mold::Scene scene(mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate.yaml"));
   const eval::Pipeline pipeline(scene);
   const eval::Evaluation none = pipeline.evaluate(mold::Layout{});
   const auto& use = scene.spec().objectives.use;
@@ -431,7 +432,7 @@ TEST_CASE("issue 16: a layout that decodes to no bore scores the worst temperatu
   }
   CHECK(any_temperature);
   // A layout that cools scores finite temperatures, below the empty one's.
-  const auto layout = mold::decode(scene, mold::load_layout(MTCS_SOURCE_DIR "/molds/plate.layout.yaml", scene.spec()));
+  const auto layout = mold::decode(scene, mold::load_layout(MTCS_SOURCE_DIR + "/molds/plate.layout.yaml", scene.spec()));
   const eval::Evaluation some = pipeline.evaluate(layout);
   for (std::size_t k = 0; k < use.size(); ++k)
     if (mold::is_temperature_objective(use[k])) CHECK(std::isfinite(some.objectives[k]));

@@ -8,6 +8,7 @@
 
 #include "mtcs/io/pairs_csv.h"
 #include "mtcs/geometry/cylinder_distance.h"
+#include "support/paths.h"
 
 using namespace mtcs::geometry;
 using mtcs::io::CylinderPair;
@@ -16,8 +17,8 @@ namespace {
 
 const std::vector<CylinderPair>& all_pairs() {
   static const auto pairs = [] {
-    auto v = mtcs::io::read_pairs_csv(MTCS_TEST_DATA "/cylinder_pairs_public.csv");
-    const auto exact = mtcs::io::read_pairs_csv(MTCS_TEST_DATA "/cylinder_pairs_exact.csv");
+    auto v = mtcs::io::read_pairs_csv(MTCS_TEST_DATA + "/cylinder_pairs_public.csv");
+    const auto exact = mtcs::io::read_pairs_csv(MTCS_TEST_DATA + "/cylinder_pairs_exact.csv");
     v.insert(v.end(), exact.begin(), exact.end());
     return v;
   }();

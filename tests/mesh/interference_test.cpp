@@ -15,6 +15,7 @@
 
 #include "mtcs/mesh/interference.h"
 #include "mtcs/mesh/mesh_io.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 using geometry::Vec3;
@@ -23,7 +24,7 @@ using mesh::TriangleMesh;
 
 namespace {
 
-TriangleMesh load(const std::string& name) { return mesh::read_mesh(MTCS_TEST_DATA "/meshes/" + name + ".off"); }
+TriangleMesh load(const std::string& name) { return mesh::read_mesh(MTCS_TEST_DATA + "/meshes/" + name + ".off"); }
 
 const TriangleMesh& cached(const std::string& name) {
   static std::map<std::string, TriangleMesh> meshes;
@@ -57,7 +58,7 @@ struct Placement {
 };
 
 std::vector<Placement> placements() {
-  std::ifstream in(MTCS_TEST_DATA "/mesh_interference.csv");
+  std::ifstream in(MTCS_TEST_DATA + "/mesh_interference.csv");
   std::string line;
   std::getline(in, line);
   std::vector<Placement> rows;

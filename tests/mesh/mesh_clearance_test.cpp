@@ -11,6 +11,7 @@
 #include "bench/fcl_mesh_peer.h"
 #include "mtcs/mesh/bvh.h"
 #include "mtcs/mesh/mesh_io.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 using geometry::Cylinder;
@@ -57,10 +58,10 @@ void check_case(const Case& c, const mesh::Clearance& got, double s) {
 }
 
 void check_mesh(const std::string& name) {
-  const auto m = mesh::read_mesh(MTCS_TEST_DATA "/meshes/" + name + ".off");
+  const auto m = mesh::read_mesh(MTCS_TEST_DATA + "/meshes/" + name + ".off");
   REQUIRE(mesh::closed_mesh_problem(m).empty());
   const mesh::TriangleBvh bvh(m);
-  const auto cases = read_cases(MTCS_TEST_DATA "/mesh_clearance/" + name + ".csv");
+  const auto cases = read_cases(MTCS_TEST_DATA + "/mesh_clearance/" + name + ".csv");
   REQUIRE(cases.size() == 150);
   for (const Case& c : cases) {
     const double s = scale_of(c, m);
@@ -89,7 +90,7 @@ TEST_CASE("mesh clearance certified: openscad_example006", "[mesh][clearance]") 
 
 TEST_CASE("mesh clearance equals brute force over every triangle, with either split rule", "[mesh][clearance]") {
   for (const std::string name : {"homer", "mcad_herringbone_gear"}) {
-    const auto m = mesh::read_mesh(MTCS_TEST_DATA "/meshes/" + name + ".off");
+    const auto m = mesh::read_mesh(MTCS_TEST_DATA + "/meshes/" + name + ".off");
     const mesh::TriangleBvh bvh(m), bvh_median(m, mesh::TriangleBvh::SplitRule::Median);
     const auto box = m.bounds();
     const double extent = box.size().maxCoeff();
@@ -118,10 +119,10 @@ TEST_CASE("mesh clearance agrees with FCL on separated cylinders", "[mesh][clear
   // FCL's GJK is accurate to about 1e-5 S on these meshes (shared/cases README; anchors), and
   // wrong on buried cylinders: compare the separated ones only, at FCL's accuracy.
   for (const std::string name : {"turbine", "openscad_example006"}) {
-    const auto m = mesh::read_mesh(MTCS_TEST_DATA "/meshes/" + name + ".off");
+    const auto m = mesh::read_mesh(MTCS_TEST_DATA + "/meshes/" + name + ".off");
     const mesh::TriangleBvh bvh(m);
     const bench::FclMesh fcl(m);
-    for (const Case& c : read_cases(MTCS_TEST_DATA "/mesh_clearance/" + name + ".csv")) {
+    for (const Case& c : read_cases(MTCS_TEST_DATA + "/mesh_clearance/" + name + ".csv")) {
       if (c.category != "near" && c.category != "end_cap") continue;
       const double s = scale_of(c, m);
       INFO(name << " " << c.id);

@@ -11,6 +11,7 @@
 #include "mtcs/mesh/mesh_io.h"
 #include "support/thrown_by.h"
 #include "support/scratch_file.h"
+#include "support/paths.h"
 
 using mtcs::mesh::MeshError;
 using mtcs::mesh::read_mesh;
@@ -143,7 +144,7 @@ TEST_CASE("mesh reader defect: a vertex coordinate of an unknown type is refused
 // uchar double z") after x and y twice: CGAL reads z through a number reader of another type
 // (UBSan: "member call on null pointer of type PLY_read_typed_number<float>").
 TEST_CASE("mesh reader defect: a PLY vertex coordinate declared as a list, or twice, is refused", "[mesh][fuzz-defect]") {
-  const std::string artifact = MTCS_TEST_DATA "/meshes/fuzz_crash_ply_list_z.ply";
+  const std::string artifact = MTCS_TEST_DATA + "/meshes/fuzz_crash_ply_list_z.ply";
   CHECK_THAT(error_of(artifact), Catch::StartsWith(artifact + ":7: property x of element vertex is declared twice"));
   const std::string head = "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n";
   const auto list = write("list_z.ply", head + "property list uchar double z\nend_header\n0 0 1 0\n");
@@ -157,7 +158,7 @@ TEST_CASE("mesh reader defect: a PLY vertex coordinate declared as a list, or tw
 // names a property by the word after its type (y), not the line's last word (48), which the
 // check read: an integer y again (the null dereference of crash-48ea8ea7).
 TEST_CASE("mesh reader defect: a PLY property is named by the word after its type, as CGAL reads it", "[mesh][fuzz-defect]") {
-  const std::string artifact = MTCS_TEST_DATA "/meshes/fuzz_crash_ply_integer_y.ply";
+  const std::string artifact = MTCS_TEST_DATA + "/meshes/fuzz_crash_ply_integer_y.ply";
   CHECK_THAT(error_of(artifact), Catch::StartsWith(artifact + ":6: vertex property y must be float or double, not uint16"));
   const auto path = write("trailing.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
                                           "property uint16 y garbage\nproperty float z\nend_header\n0 0 0\n");
@@ -173,7 +174,7 @@ TEST_CASE("mesh reader defect: a PLY property is named by the word after its typ
 // z": CGAL takes an element named "vertices" for the vertex element, so the integer z met its
 // float reader (the null dereference of #5) past a check that looked at "vertex" only.
 TEST_CASE("mesh reader defect: a PLY element named vertices has its coordinates checked like vertex", "[mesh][fuzz-defect]") {
-  const std::string artifact = MTCS_TEST_DATA "/meshes/fuzz_crash_ply_vertices_int8_z.ply";
+  const std::string artifact = MTCS_TEST_DATA + "/meshes/fuzz_crash_ply_vertices_int8_z.ply";
   CHECK_THAT(error_of(artifact), Catch::Contains("vertex property z must be float or double, not int8"));
   const auto path = write("vertices.ply", "ply\nformat ascii 1.0\nelement vertices 1\nproperty float x\n"
                                           "property float y\nproperty short z\nend_header\n0 0 0\n");
@@ -186,7 +187,7 @@ TEST_CASE("mesh reader defect: a PLY element named vertices has its coordinates 
 // element without them (or with another type) met a missing reader (UBSan: member call on null
 // pointer of type PLY_read_typed_number<unsigned int>, PLY_reader.h:387).
 TEST_CASE("mesh reader defect: a PLY halfedge element needs uint source and target", "[mesh][fuzz-defect]") {
-  const std::string artifact = MTCS_TEST_DATA "/meshes/fuzz_crash_ply_halfedge_source.ply";
+  const std::string artifact = MTCS_TEST_DATA + "/meshes/fuzz_crash_ply_halfedge_source.ply";
   CHECK_THAT(error_of(artifact), Catch::Contains("element halfedge needs the property source as uint"));
   const std::string tetra = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
                             "property float z\nelement face 1\nproperty list uchar int vertex_indices\n";

@@ -11,6 +11,7 @@
 #include "mtcs/mesh/mesh_check.h"
 #include "mtcs/mesh/mesh_io.h"
 #include "support/scratch_file.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 using geometry::Vec3;
@@ -40,7 +41,7 @@ TEST_CASE("meshes: binary STL round trip through CGAL's reader", "[mesh]") {
 }
 
 TEST_CASE("meshes: BVH segment distance equals brute force; containment", "[mesh]") {
-  const auto gear = mesh::read_mesh(MTCS_SOURCE_DIR "/molds/meshes/mcad_herringbone_gear.off");
+  const auto gear = mesh::read_mesh(MTCS_SOURCE_DIR + "/molds/meshes/mcad_herringbone_gear.off");
   REQUIRE(mesh::closed_mesh_problem(gear).empty());
   const mesh::TriangleBvh bvh(gear);
   std::mt19937_64 rng(8);
@@ -125,11 +126,11 @@ TEST_CASE("meshes: validation names self-intersecting triangles, holes and flipp
   std::swap(flipped.triangles[3][1], flipped.triangles[3][2]);
   CHECK_FALSE(mesh::check_mesh(flipped).ok());
   // The shipped meshes pass.
-  CHECK(mesh::check_mesh(mesh::read_mesh(MTCS_TEST_DATA "/meshes/homer.off")).ok());
+  CHECK(mesh::check_mesh(mesh::read_mesh(MTCS_TEST_DATA + "/meshes/homer.off")).ok());
 }
 
 TEST_CASE("meshes: OBJ and PLY (colours, quality) read back through CGAL's readers", "[mesh]") {
-  const auto gear = mesh::read_mesh(MTCS_TEST_DATA "/meshes/mcad_herringbone_gear.off");
+  const auto gear = mesh::read_mesh(MTCS_TEST_DATA + "/meshes/mcad_herringbone_gear.off");
   const auto dir = mtcs_test::scratch_dir("writers");
   mesh::FaceAttributes faces;
   for (std::size_t t = 0; t < gear.triangles.size(); ++t) {

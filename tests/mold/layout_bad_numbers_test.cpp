@@ -9,13 +9,14 @@
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/mold/mold_spec.h"
 #include "support/thrown_by.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 
 namespace {
 
 const mold::MoldSpec& plate() {
-  static const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml");
+  static const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate.yaml");
   return spec;
 }
 

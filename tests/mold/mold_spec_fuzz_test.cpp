@@ -13,6 +13,7 @@
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/mold/mold_spec.h"
 #include "support/scratch_file.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 namespace fs = std::filesystem;
@@ -45,9 +46,9 @@ std::string mutate(std::string s, std::mt19937_64& rng) {
 
 TEST_CASE("mold spec and layout readers survive mutated input", "[mold][fuzz]") {
   const fs::path dir = mtcs_test::scratch_dir("spec_fuzz");
-  const std::string spec_text = slurp(MTCS_SOURCE_DIR "/molds/extreme.yaml");
-  const std::string layout_text = slurp(MTCS_SOURCE_DIR "/molds/plate.layout.yaml");
-  const auto plate = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml");
+  const std::string spec_text = slurp(MTCS_SOURCE_DIR + "/molds/extreme.yaml");
+  const std::string layout_text = slurp(MTCS_SOURCE_DIR + "/molds/plate.layout.yaml");
+  const auto plate = mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate.yaml");
   std::mt19937_64 rng(2026);
   int loaded = 0, rejected = 0;
   for (int i = 0; i < 600; ++i) {

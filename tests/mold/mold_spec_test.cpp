@@ -11,6 +11,7 @@
 #include "mtcs/io/input_error.h"
 #include "mtcs/mold/mold_spec.h"
 #include "support/thrown_by.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 namespace fs = std::filesystem;
@@ -32,7 +33,7 @@ io::InputError error_of(const std::string& text, const std::string& name = "spec
 }  // namespace
 
 TEST_CASE("mold spec: the bundled plate loads with its defaults", "[mold]") {
-  const auto spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml");
+  const auto spec = mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate.yaml");
   CHECK(spec.block.box->max.x() == 300);
   CHECK(spec.cavity->box);
   CHECK(spec.keep_outs.size() == 4);
@@ -136,7 +137,7 @@ TEST_CASE("mold spec: a closed tetrahedron loads and is translated", "[mold]") {
 TEST_CASE("issue 16: without circuits.min a part gets one circuit per 40 mm of its longest side (the ES stopped at 2)",
           "[mold][issue16]") {
   // The first-mold part: 96.6 x 104.9 x 53.6 mm, ceil(104.9 / 40) = 3 circuits at least, of 4.
-  const mold::MoldSpec part = mold::load_mold_spec(MTCS_SOURCE_DIR "/docs/first-mold/part.yaml");
+  const mold::MoldSpec part = mold::load_mold_spec(MTCS_SOURCE_DIR + "/docs/first-mold/part.yaml");
   CHECK(part.circuits.min == 3);
   CHECK(part.circuits.max == 4);
   auto limits = [](const std::string& cavity, const std::string& circuits) {
@@ -150,7 +151,7 @@ TEST_CASE("issue 16: without circuits.min a part gets one circuit per 40 mm of i
   CHECK(limits("cavity: {box: {min: [50, 50, 40], max: [250, 110, 50]}}\n", "circuits: {max: 2}\n").min == 2);
   // What the spec says is kept, and the bundled molds say it.
   CHECK(limits("cavity: {box: {min: [50, 50, 40], max: [250, 110, 50]}}\n", "circuits: {min: 1}\n").min == 1);
-  CHECK(mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml").circuits.min == 1);
+  CHECK(mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml").circuits.min == 1);
 }
 
 // Fuzz crash #16 (mold_spec, crash-b9a2fcf4): a mesh path with a name longer than the file system

@@ -18,6 +18,7 @@
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/mold/mold_spec.h"
 #include "support/thrown_by.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 using geometry::Vec3;
@@ -235,7 +236,7 @@ TEST_CASE("thermal spec: bad input names file, line, column and field", "[mold][
 }
 
 TEST_CASE("thermal spec: a patch is a flat box on its face", "[mold][thermal]") {
-  const auto spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/thermal_block.yaml");
+  const auto spec = mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/thermal_block.yaml");
   REQUIRE(spec.cavity);
   CHECK(spec.cavity->is_patch());
   CHECK(*spec.cavity->patch_face == mold::Face::PosZ);
@@ -254,8 +255,8 @@ TEST_CASE("thermal spec: a patch is a flat box on its face", "[mold][thermal]") 
 }
 
 TEST_CASE("thermal spec: the reference layout decodes to the case's bores, straight through", "[mold][thermal]") {
-  const mold::Scene scene(mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/thermal_block.yaml"));
-  const auto genome = mold::load_layout(MTCS_SOURCE_DIR "/molds/thermal_block.layout.yaml", scene.spec());
+  const mold::Scene scene(mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/thermal_block.yaml"));
+  const auto genome = mold::load_layout(MTCS_SOURCE_DIR + "/molds/thermal_block.layout.yaml", scene.spec());
   const auto layout = mold::decode(scene, genome);
   // block3d_case.txt: B1 (y, z, D) = (20, 45, 10), B2 (40, 47, 8), B3 (61, 43, 10), x from 0 to 120.
   const double expected[3][3] = {{20, 45, 10}, {40, 47, 8}, {61, 43, 10}};
@@ -276,7 +277,7 @@ TEST_CASE("thermal spec: the reference layout decodes to the case's bores, strai
 }
 
 TEST_CASE("thermal spec: the reader survives mutated thermal sections and patches", "[mold][thermal][fuzz]") {
-  std::ifstream in(MTCS_SOURCE_DIR "/molds/thermal_block.yaml");
+  std::ifstream in(MTCS_SOURCE_DIR + "/molds/thermal_block.yaml");
   std::stringstream ss;
   ss << in.rdbuf();
   const std::string text = ss.str();

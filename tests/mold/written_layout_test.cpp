@@ -14,13 +14,14 @@
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/run/shop_layout.h"
 #include "support/thrown_by.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kMold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";
+const std::string kMold = MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml";
 
 fs::path write(const std::string& name, const std::string& text) {
   return mtcs_test::write_scratch("written_layout_test", name, text);

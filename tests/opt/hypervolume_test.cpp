@@ -12,6 +12,7 @@
 
 #include "mtcs/io/front_file.h"
 #include "mtcs/opt/hypervolume.h"
+#include "support/paths.h"
 
 using namespace mtcs::opt;
 
@@ -60,7 +61,7 @@ CGAL::Gmpq exact_hv(const std::vector<Point>& pts, const Point& ref) {
 }  // namespace
 
 TEST_CASE("hypervolume: the 42 certified fronts to 1e-12 relative", "[opt][hypervolume]") {
-  std::ifstream expected(MTCS_TEST_DATA "/hv_fronts/expected.csv");
+  std::ifstream expected(MTCS_TEST_DATA + "/hv_fronts/expected.csv");
   std::string line;
   std::getline(expected, line);
   int fronts = 0;
@@ -68,7 +69,7 @@ TEST_CASE("hypervolume: the 42 certified fronts to 1e-12 relative", "[opt][hyper
     std::istringstream ss(line);
     std::string name, d, n, hv;
     std::getline(ss, name, ','), std::getline(ss, d, ','), std::getline(ss, n, ','), std::getline(ss, hv, ',');
-    const Front f = read(MTCS_TEST_DATA "/hv_fronts/" + name + ".txt");
+    const Front f = read(MTCS_TEST_DATA + "/hv_fronts/" + name + ".txt");
     const double want = std::stod(hv);
     INFO(name);
     CHECK(std::abs(hypervolume(f.points, f.ref) - want) <= 1e-12 * want);
@@ -167,7 +168,7 @@ TEST_CASE("hypervolume: 3-D contributions on a large front full of ties equal le
 
 TEST_CASE("hypervolume: pagmo agrees on every certified front; 2-D contributions identical", "[opt][hypervolume]") {
   for (const char* name : {"linear_d2_n1000", "random_d3_n1000", "sphere_d4_n100", "random_d5_n100", "sphere_d2_n100"}) {
-    const Front f = read(std::string(MTCS_TEST_DATA "/hv_fronts/") + name + ".txt");
+    const Front f = read(std::string(MTCS_TEST_DATA + "/hv_fronts/") + name + ".txt");
     const double ours = hypervolume(f.points, f.ref), theirs = mtcs::bench::pagmo_hypervolume(f.points, f.ref);
     INFO(name);
     CHECK(std::abs(ours - theirs) <= 1e-12 * ours);

@@ -6,11 +6,12 @@
 
 #include "bench/mold_peers.h"
 #include "mtcs/run/session.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 
 TEST_CASE("mold peers: budgets, monotone anytime courses, determinism", "[opt][bench][peers]") {
-  const run::Session session(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml", {});
+  const run::Session session(MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml", {});
   run::RunConfig config = session.config();
   config.algorithm = "sms-emoa";
   config.es.mu = 10;

@@ -18,6 +18,7 @@
 #include "report/shop_member.h"
 #include "mtcs/voxel/access_map_cache.h"
 #include "mtcs/voxel/part_map.h"
+#include "support/paths.h"
 
 namespace {
 

@@ -25,6 +25,7 @@
 #include <XCAFDoc_ShapeTool.hxx>
 
 #include "cli/run_mtcs.h"
+#include "support/paths.h"
 
 namespace {
 

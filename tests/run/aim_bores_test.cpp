@@ -16,6 +16,7 @@
 #include "mtcs/run/mold_problem.h"
 #include "run/aim_bores.h"
 #include "support/scratch_file.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 using geometry::Vec3;
@@ -26,7 +27,7 @@ std::string gear_spec_path() {
   const auto dir = mtcs_test::scratch_dir("aim");
   const auto p = dir / "gear.yaml";
   std::ofstream(p) << "block: {box: {min: [0, 0, 0], max: [160, 160, 90]}}\n"
-                      "cavity: {mesh: " MTCS_TEST_DATA "/meshes/mcad_herringbone_gear.off, translate: [80, 80, 55]}\n"
+                      "cavity: {mesh: " + MTCS_TEST_DATA + "/meshes/mcad_herringbone_gear.off, translate: [80, 80, 55]}\n"
                       "drilling: {diameters: [8], axis_parallel: false, max_angle_deg: 30, allowed_faces: [-y, +y, -x, +x],\n"
                       "           access_map: {grid: 48, cells: [24, 24]}}\n"
                       "circuits: {inlet_faces: [-y], outlet_faces: [-y]}\n";

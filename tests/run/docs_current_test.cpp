@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "mtcs/run/run_config.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 namespace fs = std::filesystem;
@@ -25,7 +26,7 @@ std::string read(const fs::path& p) {
 
 TEST_CASE("issue 16: configs/es_default.yaml gives exactly the defaults the code uses", "[run][issue16][docs]") {
   const std::vector<std::string> names{"uniformity", "worst_covered", "cost"};
-  const run::RunConfig file = run::load_run_config(MTCS_SOURCE_DIR "/configs/es_default.yaml", names);
+  const run::RunConfig file = run::load_run_config(MTCS_SOURCE_DIR + "/configs/es_default.yaml", names);
   const run::RunConfig code;
   CHECK(file.algorithm == code.algorithm);
   CHECK(file.es.mu == code.es.mu);

@@ -16,6 +16,7 @@
 #include "mtcs/opt/rng.h"
 #include "mtcs/run/session.h"
 #include "support/plain_nearest_squared.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 
@@ -53,7 +54,7 @@ int shared_bores(const mold::Layout& parent, const mold::Layout& child) {
 
 TEST_CASE("A child scored after its parent equals a cold score, for every mutation operator", "[run][incremental]") {
   const std::string mold = GENERATE(std::string("plate_wall_distance"), std::string("gear"));
-  const run::Session session(MTCS_SOURCE_DIR "/molds/" + mold + ".yaml");
+  const run::Session session(MTCS_SOURCE_DIR + "/molds/" + mold + ".yaml");
   const mold::Scene& scene = session.scene();
   const eval::Pipeline warm(scene), cold(scene);
   struct Operator {
@@ -97,7 +98,7 @@ TEST_CASE("A child scored after its parent equals a cold score, for every mutati
 // the blocks of several layouts, so a child scored after other parents' children still reuses its
 // parent's bores; its score must equal a cold one bit for bit.
 TEST_CASE("A child scored after other parents' children equals a cold score with physics objectives", "[run][incremental]") {
-  const run::Session session(MTCS_SOURCE_DIR "/molds/plate.yaml");
+  const run::Session session(MTCS_SOURCE_DIR + "/molds/plate.yaml");
   const mold::Scene& scene = session.scene();
   const eval::Pipeline& warm = session.pipeline();
   const eval::Pipeline cold(scene);
@@ -132,7 +133,7 @@ TEST_CASE("The thermal objectives equal the plain loop's bit for bit", "[run][in
   // middle of a layout; the last layout has 70 circuits (more than one layout's share of the
   // stage's rows).
   const std::string mold = GENERATE(std::string("plate_wall_distance"), std::string("gear"));
-  const run::Session session(MTCS_SOURCE_DIR "/molds/" + mold + ".yaml");
+  const run::Session session(MTCS_SOURCE_DIR + "/molds/" + mold + ".yaml");
   const mold::Scene& scene = session.scene();
   const auto& use = scene.spec().objectives.use;
   const auto slot = [&](mold::Objective o) { return std::size_t(std::find(use.begin(), use.end(), o) - use.begin()); };

@@ -13,13 +13,14 @@
 #include "mtcs/run/optimize_run.h"
 #include "../support/scratch_file.h"
 #include "mtcs/store/run_store.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kMold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";
+const std::string kMold = MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml";
 
 fs::path scratch(const std::string& name) { return mtcs_test::fresh_scratch_dir("islands_mpi", name); }
 

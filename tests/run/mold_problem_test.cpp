@@ -15,6 +15,7 @@
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/scene.h"
 #include "run/violation_text.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 
@@ -29,7 +30,7 @@ mold::Genome through_ejector() {
 }
 
 opt::Score ranked(mold::PenaltyVariant variant, double weight, opt::Score* score) {
-  mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml");
+  mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate.yaml");
   spec.penalty.variant = variant;
   spec.penalty.weight = weight;
   const mold::Scene scene(spec);
@@ -51,7 +52,7 @@ TEST_CASE("MoldProblem ranks an infeasible layout as its penalty variant says", 
   CHECK(cd.violation == s.violation);
 
   // The mold's scale of each of its objectives (plate.yaml: temperature_std, temperature_max, cost).
-  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml");
+  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate.yaml");
   std::vector<double> scales;
   for (const auto o : spec.objectives.use) scales.push_back(spec.objectives.scale(o));
   REQUIRE(scales.size() == s.objectives.size());
@@ -74,7 +75,7 @@ TEST_CASE("MoldProblem ranks an infeasible layout as its penalty variant says", 
 // the time (its spread factor's median is 1), the ports stay on their faces, and the same draws
 // give the same child; circuits of different shapes fall back to the whole-circuit crossover.
 TEST_CASE("MoldProblem blends the hole coordinates of parents that share a circuit's shape", "[run][blend]") {
-  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml");
+  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate.yaml");
   REQUIRE(spec.drilling.axis_parallel);
   const mold::Scene scene(spec);
   const eval::Pipeline pipeline(scene);
@@ -137,7 +138,7 @@ TEST_CASE("MoldProblem blends the hole coordinates of parents that share a circu
 // plane, the segment's far end slid across with it, so the route stays axis-parallel, the ports
 // stay on their face and the layout gains two bores. Every segment and both in-plane axes occur.
 TEST_CASE("MoldProblem's jog splits a segment by a leg across it", "[run][jog]") {
-  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate.yaml");
+  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate.yaml");
   REQUIRE(spec.drilling.axis_parallel);
   const mold::Scene scene(spec);
   const eval::Pipeline pipeline(scene);
@@ -192,7 +193,7 @@ TEST_CASE("MoldProblem's jog splits a segment by a leg across it", "[run][jog]")
 
 TEST_CASE("MoldProblem's violation detail is printf's %.6g of each distance and margin", "[run][detail]") {
   // The run store keeps this text; it is written without printf (it is built for every child).
-  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml");
+  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml");
   const mold::Scene scene(spec);
   const eval::Pipeline pipeline(scene);
   const run::MoldProblem problem(pipeline, {}, {});

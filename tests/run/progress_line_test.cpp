@@ -7,6 +7,7 @@
 #include "mtcs/opt/sms_emoa.h"
 #include "mtcs/run/progress_line.h"
 #include "mtcs/run/session.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 
@@ -17,7 +18,7 @@ TEST_CASE("issue 16: SMS-EMOA's progress line gives the hypervolume in scaled ob
   o.seed = 5;
   o.evaluations = 200;
   o.ref = {40, 40, 40};
-  const run::Session session(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml", o);
+  const run::Session session(MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml", o);
   const run::MoldOptimizer optimizer(session.problem(), session.scene(), session.config());
   const opt::Generation g = optimizer.run(nullptr, {});
   const auto front = opt::SmsEmoa::front(g);

@@ -22,6 +22,7 @@
 #include "mtcs/run/session.h"
 #include "run/reach_move.h"
 #include "support/scratch_file.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 using geometry::Vec3;
@@ -83,7 +84,7 @@ TEST_CASE("the worst-covered search picks the plain loop's sample and distance o
   // to the earliest. (More cases: tests/eval/worst_covered_test.cpp.)
   const mold::MoldSpec spec = trough_spec();
   const mold::Scene scene(spec);
-  const run::Session session(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml");
+  const run::Session session(MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml");
   const run::MoldProblem problem(session.pipeline(), {}, session.config().mutation);
   const std::vector<Vec3> samples = eval::thermal_samples(session.scene()).points;
   std::vector<Vec3> grid;

@@ -7,6 +7,7 @@
 #include "mtcs/opt/sms_emoa.h"
 #include "mtcs/run/run_outputs.h"
 #include "mtcs/run/session.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 
@@ -25,7 +26,7 @@ run::RunOverrides sms(long evaluations, std::vector<double> ref = {}) {
 
 TEST_CASE("issue 16: SMS-EMOA's default reference point is twice the worst of the run's own initial population",
           "[run][issue16]") {
-  const run::Session session(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml", sms(400));
+  const run::Session session(MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml", sms(400));
   const run::MoldOptimizer optimizer(session.problem(), session.scene(), session.config());
   // The population the run starts from, as the run reports it.
   std::optional<opt::Generation> initial;
@@ -49,7 +50,7 @@ TEST_CASE("issue 16: SMS-EMOA's default reference point is twice the worst of th
 
 TEST_CASE("issue 16: a front with hypervolume 0 or of a single design is warned about", "[run][issue16]") {
   // A reference point every layout lies beyond.
-  const run::Session session(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml", sms(100, {1e-6, 1e-6, 1e-6}));
+  const run::Session session(MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml", sms(100, {1e-6, 1e-6, 1e-6}));
   const run::MoldOptimizer optimizer(session.problem(), session.scene(), session.config());
   CHECK_THAT(optimizer.reference_origin(), Catch::Contains("given"));
   opt::Generation last = optimizer.run(nullptr, {});

@@ -19,6 +19,7 @@
 #include "mtcs/run/replay.h"
 #include "mtcs/run/stored_run.h"
 #include "support/scratch_file.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 namespace fs = std::filesystem;
@@ -84,8 +85,8 @@ TEST_CASE("issue 16: replay writes DIR/replay whole or not at all", "[run][repla
   o.algorithm = "sms-emoa";
   o.seed = 3;
   o.evaluations = 300;
-  o.config = MTCS_TEST_DATA "/configs/no_reach.yaml";  // a fixed number of steps per budget
-  const run::Session session(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml", o);
+  o.config = MTCS_TEST_DATA + "/configs/no_reach.yaml";  // a fixed number of steps per budget
+  const run::Session session(MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml", o);
   const run::MoldOptimizer optimizer(session.problem(), session.scene(), session.config());
   store::RunStore db = store::RunStore::create((dir / "run.sqlite").string(), {{"mold", "plate"}});
   run::run_stored(optimizer, session.problem(), db, {});
@@ -126,7 +127,7 @@ TEST_CASE("issue 14: replay writes the run's anytime trace (best and hypervolume
   o.algorithm = "sms-emoa";
   o.seed = 5;
   o.evaluations = 400;
-  const run::Session session(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml", o);
+  const run::Session session(MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml", o);
   const run::MoldOptimizer optimizer(session.problem(), session.scene(), session.config());
   store::RunStore db = store::RunStore::create((dir / "run.sqlite").string(), {{"mold", "plate"}});
   run::run_stored(optimizer, session.problem(), db, {});
@@ -193,7 +194,7 @@ TEST_CASE("replay: an ES run's hypervolumes are against its first generation's r
   run::RunOverrides o;
   o.seed = 2;
   o.evaluations = 250;
-  const run::Session session(MTCS_SOURCE_DIR "/molds/plate.yaml", o);
+  const run::Session session(MTCS_SOURCE_DIR + "/molds/plate.yaml", o);
   const run::MoldOptimizer optimizer(session.problem(), session.scene(), session.config());
   REQUIRE_FALSE(optimizer.pareto());
   CHECK(optimizer.reference_from_first_generation());

@@ -13,13 +13,14 @@
 #include "mtcs/opt/rng.h"
 #include "mtcs/run/session.h"
 #include "support/scratch_file.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 
 namespace {
 
 // The plate scored by wall distances: these runs optimise, and the temperatures would make them ~50x slower.
-const std::string kMold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";
+const std::string kMold = MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml";
 
 // mtcs ARGS in this process, through the cli library (the command's own code path).
 int run_in_process(std::vector<std::string> args) {
@@ -124,7 +125,7 @@ TEST_CASE("SMS-EMOA on the mold: same seed, same populations, with 1 thread or 2
 }
 
 TEST_CASE("run config fidelity: the screen scores by its tier, evaluate by the spec's", "[run][session][fidelity]") {
-  const std::string block = MTCS_SOURCE_DIR "/molds/thermal_block.yaml";
+  const std::string block = MTCS_SOURCE_DIR + "/molds/thermal_block.yaml";
   const run::Session plain(mold::load_mold_spec(block), run::RunOverrides{});
   mold::MoldSpec t1_spec = mold::load_mold_spec(block);
   t1_spec.thermal.tier = mold::ThermalTier::T1;

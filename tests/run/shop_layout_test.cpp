@@ -10,6 +10,7 @@
 #include "mtcs/run/session.h"
 #include "mtcs/run/shop_layout.h"
 #include "support/scratch_file.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 using geometry::Vec3;
@@ -17,7 +18,7 @@ using geometry::Vec3;
 TEST_CASE("issue 16: a best layout at a clearance's limit is not written infeasible by the 0.01 mm rounding", "[run][issue16]") {
   // The wall-distance plate (cavity bottom at z = 105) with bore_cavity 10.003 mm: a 10 mm bore
   // may reach z = 105 - 5 - 10.003 = 89.997.
-  std::ifstream in(MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml");
+  std::ifstream in(MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml");
   std::stringstream text;
   text << in.rdbuf();
   std::string spec = text.str();

@@ -13,6 +13,7 @@
 #include "mtcs/opt/forwarding_problem.h"
 #include "mtcs/opt/sms_emoa.h"
 #include "mtcs/run/session.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 
@@ -75,8 +76,8 @@ TEST_CASE("ES, SMS-EMOA: infeasible children of feasible parents skip their obje
                                             std::pair<std::string, long>{"plate", 1500});
   const std::string algorithm = GENERATE(std::string("es"), std::string("sms-emoa"), std::string("sms-emoa, lambda 8"));
   INFO(mold << ", " << algorithm);
-  const run::Session full_session(MTCS_SOURCE_DIR "/molds/" + mold + ".yaml"),
-      lazy_session(MTCS_SOURCE_DIR "/molds/" + mold + ".yaml");
+  const run::Session full_session(MTCS_SOURCE_DIR + "/molds/" + mold + ".yaml"),
+      lazy_session(MTCS_SOURCE_DIR + "/molds/" + mold + ".yaml");
   REQUIRE(full_session.problem().penalty_variant() == mold::PenaltyVariant::ConstrainedDomination);
   const Scored full(full_session.problem(), false), lazy(lazy_session.problem(), true);
   const std::size_t m = full_session.spec().objectives.use.size();

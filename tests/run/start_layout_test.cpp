@@ -15,6 +15,7 @@
 #include "mtcs/store/run_store.h"
 #include "cli/stored_run.h"
 #include "support/scratch_file.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 namespace fs = std::filesystem;
@@ -22,8 +23,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // The plate scored by wall distances (fast), and its bundled hand-made layout.
-const std::string kMold = MTCS_SOURCE_DIR "/molds/plate_wall_distance.yaml";
-const std::string kLayout = MTCS_SOURCE_DIR "/molds/plate.layout.yaml";
+const std::string kMold = MTCS_SOURCE_DIR + "/molds/plate_wall_distance.yaml";
+const std::string kLayout = MTCS_SOURCE_DIR + "/molds/plate.layout.yaml";
 
 fs::path scratch(const std::string& name) { return mtcs_test::fresh_scratch_dir("start_layout", name); }
 

@@ -14,6 +14,7 @@
 #include "cli/run_mtcs.h"
 #include "mtcs/io/input_error.h"
 #include "mtcs/store/run_store.h"
+#include "support/paths.h"
 
 using mtcs::io::InputError;
 using mtcs::store::RunStore;
@@ -201,7 +202,7 @@ TEST_CASE("run store faults: mtcs replay and optimize --resume exit 2 on a corru
 // open's check (exit 1, no file named) instead of InputError.
 TEST_CASE("run store defect: a malformed page met after the quick check is bad input", "[store][faults][fuzz-defect]") {
   const fs::path p = fresh("fuzz_malformed");
-  fs::copy_file(MTCS_TEST_DATA "/store/fuzz_malformed_meta.sqlite", p);
+  fs::copy_file(MTCS_TEST_DATA + "/store/fuzz_malformed_meta.sqlite", p);
   CHECK_THAT(refused(p), Catch::Contains("run store"));
 }
 
@@ -214,7 +215,7 @@ TEST_CASE("run store faults: mtcs optimize on a run in use is refused, exit 2, '
     auto r = mtcs_test::run_mtcs_err("store_faults", "optimize --resume " + dir.string());
     CHECK(r.code == 2);
     CHECK_THAT(r.err, Catch::Contains("the run is in use"));
-    r = mtcs_test::run_mtcs_err("store_faults", "optimize " MTCS_SOURCE_DIR "/molds/plate.yaml --out " + dir.string());
+    r = mtcs_test::run_mtcs_err("store_faults", "optimize " + MTCS_SOURCE_DIR + "/molds/plate.yaml --out " + dir.string());
     CHECK(r.code == 2);
     CHECK_THAT(r.err, Catch::Contains("in use"));
   }

@@ -18,6 +18,7 @@
 #include <string>
 
 #include "mtcs/mesh/triangle_mesh.h"
+#include "support/paths.h"
 
 using namespace mtcs::thermal;
 
@@ -52,7 +53,7 @@ struct Reference {
 };
 
 Reference patch_samples(const Vec3& shift = Vec3::Zero()) {
-  std::ifstream in(MTCS_TEST_DATA "/thermal/patch_samples.csv");
+  std::ifstream in(MTCS_TEST_DATA + "/thermal/patch_samples.csv");
   REQUIRE(in);
   Reference r;
   std::string line;

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "mtcs/thermal/line_sinks.h"
+#include "support/paths.h"
 
 using namespace mtcs::thermal;
 using mtcs::geometry::Segment;
@@ -53,7 +54,7 @@ struct Reference {
 };
 
 Reference patch_reference() {
-  std::ifstream in(MTCS_TEST_DATA "/thermal/patch_samples.csv");
+  std::ifstream in(MTCS_TEST_DATA + "/thermal/patch_samples.csv");
   REQUIRE(in);
   std::string line;
   std::getline(in, line);  // header x,y,z,T
@@ -153,7 +154,7 @@ struct ClosedFormRow {
 };
 
 std::vector<ClosedFormRow> closed_forms() {
-  std::ifstream in(MTCS_TEST_DATA "/thermal/closed_form_2d.csv");
+  std::ifstream in(MTCS_TEST_DATA + "/thermal/closed_form_2d.csv");
   REQUIRE(in);
   std::string line;
   std::getline(in, line);

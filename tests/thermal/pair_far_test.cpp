@@ -18,6 +18,7 @@
 
 #include "mtcs/thermal/line_sinks.h"
 #include "rank_statistics.h"
+#include "support/paths.h"
 
 using namespace mtcs::thermal;
 using mtcs::geometry::Segment;
@@ -48,7 +49,7 @@ struct Patch {
 };
 
 Patch patch_reference() {
-  std::ifstream in(MTCS_TEST_DATA "/thermal/patch_samples.csv");
+  std::ifstream in(MTCS_TEST_DATA + "/thermal/patch_samples.csv");
   REQUIRE(in);
   std::string line;
   std::getline(in, line);

@@ -10,6 +10,7 @@
 #include "support/scratch_file.h"
 #include "support/thrown_by.h"
 #include "voxel/case_files.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 using namespace mtcs::voxel;

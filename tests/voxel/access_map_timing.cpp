@@ -12,6 +12,7 @@
 #include "bench/bench_access_map.h"
 #include "mtcs/voxel/accessibility_map.h"
 #include "voxel/case_files.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 using namespace mtcs::voxel;

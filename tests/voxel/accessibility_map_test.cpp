@@ -8,6 +8,7 @@
 #include "mtcs/voxel/accessibility_map.h"
 #include "voxel/check_box.h"
 #include "voxel/case_files.h"
+#include "support/paths.h"
 
 using namespace mtcs;
 using namespace mtcs::voxel;

@@ -12,6 +12,7 @@
 #include "mtcs/mesh/mesh_io.h"
 #include "mtcs/voxel/access_case.h"
 #include "mtcs/voxel/octree.h"
+#include "support/paths.h"
 
 namespace mtcs::voxel::testing {
 
