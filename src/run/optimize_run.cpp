@@ -173,8 +173,8 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
     if (outcome.polished->improved) outcome.genome = outcome.polished->genome, outcome.best = outcome.polished->score;
     if (outcome.polished->improved)
       spdlog::info("polish (COBYLA, {} evaluations): objective {:.6g}", outcome.polished->evaluations, outcome.best.value);
-    else
-      spdlog::warn("polish (COBYLA, {} evaluations) found nothing better than {:.6g}: {}", outcome.polished->evaluations,
+    else  // an outcome, not a fault: --quiet keeps it off the screen (summary.json has it)
+      spdlog::info("polish (COBYLA, {} evaluations) found nothing better than {:.6g}: {}", outcome.polished->evaluations,
                    outcome.best.value, outcome.polished->why_not);
   }
   // What is written is rounded to the tolerance and tidied, and scored as written.
