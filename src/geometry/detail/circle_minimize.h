@@ -111,7 +111,10 @@ CircleMin<R> newton_on_angle(const F& f, R a, R b, R x, EndJets&& end_jets, R to
     sincos_(x, &si, &co);
     const Jet<R> j = f.jet(co, si);
     if (j.f < best.value) best = {j.f, co, si};
-    if (j.d1 == R(0)) break;
+    // A stationary point ends the search only as a minimum: a sample can land exactly on the
+    // crest between two minima closer together than the sample spacing (a rim crossing under
+    // an edge by a sliver, by an axis-parallel pair's symmetry). From a crest, go right.
+    if (j.d1 == R(0) && j.d2 >= R(0)) break;
     const R step = -j.d1 / j.d2;
     if (j.d2 > R(0) && abs_(j.d1 * step) <= tol) {
       // Converged: one last step, kept only if it lowers the value.
