@@ -9,7 +9,7 @@ export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
 export CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
 # -O1 and line tables only (what OSS-Fuzz builds with): stack traces keep file:line, and a cold
 # build takes ~2.5x less than -O2 -g (experiments/ci/README.md). MTCS_ASAN_CXX=clang++-14
-# compiles it in 0.67x the time, but is not the default yet: its other random test cases find
+# compiles it in 0.67x the time, but is not the default yet: its other random test cases found
 # defects (experiments/ci/README.md, "The sanitizer tree with clang").
 CXX_ASAN="$(command -v "${MTCS_ASAN_CXX:-c++}")"
 # A tree configured with another compiler cannot switch: it starts over.
