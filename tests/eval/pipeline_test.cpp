@@ -18,6 +18,7 @@
 #include "mtcs/mesh/bvh.h"
 #include "mtcs/mesh/mesh_io.h"
 #include "support/paths.h"
+#include "support/random_draws.h"
 
 using namespace mtcs;
 using geometry::Vec3;
@@ -128,7 +129,7 @@ TEST_CASE("pipeline: the thermal proxy agrees with a Monte Carlo estimate", "[ev
   for (int i = 0; i < n; ++i) {
     const double pick = u(rng) * (areas[0] + areas[1] + areas[2]);
     const int k = pick < areas[0] ? 0 : (pick < areas[0] + areas[1] ? 1 : 2);
-    Vec3 p = plate.min + Vec3(u(rng), u(rng), u(rng)).cwiseProduct(size);
+    Vec3 p = plate.min + mtcs_test::draw_vec3(u, rng).cwiseProduct(size);
     p[k] = u(rng) < 0.5 ? plate.min[k] : plate.max[k];
     double best = 1e9;
     for (const double x : {100.0, 200.0}) best = std::min(best, Vec3(p.x() - x, 0, p.z() - 88).norm() - 4);

@@ -8,6 +8,7 @@
 
 #include "bench/fcl_peer.h"
 #include "mtcs/geometry/cylinder_distance.h"
+#include "support/random_draws.h"
 
 using namespace mtcs::geometry;
 
@@ -129,7 +130,7 @@ TEST_CASE("stiff: degenerate and extreme inputs stay finite", "[geometry][cylind
 TEST_CASE("random pairs: agree with the naive baseline and with FCL", "[geometry][cylinder][oracle]") {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-5, 5), r(0.05, 2);
-  auto v = [&] { return Vec3(u(rng), u(rng), u(rng)); };
+  auto v = [&] { return mtcs_test::draw_vec3(u, rng); };
   int naive_bad = 0, fcl_bad = 0;
   for (int i = 0; i < 3000; ++i) {
     const Cylinder a{v(), v(), r(rng)}, b{v(), v(), r(rng)};

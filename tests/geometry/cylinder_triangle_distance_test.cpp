@@ -8,6 +8,7 @@
 #include <random>
 
 #include "mtcs/geometry/cylinder_triangle_distance.h"
+#include "support/random_draws.h"
 
 using namespace mtcs::geometry;
 
@@ -108,7 +109,7 @@ TEST_CASE("cylinder-triangle upper bound", "[geometry][cylinder_triangle]") {
 TEST_CASE("cylinder-triangle random and stiff cases against the convex reference", "[geometry][cylinder_triangle]") {
   std::mt19937_64 rng(20261123);
   std::uniform_real_distribution<double> u(-1, 1);
-  auto vec = [&] { return Vec3(u(rng), u(rng), u(rng)); };
+  auto vec = [&] { return mtcs_test::draw_vec3(u, rng); };
   int checked = 0, touching = 0;
   for (int i = 0; i < 3000; ++i) {
     const double size = std::pow(10.0, 3 * u(rng));  // triangles from 1e-3 to 1e3
@@ -162,7 +163,7 @@ TEST_CASE("cylinder-triangle inside certified bounds from a dense grid", "[geome
   // [min over the grid - that radius, min over the grid] holds the true distance.
   std::mt19937_64 rng(61);
   std::uniform_real_distribution<double> u(-1, 1);
-  auto vec = [&] { return Vec3(u(rng), u(rng), u(rng)); };
+  auto vec = [&] { return mtcs_test::draw_vec3(u, rng); };
   constexpr int N = 400;
   int separated = 0;
   for (int i = 0; i < 150; ++i) {

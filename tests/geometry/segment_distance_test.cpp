@@ -6,6 +6,7 @@
 #include <random>
 
 #include "mtcs/geometry/segment_distance.h"
+#include "support/random_draws.h"
 
 using namespace mtcs::geometry;
 
@@ -77,7 +78,7 @@ TEST_CASE("segments: near-parallel axes down to 1e-12 rad, offset by 1e6", "[geo
 TEST_CASE("segments: random pairs agree with the golden-section oracle", "[geometry][segment]") {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-10, 10);
-  auto v = [&] { return Vec3(u(rng), u(rng), u(rng)); };
+  auto v = [&] { return mtcs_test::draw_vec3(u, rng); };
   for (int i = 0; i < 2000; ++i) {
     Segment a{v(), v()}, b{v(), v()};
     if (i % 4 == 1) b.p1 = b.p0 + (a.p1 - a.p0) * 0.7;                      // parallel

@@ -16,6 +16,7 @@
 #include "mtcs/mesh/interference.h"
 #include "mtcs/mesh/mesh_io.h"
 #include "support/paths.h"
+#include "support/random_draws.h"
 
 using namespace mtcs;
 using geometry::Vec3;
@@ -150,7 +151,7 @@ TEST_CASE("interference: verdicts equal CGAL's PMP::do_intersect on random place
   std::uniform_real_distribution<double> u(-0.6, 0.6);
   int hits = 0;
   for (int i = 0; i < 30; ++i) {
-    const TriangleMesh b = moved(b0, Vec3(u(rng), u(rng), u(rng)));
+    const TriangleMesh b = moved(b0, mtcs_test::draw_vec3(u, rng));
     const bool want = CGAL::Polygon_mesh_processing::do_intersect(ca, to_cgal(b));
     const auto pairs = mesh::intersecting_pairs(ba, bvh(b));
     CHECK(!pairs.empty() == want);
@@ -259,8 +260,8 @@ TEST_CASE("interference: surface distance equals brute force over all triangle p
   for (int i = 0; i < 12; ++i) {
     const double size = i % 2 ? 3.0 : 0.05;
     TriangleMesh box = mesh::box_mesh({{0, 0, 0}, {size, size * 0.7, size * 0.4}});
-    const Eigen::Matrix3d r = Eigen::Quaterniond(u(rng), u(rng), u(rng), u(rng)).normalized().toRotationMatrix();
-    const Vec3 at = homer.bounds().max + Vec3(u(rng), u(rng), u(rng)) * 0.6;
+    const Eigen::Matrix3d r = mtcs_test::draw_quaternion(u, rng).normalized().toRotationMatrix();
+    const Vec3 at = homer.bounds().max + mtcs_test::draw_vec3(u, rng) * 0.6;
     for (Vec3& v : box.vertices) v = r * v + at;
     double brute = std::numeric_limits<double>::infinity();
     for (std::size_t a = 0; a < homer.triangles.size(); ++a)

@@ -12,6 +12,7 @@
 #include "mtcs/mesh/bvh.h"
 #include "mtcs/mesh/mesh_io.h"
 #include "support/paths.h"
+#include "support/random_draws.h"
 
 using namespace mtcs;
 using geometry::Cylinder;
@@ -96,7 +97,7 @@ TEST_CASE("mesh clearance equals brute force over every triangle, with either sp
     const double extent = box.size().maxCoeff();
     std::mt19937_64 rng(6);
     std::uniform_real_distribution<double> u(0, 1);
-    auto point = [&] { return Vec3(box.min + (box.size().array() * Vec3(u(rng), u(rng), u(rng)).array()).matrix() * 1.2 - 0.1 * box.size()); };
+    auto point = [&] { return Vec3(box.min + (box.size().array() * mtcs_test::draw_vec3(u, rng).array()).matrix() * 1.2 - 0.1 * box.size()); };
     for (int i = 0; i < 25; ++i) {
       const Cylinder c{point(), point(), extent * (0.005 + 0.03 * u(rng))};
       double brute = std::numeric_limits<double>::infinity();

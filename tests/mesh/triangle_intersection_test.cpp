@@ -10,6 +10,7 @@
 
 #include "mtcs/mesh/exact_predicates.h"
 #include "mtcs/mesh/triangle_intersection.h"
+#include "support/random_draws.h"
 
 using namespace mtcs;
 using mesh::Triangle;
@@ -51,11 +52,11 @@ TEST_CASE("orientation filters agree with CGAL's exact signs", "[mesh][predicate
   std::uniform_real_distribution<double> u(-1, 1);
   int undecided_by_float = 0;
   for (int i = 0; i < 20000; ++i) {
-    const Vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng)), c(u(rng), u(rng), u(rng));
+    const Vec3 a = mtcs_test::draw_vec3(u, rng), b = mtcs_test::draw_vec3(u, rng), c = mtcs_test::draw_vec3(u, rng);
     // d: near the plane of abc (rounded affine combination), or on a lattice of coplanar points.
     const double s = u(rng), t = u(rng);
     Vec3 d = a + s * (b - a) + t * (c - a);
-    if (i % 3 == 0) d += Vec3(u(rng), u(rng), u(rng)) * 1e-17;
+    if (i % 3 == 0) d += mtcs_test::draw_vec3(u, rng) * 1e-17;
     const int want = int(CGAL::orientation(K::Point_3(a.x(), a.y(), a.z()), K::Point_3(b.x(), b.y(), b.z()),
                                            K::Point_3(c.x(), c.y(), c.z()), K::Point_3(d.x(), d.y(), d.z())));
     REQUIRE(mesh::orient3d(a, b, c, d) == want);
@@ -74,7 +75,7 @@ TEST_CASE("triangle-triangle: zero disagreement with CGAL on lattice pairs (copl
   // corners, edges on faces and corners on edges occur by the thousands.
   std::mt19937_64 rng(2);
   std::uniform_int_distribution<int> g(0, 2);
-  auto corner = [&] { return Vec3(g(rng), g(rng), g(rng)); };
+  auto corner = [&] { return mtcs_test::vec3_of([&] { return double(g(rng)); }); };
   int bad = 0, hits = 0, tested = 0;
   for (int i = 0; i < 20000; ++i) {
     const Triangle a{corner(), corner(), corner()}, b{corner(), corner(), corner()};
@@ -94,16 +95,16 @@ TEST_CASE("triangle-triangle: zero disagreement with CGAL on random and near-deg
   std::uniform_real_distribution<double> u(-1, 1);
   int bad = 0;
   for (int i = 0; i < 4000; ++i) {
-    const Eigen::Matrix3d r = Eigen::Quaterniond(u(rng), u(rng), u(rng), u(rng)).normalized().toRotationMatrix();
-    const Vec3 t(u(rng) * 10, u(rng) * 10, u(rng) * 10);
+    const Eigen::Matrix3d r = mtcs_test::draw_quaternion(u, rng).normalized().toRotationMatrix();
+    const Vec3 t = mtcs_test::draw_vec3(u, rng) * 10;
     std::uniform_int_distribution<int> g(0, 2);
-    auto corner = [&] { return move(Vec3(g(rng), g(rng), g(rng)), r, t); };
+    auto corner = [&] { return move(mtcs_test::vec3_of([&] { return double(g(rng)); }), r, t); };
     // Lattice pairs after a rotation: incidences survive only up to rounding.
     const Triangle a{corner(), corner(), corner()}, b{corner(), corner(), corner()};
     bad += disagreements(a, b);
     // Random pairs at the scale of their size.
-    const Triangle c{Vec3(u(rng), u(rng), u(rng)), Vec3(u(rng), u(rng), u(rng)), Vec3(u(rng), u(rng), u(rng))};
-    const Triangle d{Vec3(u(rng), u(rng), u(rng)), Vec3(u(rng), u(rng), u(rng)), Vec3(u(rng), u(rng), u(rng))};
+    const Triangle c{mtcs_test::draw_vec3(u, rng), mtcs_test::draw_vec3(u, rng), mtcs_test::draw_vec3(u, rng)};
+    const Triangle d{mtcs_test::draw_vec3(u, rng), mtcs_test::draw_vec3(u, rng), mtcs_test::draw_vec3(u, rng)};
     bad += disagreements(c, d);
     // Nearly coplanar: d's corners pushed off c's plane by about one ulp.
     const Vec3 n = (c[1] - c[0]).cross(c[2] - c[0]).normalized();
@@ -111,11 +112,11 @@ TEST_CASE("triangle-triangle: zero disagreement with CGAL on random and near-deg
     bad += disagreements(c, Triangle{on_c(), on_c(), on_c()});
     // A corner of one touching the other's face (rounded to double), the rest on one side.
     const Vec3 touch = c[0] + 0.3 * (c[1] - c[0]) + 0.3 * (c[2] - c[0]);
-    bad += disagreements(c, Triangle{touch, touch + n + Vec3(u(rng), u(rng), u(rng)) * 0.3, touch + n * 0.5 + Vec3(u(rng), u(rng), u(rng))});
+    bad += disagreements(c, Triangle{touch, touch + n + mtcs_test::draw_vec3(u, rng) * 0.3, touch + n * 0.5 + mtcs_test::draw_vec3(u, rng)});
     // An edge lying in the other's plane (up to rounding), crossing its boundary.
     const Vec3 e0 = c[0] + u(rng) * (c[1] - c[0]) + u(rng) * (c[2] - c[0]);
     const Vec3 e1 = c[0] + u(rng) * (c[1] - c[0]) + u(rng) * (c[2] - c[0]);
-    bad += disagreements(c, Triangle{e0, e1, e0 + n * u(rng) + Vec3(u(rng), u(rng), u(rng)) * 0.2});
+    bad += disagreements(c, Triangle{e0, e1, e0 + n * u(rng) + mtcs_test::draw_vec3(u, rng) * 0.2});
   }
   CHECK(bad == 0);
 }
@@ -141,8 +142,8 @@ TEST_CASE("triangle-triangle: the common segment lies on both triangles", "[mesh
   std::uniform_real_distribution<double> u(-1, 1);
   int checked = 0;
   for (int i = 0; i < 5000; ++i) {
-    const Triangle a{Vec3(u(rng), u(rng), u(rng)), Vec3(u(rng), u(rng), u(rng)), Vec3(u(rng), u(rng), u(rng))};
-    const Triangle b{Vec3(u(rng), u(rng), u(rng)), Vec3(u(rng), u(rng), u(rng)), Vec3(u(rng), u(rng), u(rng))};
+    const Triangle a{mtcs_test::draw_vec3(u, rng), mtcs_test::draw_vec3(u, rng), mtcs_test::draw_vec3(u, rng)};
+    const Triangle b{mtcs_test::draw_vec3(u, rng), mtcs_test::draw_vec3(u, rng), mtcs_test::draw_vec3(u, rng)};
     const auto r = mesh::intersect_triangles(a, b);
     const auto x = CGAL::intersection(cgal(a), cgal(b));
     REQUIRE(r.intersects == bool(x));

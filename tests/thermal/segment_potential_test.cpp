@@ -9,6 +9,7 @@
 #include <random>
 #include <vector>
 #include <cstdio>
+#include "support/random_draws.h"
 
 using namespace mtcs::thermal;
 
@@ -199,8 +200,10 @@ TEST_CASE("triangle potential: the one-atan2 solid angle against two atans per e
   double worst = 0;
   std::vector<double> errors;
   for (int k = 0; k < 20000; ++k) {
-    Vec3 a(u(rng), u(rng), u(rng) * 0.1), b(u(rng), u(rng), u(rng) * 0.1), c(u(rng), u(rng), u(rng) * 0.1);
-    Vec3 s(u(rng), u(rng), u(rng));
+    const Vec3 flat(1, 1, 0.1);
+    Vec3 a = mtcs_test::draw_vec3(u, rng).cwiseProduct(flat), b = mtcs_test::draw_vec3(u, rng).cwiseProduct(flat),
+         c = mtcs_test::draw_vec3(u, rng).cwiseProduct(flat);
+    Vec3 s = mtcs_test::draw_vec3(u, rng);
     const Vec3 n = (b - a).cross(c - a).normalized();
     switch (k % 5) {
       case 1: s -= (s - a).dot(n) * n - 1e-9 * u(rng) * n; break;     // in the plane, nearly
@@ -289,7 +292,7 @@ TEST_CASE("element fields: the far expansion keeps its stated error bound") {
     // Points around the channel at distances where the nearest element centre is h / ratio.. 3 h / ratio.
     std::vector<Vec3> pts;
     while (pts.size() < 2000) {
-      const Vec3 p = axis.p0 + 0.5 * axis.length * axis.u + Vec3(u(rng), u(rng), u(rng)) * (4 * h / ratio + 0.5 * axis.length);
+      const Vec3 p = axis.p0 + 0.5 * axis.length * axis.u + mtcs_test::draw_vec3(u, rng) * (4 * h / ratio + 0.5 * axis.length);
       double dmin = 1e300;
       for (int e = 0; e < m; ++e) dmin = std::min(dmin, (p - (axis.p0 + (e + 0.5) * axis.element_length * axis.u)).norm());
       if (dmin >= h / ratio * 1.001 && dmin <= 3 * h / ratio) pts.push_back(p);
