@@ -9,6 +9,7 @@
 #include "mtcs/io/pairs_csv.h"
 #include "mtcs/geometry/cylinder_distance.h"
 #include "support/paths.h"
+#include "support/random_draws.h"
 
 using namespace mtcs::geometry;
 using mtcs::io::CylinderPair;
@@ -95,9 +96,9 @@ TEST_CASE("certified pairs: symmetric and invariant under rigid motions", "[geom
 
     // Motions keep the pair's scale; a pair within 1e-9 S of contact may flip its verdict under
     // the rounding of the moved coordinates, so only the distance is compared.
-    const Eigen::Vector3d axis = Eigen::Vector3d(gauss(rng), gauss(rng), gauss(rng)).normalized();
+    const Eigen::Vector3d axis = mtcs_test::draw_vec3(gauss, rng).normalized();
     const RigidMotion m{Eigen::AngleAxisd(gauss(rng), axis).toRotationMatrix(),
-                        Vec3(gauss(rng), gauss(rng), gauss(rng)) * 100};
+                        mtcs_test::draw_vec3(gauss, rng) * 100};
     const auto t = distance(m(p.a), m(p.b));
     const double moved_err = error_to_interval(p, t.distance);
     // Rotating coordinates of size |c| perturbs them by ~1e-16 |c|; allow for it.

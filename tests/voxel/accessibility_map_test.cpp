@@ -9,6 +9,7 @@
 #include "voxel/check_box.h"
 #include "voxel/case_files.h"
 #include "support/paths.h"
+#include "support/random_draws.h"
 
 using namespace mtcs;
 using namespace mtcs::voxel;
@@ -76,7 +77,7 @@ TEST_CASE("every method equals a brute force over all solid voxels on small grid
       std::uniform_real_distribution<double> U(-32, 32);
       int pivots = 0;
       while (pivots < 4) {
-        const Vec3 pivot(U(rng), U(rng), U(rng));
+        const Vec3 pivot = mtcs_test::draw_vec3(U, rng);
         if (tree.touches_solid(pivot)) continue;
         ++pivots;
         const Tool tool = pivots % 2 ? Tool{{0, 60, 4}} : Tool{{0, 10, 2}, {10, 60, 6}};

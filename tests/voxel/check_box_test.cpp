@@ -7,6 +7,7 @@
 
 #include "mtcs/geometry/cylinder_box_distance.h"
 #include "voxel/check_box.h"
+#include "support/random_draws.h"
 
 using namespace mtcs;
 using namespace mtcs::voxel;
@@ -84,12 +85,12 @@ TEST_CASE("CheckBox agrees with the cylinder-box distance kernel away from conta
   std::uniform_real_distribution<double> U(-1, 1), R(0, 3);
   int far = 0, deep = 0;
   for (int n = 0; n < 20000; ++n) {
-    const Vec3 pivot(U(rng), U(rng), U(rng)), dir(U(rng), U(rng), U(rng));
+    const Vec3 pivot = mtcs_test::draw_vec3(U, rng), dir = mtcs_test::draw_vec3(U, rng);
     if (dir.norm() < 0.1) continue;
     const double a = R(rng), len = R(rng) * 2, r = R(rng);
     const Tool tool{{a, a + len, r}};
-    const Vec3 lo(3 * U(rng), 3 * U(rng), 3 * U(rng));
-    const Box b{lo, lo + Vec3(R(rng), R(rng), R(rng))};
+    const Vec3 lo = 3 * mtcs_test::draw_vec3(U, rng);
+    const Box b{lo, lo + mtcs_test::draw_vec3(R, rng)};
     const Vec3 u = dir.normalized();
     const geometry::Cylinder cyl{pivot + a * u, pivot + (a + len) * u, r};
     const double dist = geometry::distance(cyl, b).distance;
