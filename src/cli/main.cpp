@@ -7,6 +7,7 @@
 #include "log.h"
 #include "mtcs/cli/commands.h"
 #include "mtcs/io/input_error.h"
+#include "mtcs/version.h"
 #include "option_error.h"
 
 int main(int argc, char** argv) {
@@ -22,7 +23,7 @@ int main(int argc, char** argv) {
   // Listed for --help only: main() hands "bench ..." to mtcs-bench before parsing.
   app.add_subcommand("bench", "Benchmarks of the kernels, against peers measured in the same run (runs mtcs-bench;\n"
                               "'mtcs bench --help' lists them).");
-  app.set_version_flag("--version", "mtcs 0.1.0");
+  app.set_version_flag("--version", mtcs::kProgram);
 
   const std::vector<mtcs::cli::Command> commands{
       mtcs::cli::add_optimize_command(app),

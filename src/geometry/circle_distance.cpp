@@ -26,9 +26,8 @@ CircleClosest run(const Circle& c, const detail::CylFrame<double>& other, double
   const detail::CircleInFrame<double> in(from_eigen<double>(c.center), c.radius, u, v, other);
   auto f = [&](double co, double si) { return metric(in.axial(co, si), in.radial(co, si)); };
   const double inf = std::numeric_limits<double>::infinity();
-  const double tol = q.tolerance * std::max(1.0, scale);
-  const auto m = detail::refine_between_samples<double>(
-      f, c.radius, detail::minimize_on_circle<double>(f, c.radius, inf, -inf, tol), tol);
+  const auto m = detail::minimize_on_circle<double>(f, c.radius, inf, -inf, q.tolerance * std::max(1.0, scale),
+                                                    /*between_samples=*/true);
   const V x = from_eigen<double>(c.center) + c.radius * (m.cos_t * u + m.sin_t * v);
   return {m.value, detail::to_eigen(x), closest(other, x)};
 }

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 
 #include <APIHeaderSection_MakeHeader.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
@@ -23,6 +24,7 @@
 #include <gp_Ax2.hxx>
 
 #include "mtcs/report/layout_export.h"
+#include "mtcs/version.h"
 
 namespace mtcs::report {
 
@@ -52,7 +54,7 @@ void write_step(const std::string& path, const mold::Layout& layout) {
     APIHeaderSection_MakeHeader header(writer.ChangeWriter().Model());
     header.SetAuthorValue(1, new TCollection_HAsciiString("mtcs"));
     header.SetOrganizationValue(1, new TCollection_HAsciiString("mtcs cooling bores"));
-    header.SetOriginatingSystem(new TCollection_HAsciiString("mtcs 0.1.0 (OpenCASCADE)"));
+    header.SetOriginatingSystem(new TCollection_HAsciiString((std::string(kProgram) + " (OpenCASCADE)").c_str()));
     header.SetAuthorisation(new TCollection_HAsciiString(""));
     header.SetName(new TCollection_HAsciiString(std::filesystem::path(path).filename().string().c_str()));
     // Beside the target, then renamed: nothing half-written under the name asked for.

@@ -170,12 +170,13 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
   outcome.interrupted = stored.interrupted;
   if (polish_budget > 0 && !stored.interrupted) {
     outcome.polished = polish(problem, scene, outcome.genome, polish_budget);
-    if (outcome.polished->improved) outcome.genome = outcome.polished->genome, outcome.best = outcome.polished->score;
-    if (outcome.polished->improved)
+    if (outcome.polished->improved) {
+      outcome.genome = outcome.polished->genome, outcome.best = outcome.polished->score;
       spdlog::info("polish (COBYLA, {} evaluations): objective {:.6g}", outcome.polished->evaluations, outcome.best.value);
-    else  // an outcome, not a fault: --quiet keeps it off the screen (summary.json has it)
+    } else {  // an outcome, not a fault: --quiet keeps it off the screen (summary.json has it)
       spdlog::info("polish (COBYLA, {} evaluations) found nothing better than {:.6g}: {}", outcome.polished->evaluations,
                    outcome.best.value, outcome.polished->why_not);
+    }
   }
   // What is written is rounded to the tolerance and tidied, and scored as written.
   outcome.genome = shop_layout(problem, scene, outcome.genome);

@@ -10,6 +10,7 @@
 #include "mtcs/io/atomic_file.h"
 #include "mtcs/io/input_error.h"
 #include "mtcs/run/session.h"
+#include "mtcs/version.h"
 
 namespace mtcs::run {
 namespace {
@@ -74,7 +75,7 @@ RunMeta mold_run_meta(const std::string& mold_path, const Session& session) {
           {"config", session.config().to_yaml(session.objective_names())},
           {"seed", std::to_string(session.config().es.seed)},
           {"objectives", objectives},
-          {"program", "mtcs 0.1.0"}};
+          {"program", kProgram}};
 }
 
 std::string start_text(const std::vector<opt::Genotype>& start) {

@@ -8,6 +8,7 @@
 #include "mtcs/opt/hypervolume.h"
 #include "mtcs/opt/sms_emoa.h"
 #include "mtcs/store/run_store.h"
+#include "mtcs/version.h"
 
 namespace mtcs::run {
 
@@ -27,7 +28,7 @@ TestProblemRun run_test_problem(const opt::Problem& problem, const std::string& 
     db = store::RunStore::create(store_path, {{"problem", name},
                                               {"algorithm", "sms-emoa"},
                                               {"seed", std::to_string(seed)},
-                                              {"program", "mtcs 0.1.0"}});
+                                              {"program", kProgram}});
   const opt::SmsEmoa sms(problem, c);
   const auto t0 = std::chrono::steady_clock::now();
   auto since_start = [&] {

@@ -153,8 +153,14 @@ CircleMin<R> newton_on_angle(const F& f, R a, R b, R x, EndJets&& end_jets, R to
 // Minimum of f over the circle. `radius` is the circle's radius (the Lipschitz constant per
 // radian), `best` a value the caller already has (refinement is skipped where it cannot win),
 // `stop_below` ends the search as soon as a value below it is found, `tol` the absolute error.
+// `between_samples`: also search the intervals between samples that the Lipschitz bound
+// (f_k + f_k+1 - r h) / 2 cannot clear. One can hold a basin narrower than the spacing that no
+// discrete minimum leads to (two minima 0.4 rad apart, only the shallower one a discrete minimum
+// of the samples): sampled 8 times finer, those samples' discrete minima refined by Brent. The
+// circle distances take it; the solid-cylinder kernel does not, as its time with it is not
+// measured yet and against FCL it has shown no miss (experiments/ci/README.md).
 template <class R, class F>
-CircleMin<R> minimize_on_circle(F&& f, R radius, R best, R stop_below, R tol) {
+CircleMin<R> minimize_on_circle(F&& f, R radius, R best, R stop_below, R tol, bool between_samples = false) {
   const auto& table = circle_sample_table<R>();
   std::array<R, kCircleSamples> fs;
   if constexpr (requires { f.sample(table.cos, table.sin, fs); }) {
@@ -201,47 +207,30 @@ CircleMin<R> minimize_on_circle(F&& f, R radius, R best, R stop_below, R tol) {
       m = brent_on_angle<R>(f, x - h, x + h, x, fs[k], xtol, max_iter);
     }
     if (m.value < result.value) result = m;
-    if (result.value < stop_below) break;
+    if (result.value < stop_below) return result;
   }
-  return result;
-}
-
-// The intervals between minimize_on_circle's samples can hold a basin narrower than the
-// spacing that no refinement searched: two minima 0.4 rad apart, say, only the shallower one a
-// discrete minimum of the samples. Where the Lipschitz bound (f_k + f_k+1 - r h) / 2 leaves room
-// below `found`, the interval is sampled 8 times finer and those samples' discrete minima are
-// refined by Brent. A safeguard for callers whose time allows 24 more evaluations and a few
-// refinements (the circle distances); the solid-cylinder kernel does not take it: there it would
-// cost time not measured yet, and against FCL it has shown no miss (experiments/ci/README.md).
-template <class R, class F>
-CircleMin<R> refine_between_samples(F&& f, R radius, CircleMin<R> found, R tol) {
-  if (!(radius > R(0))) return found;
-  const auto& table = circle_sample_table<R>();
-  std::array<R, kCircleSamples> fs;
-  for (int k = 0; k < kCircleSamples; ++k) fs[k] = f(table.cos[k], table.sin[k]);
-  const R h = R(2) * R(3.14159265358979323846264338327950288L) / R(kCircleSamples);
+  if (!between_samples) return result;
   constexpr int kFiner = 8;
   const R hf = h / R(kFiner);
-  const R xtol = max_(tol / radius, R(4) * Limits<R>::epsilon());
   for (int k = 0; k < kCircleSamples; ++k) {
     const R fa = fs[k], fb = fs[(k + 1) % kCircleSamples];
-    if (!((fa + fb - radius * h) / R(2) < found.value - tol)) continue;
+    if (!((fa + fb - slack) / R(2) < min_(best, result.value) - tol)) continue;
     std::array<R, kFiner + 1> g;
     g[0] = fa, g[kFiner] = fb;
     for (int j = 1; j < kFiner; ++j) {
       R si, co;
       sincos_(h * R(k) + hf * R(j), &si, &co);
       g[j] = f(co, si);
-      if (g[j] < found.value) found = {g[j], co, si};
+      if (g[j] < result.value) result = {g[j], co, si};
     }
     for (int j = 1; j < kFiner; ++j) {
       if (!(g[j] < g[j - 1] && g[j] <= g[j + 1])) continue;
       const R x = h * R(k) + hf * R(j);
-      const CircleMin<R> m = brent_on_angle<R>(f, x - hf, x + hf, x, g[j], xtol, 200);
-      if (m.value < found.value) found = m;
+      const CircleMin<R> m = brent_on_angle<R>(f, x - hf, x + hf, x, g[j], xtol, max_iter);
+      if (m.value < result.value) result = m;
     }
   }
-  return found;
+  return result;
 }
 
 }  // namespace mtcs::geometry::detail
