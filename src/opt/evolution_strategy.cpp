@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <numeric>
 
 namespace mtcs::opt {
@@ -107,6 +108,9 @@ Generation EvolutionStrategy::step(const Generation& prev_generation) const {
   std::vector<Individual> offspring(static_cast<std::size_t>(lambda));
   std::vector<Genotype> xs(static_cast<std::size_t>(lambda));
   long spent_by_moves = 0;  // evaluations the mutations themselves made (the budget counts them)
+  // What the budget holds for this generation: lambda offspring, and the moves' spending.
+  const long left = config_.moves_within_budget ? config_.evaluations - prev_generation.evaluations - spent_by_restart
+                                                : std::numeric_limits<long>::max() / 2;
   for (int i = 0; i < lambda; ++i) {
     Rng rng = Rng::for_individual(config_.seed, std::uint64_t(prev.index + 1), std::uint64_t(i));
     if (config_.random_search) {
@@ -150,7 +154,7 @@ Generation EvolutionStrategy::step(const Generation& prev_generation) const {
       if (angle < -kPi) angle += 2 * kPi;
       child.steps[k] = angle;
     }
-    spent_by_moves += problem_.mutate(child.x, child.steps, rng);
+    spent_by_moves += problem_.mutate_within(child.x, child.steps, rng, left - lambda - spent_by_moves);
     xs[std::size_t(i)] = child.x;
     offspring[std::size_t(i)] = std::move(child);
   }

@@ -3,6 +3,7 @@
 #include "sms_fronts.h"
 
 #include <algorithm>
+#include <limits>
 #include <mutex>
 #include <numeric>
 
@@ -39,7 +40,9 @@ void SmsEmoa::advance(Generation& g) const {
     Individual& child = children[std::size_t(k)];
     child.x = problem_.recombine(a.x, b.x, rng);
     child.steps = a.steps;
-    spent_by_moves += problem_.mutate(child.x, child.steps, rng);
+    const long may_spend = config_.moves_within_budget ? config_.evaluations - g.evaluations - lambda - spent_by_moves
+                                                       : std::numeric_limits<long>::max() / 2;
+    spent_by_moves += problem_.mutate_within(child.x, child.steps, rng, may_spend);
   }
   // The reduction drops lambda members and takes the infeasible ones first, the most violated
   // first: while every parent is feasible no child behind them is kept, and the problem may

@@ -73,6 +73,9 @@ class Island {
   static Config config(Config c, int index, int islands) {
     c.seed = opt::island_seed(c.seed, index);
     c.evaluations /= islands;
+    // With others, an island's share counts its offspring alone (done, above): its moves'
+    // evaluations come on top, as the islands end together whatever each one's moves spent.
+    c.moves_within_budget = islands == 1;
     return c;
   }
   opt::EvolutionStrategy es_;

@@ -133,11 +133,23 @@ void MoldProblem::repair(mold::Circuit& c) const {
   snap(c.waypoints.back(), spec_.circuits.outlet_faces);
 }
 
+namespace {
+// The reach move's tries per diameter (two diameters at most), and the constraint check after.
+constexpr int kReachTries = 12;
+constexpr long kReachSpendsAtMost = 2 * kReachTries + 1;
+}  // namespace
+
 long MoldProblem::mutate(opt::Genotype& x, const std::vector<double>& steps, opt::Rng& rng) const {
+  return mutate_within(x, steps, rng, std::numeric_limits<long>::max());
+}
+
+long MoldProblem::mutate_within(opt::Genotype& x, const std::vector<double>& steps, opt::Rng& rng,
+                                long may_spend) const {
   mold::Genome g = genome(x);
   // The reach move alone: a child that moves other holes too would lose a narrow window it found.
   long spent = 0;
-  if (reach_ && !reach_->empty() && rng.uniform() < rates_.reach && reach_worst(g, rng, spent)) {
+  if (reach_ && !reach_->empty() && rng.uniform() < rates_.reach && may_spend >= kReachSpendsAtMost &&
+      reach_worst(g, rng, spent)) {
     x = encode(g);
     return spent;
   }
@@ -318,7 +330,7 @@ bool MoldProblem::reach_worst(mold::Genome& g, opt::Rng& rng, long& evaluations)
   // A drill at random, then the smallest (it fits the narrowest windows).
   const auto& diameters = spec_.drilling.diameters;
   ReachRequest request{worst.point, worst.wall_distance, diameters[std::size_t(rng.below(int(diameters.size())))],
-                       12, region_};
+                       kReachTries, region_};
   Reached c = circuit_reaching(pipeline_, request, [this](mold::Circuit& k) { repair(k); }, rng);
   evaluations += c.evaluations;
   const double smallest = *std::min_element(diameters.begin(), diameters.end());

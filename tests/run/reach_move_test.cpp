@@ -18,6 +18,8 @@
 #include "mtcs/geometry/segment_distance.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/scene.h"
+#include "mtcs/opt/evolution_strategy.h"
+#include "mtcs/opt/sms_emoa.h"
 #include "mtcs/run/mold_problem.h"
 #include "mtcs/run/session.h"
 #include "run/reach_move.h"
@@ -180,4 +182,37 @@ TEST_CASE("the reach move gives feasible children nearer the parent's worst samp
   INFO("with " << with << " without " << without << " worst " << worst.point.transpose() << " e " << worst.wall_distance);
   CHECK(with >= 4);
   CHECK(with > without);
+}
+
+TEST_CASE("an ES run whose moves spend evaluations ends within its budget", "[run][reach][budget]") {
+  const mold::MoldSpec spec = trough_spec();
+  const mold::Scene scene(spec);
+  const eval::Pipeline pipeline(scene);
+  run::MutationRates rates;
+  rates.reach = 1;  // every offspring tries the reach move first: up to 25 evaluations each
+  const run::MoldProblem problem(pipeline, {}, rates);
+  long spent_by_moves = 0;
+  for (const long budget : {37L, 50L, 61L, 80L}) {
+    opt::EsConfig config;
+    config.mu = 2, config.lambda = 4, config.evaluations = budget, config.seed = std::uint64_t(budget);
+    const opt::EvolutionStrategy es(problem, config);
+    long generations = 0;
+    const opt::Generation last = opt::run(es, nullptr, [&](const opt::Generation&) { ++generations; });
+    INFO("budget " << budget << " generations " << generations);
+    CHECK(last.evaluations <= budget);
+    CHECK(last.evaluations + config.lambda > budget);  // and not short of it: no room for another generation
+    spent_by_moves += last.evaluations - config.mu - config.lambda * (generations - 1);
+  }
+  CHECK(spent_by_moves > 0);  // the moves did spend: the budget had them to hold
+  // SMS-EMOA, steady state and with lambda offspring per step.
+  for (const int lambda : {1, 4}) {
+    opt::SmsConfig config;
+    config.mu = 3, config.lambda = lambda, config.evaluations = 45, config.seed = std::uint64_t(lambda);
+    config.ref = {1e6, 1e6, 1e9};  // behind every layout: uniformity, worst_covered (mm), cost
+    const opt::SmsEmoa sms(problem, config);
+    opt::Generation g = sms.initial();
+    while (!sms.done(g)) g = sms.step(g);
+    INFO("SMS-EMOA lambda " << lambda);
+    CHECK(g.evaluations <= config.evaluations);
+  }
 }

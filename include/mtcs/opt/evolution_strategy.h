@@ -33,6 +33,9 @@ struct EsConfig {
   bool plus = true;          // (mu + lambda): parents compete with their offspring
   bool recombination = true;
   long evaluations = 20000;  // budget, including the initial population
+  // Whether the evaluations the moves spend (Problem::mutate_within) fit in the budget too: a
+  // move that could pass it is not made. Off: on top of it (the islands of an archipelago).
+  bool moves_within_budget = true;
   std::uint64_t seed = 1;
   double min_step = 1e-300, max_step = 1e300;
   // Baseline: offspring are fresh samples (no inheritance); selection as configured.

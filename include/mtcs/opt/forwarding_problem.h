@@ -20,6 +20,9 @@ class ForwardingProblem : public Problem {
   std::size_t rotation_angles(const Genotype& g) const override { return inner_.rotation_angles(g); }
   std::vector<double> initial_steps(const Genotype& g) const override { return inner_.initial_steps(g); }
   long mutate(Genotype& g, const std::vector<double>& steps, Rng& rng) const override { return inner_.mutate(g, steps, rng); }
+  long mutate_within(Genotype& g, const std::vector<double>& steps, Rng& rng, long may_spend) const override {
+    return inner_.mutate_within(g, steps, rng, may_spend);
+  }
   Genotype recombine(const Genotype& a, const Genotype& b, Rng& rng) const override { return inner_.recombine(a, b, rng); }
   Score evaluate(const Genotype& g) const override { return inner_.evaluate(g); }
   bool better(const Score& a, const Score& b) const override { return inner_.better(a, b); }

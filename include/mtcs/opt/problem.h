@@ -61,6 +61,13 @@ class Problem {
   // valid. Returns the evaluations the move itself spent (a move that scores candidates, like
   // the mold problem's reach move): they count in the optimisers' budgets.
   virtual long mutate(Genotype& g, const std::vector<double>& steps, Rng& rng) const = 0;
+  // mutate, spending at most `may_spend` evaluations (what the budget has left beyond the
+  // offspring still to score): the optimisers call this one, so that a run never passes its
+  // budget. The default: mutate (a problem whose moves spend nothing).
+  virtual long mutate_within(Genotype& g, const std::vector<double>& steps, Rng& rng, long may_spend) const {
+    (void)may_spend;
+    return mutate(g, steps, rng);
+  }
   // Recombination of two parents; the default takes the first.
   virtual Genotype recombine(const Genotype& a, const Genotype& b, Rng& rng) const;
   // Thread-safe.

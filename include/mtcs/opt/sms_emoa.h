@@ -26,6 +26,7 @@ namespace mtcs::opt {
 struct SmsConfig {
   int mu = 100;
   long evaluations = 20000;
+  bool moves_within_budget = true;  // as EsConfig's
   std::uint64_t seed = 1;
   Point ref;                     // reference point for the contributions (and the reported HV)
   bool domcount_then_hv = true;  // false: least contribution only

@@ -59,6 +59,9 @@ class MoldProblem final : public opt::Problem {
   std::size_t dimension(const opt::Genotype& g) const override;
   std::vector<double> initial_steps(const opt::Genotype&) const override { return {initial_step_}; }
   long mutate(opt::Genotype& g, const std::vector<double>& steps, opt::Rng& rng) const override;
+  // The reach move only where `may_spend` covers what it can spend (kReachSpendsAtMost); else
+  // the other moves, after the same draws.
+  long mutate_within(opt::Genotype& g, const std::vector<double>& steps, opt::Rng& rng, long may_spend) const override;
   opt::Genotype recombine(const opt::Genotype& a, const opt::Genotype& b, opt::Rng& rng) const override;
   opt::Score evaluate(const opt::Genotype& g) const override;
   // Under constrained domination an infeasible layout ranks behind a feasible bar: its
