@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <sqlite3.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -125,16 +126,30 @@ void check_store(sqlite3* db, const std::string& path) {
 }
 
 // The advisory lock of a writing store: an open descriptor of "<store>.lock" with flock held.
+// The writer removes the file when it ends (no stray file in a finished run's folder), still
+// holding the lock; so a lock taken on a file no longer at the path is the ended writer's, and
+// the lock is taken again on a fresh file.
 int lock_store(const std::string& path) {
   const std::string lock_path = path + ".lock";
-  const int fd = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd < 0) throw std::runtime_error("run store " + path + ": cannot open its lock file " + lock_path);
-  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+  for (;;) {
+    const int fd = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0) throw std::runtime_error("run store " + path + ": cannot open its lock file " + lock_path);
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+      ::close(fd);
+      throw io::InputError(path, 0, 0, "",
+                           "the run is in use: another process writes this run store (stop it, or wait for it to end)");
+    }
+    struct stat held, named;
+    if (::fstat(fd, &held) == 0 && ::stat(lock_path.c_str(), &named) == 0 && held.st_dev == named.st_dev &&
+        held.st_ino == named.st_ino)
+      return fd;
     ::close(fd);
-    throw io::InputError(path, 0, 0, "",
-                         "the run is in use: another process writes this run store (stop it, or wait for it to end)");
   }
-  return fd;
+}
+
+void unlock_store(const std::string& path, int fd) {
+  ::unlink((path + ".lock").c_str());  // while held: see lock_store
+  ::close(fd);                         // closing drops the flock
 }
 
 bool has_table(sqlite3* db, const char* table) {
@@ -231,7 +246,7 @@ RunStore::~RunStore() {
   prepared_.reset();  // finalized before the close
   run_rows_.reset();
   sqlite3_close(db_);
-  if (lock_fd_ >= 0) ::close(lock_fd_);  // closing drops the flock
+  if (lock_fd_ >= 0) unlock_store(path_, lock_fd_);
 }
 
 bool RunStore::in_use(const std::string& path) {
@@ -246,7 +261,7 @@ RunStore RunStore::create(const std::string& path, const std::map<std::string, s
   const int lock = lock_store(path);
   std::error_code unreadable;
   if (std::filesystem::exists(path, unreadable)) {
-    ::close(lock);
+    unlock_store(path, lock);
     throw io::InputError(path, 0, 0, "", "a run store exists here already");
   }
   RunStore s(nullptr, path, lock);

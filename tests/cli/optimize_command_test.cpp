@@ -37,6 +37,13 @@ TEST_CASE("mtcs optimize writes its results and finds a feasible layout from ran
   REQUIRE(run_mtcs("optimize " + kMold + " --out " + dir.string() + " --seed 3 --evaluations 6000 --quiet") == 0);
   for (const char* f : {"run.sqlite", "best.layout.yaml", "bores.csv", "bores.stl", "summary.json"})
     CHECK(fs::exists(dir / f));
+  // Nothing else: no lock file, journal or temporary left behind by the run's end.
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    INFO(name);
+    CHECK((name == "run.sqlite" || name == "best.layout.yaml" || name == "bores.csv" || name == "bores.stl" ||
+           name == "holes.csv" || name == "summary.json"));
+  }
   std::ifstream in(dir / "summary.json");
   const auto j = nlohmann::json::parse(in);
   CHECK(j["seed"] == 3);
