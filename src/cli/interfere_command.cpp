@@ -39,7 +39,7 @@ TriangleMesh load_solid(const std::string& path) {
 
 // A layout's bores against the mold (--layout): the run module's report, as text or JSON.
 int print_layout_interference(const std::string& mold_path, const std::string& layout_path, bool json) {
-  const run::Session session(mold_path);
+  const run::Session session(mold_path, {}, eval::PipelineScope::constraints);
   const run::LayoutInterference r =
       run::layout_interference(session.pipeline(), session.read_layout(layout_path));
   if (json) run::write_layout_interference_json(std::cout, r, mold_path, layout_path);

@@ -15,7 +15,7 @@ namespace mtcs::run {
 LayoutInterference layout_interference(const eval::Pipeline& pipeline, const mold::Genome& genome) {
   const mold::Scene& scene = pipeline.scene();
   const mold::Layout layout = mold::decode(scene, genome);
-  const eval::Evaluation e = pipeline.evaluate(layout);
+  const eval::Evaluation e = pipeline.constraints(layout);
   LayoutInterference r;
   r.bores = layout.bores.size();
   r.nearest = std::numeric_limits<double>::infinity();

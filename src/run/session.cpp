@@ -29,9 +29,10 @@ std::unique_ptr<const eval::Pipeline> screening_pipeline(const mold::Scene& scen
 
 }  // namespace
 
-Session::Session(mold::MoldSpec spec, const std::function<RunConfig(const std::vector<std::string>&)>& config_for)
+Session::Session(mold::MoldSpec spec, const std::function<RunConfig(const std::vector<std::string>&)>& config_for,
+                 eval::PipelineScope scope)
     : scene_(std::make_unique<const mold::Scene>(std::move(spec))),
-      pipeline_(std::make_unique<const eval::Pipeline>(*scene_)),
+      pipeline_(std::make_unique<const eval::Pipeline>(*scene_, eval::TemperatureSolverFactory{}, scope)),
       names_(pipeline_->objective_names()),
       config_(config_for(names_)),
       screen_pipeline_(screening_pipeline(*scene_, config_)),
@@ -40,8 +41,10 @@ Session::Session(mold::MoldSpec spec, const std::function<RunConfig(const std::v
   ++scenes;
 }
 
-Session::Session(const std::string& mold_path, const RunOverrides& overrides)
-    : Session(mold::load_mold_spec(mold_path), overrides) {}
+Session::Session(const std::string& mold_path, const RunOverrides& overrides, eval::PipelineScope scope)
+    : Session(
+          mold::load_mold_spec(mold_path),
+          [&](const std::vector<std::string>& names) { return resolve_run_config(overrides, names); }, scope) {}
 
 Session::Session(mold::MoldSpec spec, const RunOverrides& overrides)
     : Session(std::move(spec), [&](const std::vector<std::string>& names) { return resolve_run_config(overrides, names); }) {}

@@ -112,6 +112,33 @@ TEST_CASE("pipeline: a stage the scene does not need is not built and leaves no 
   CHECK(e.objectives.size() == 1);
 }
 
+TEST_CASE("pipeline: built for the constraints alone, it has no objective stage and the same violations",
+          "[eval]") {
+  // molds/plate.yaml: temperature objectives (a line-sink model of seconds to build) and cost.
+  const mold::Scene scene(mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate.yaml"));
+  const eval::Pipeline full(scene);
+  const eval::Pipeline clearances(scene, {}, eval::PipelineScope::constraints);
+  const auto all = full.stage_names(), some = clearances.stage_names();
+  for (const auto& name : some) CHECK(std::find(all.begin(), all.end(), name) != all.end());
+  for (const char* objective : {"temperature_t2d", "cost"}) {
+    CHECK(std::find(all.begin(), all.end(), objective) != all.end());
+    CHECK(std::find(some.begin(), some.end(), objective) == some.end());
+  }
+  CHECK(some.size() + 2 == all.size());
+  // A layout through the ejector pin at x = 60, and another under the cavity.
+  const mold::Genome genome{{straight(60, 60), straight(150, 100)}};
+  const mold::Layout layout = mold::decode(scene, genome);
+  const auto a = full.constraints(layout), b = clearances.evaluate(layout);
+  REQUIRE(a.violations.size() >= 2);
+  REQUIRE(a.violations.size() == b.violations.size());
+  for (std::size_t k = 0; k < a.violations.size(); ++k) {
+    CHECK(a.violations[k].kind == b.violations[k].kind);
+    CHECK(a.violations[k].distance == b.violations[k].distance);
+  }
+  CHECK(a.violation == b.violation);
+  for (const double o : b.objectives) CHECK(o == 0);
+}
+
 TEST_CASE("pipeline: the thermal proxy agrees with a Monte Carlo estimate", "[eval]") {
   const mold::Scene scene(mold::load_mold_spec(write("thermal.yaml", plate_spec()).string()));
   const eval::Pipeline pipeline(scene);

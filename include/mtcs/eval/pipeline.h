@@ -24,11 +24,17 @@ class Stage {
   virtual void run(const mold::Layout& layout, Evaluation& out) const = 0;
 };
 
+// What a pipeline is built for: whole evaluations, or the constraints alone (a command that
+// checks a layout's clearances builds no thermal model: seconds on the plate).
+enum class PipelineScope { everything, constraints };
+
 class Pipeline {
  public:
   // The temperature objectives ask the solver `temperatures` builds; by default the one of the
-  // spec's thermal tier (eval/thermal_tiers.h). Tests and benchmarks may pass their own.
-  explicit Pipeline(const mold::Scene& scene, const TemperatureSolverFactory& temperatures = {});
+  // spec's thermal tier (eval/thermal_tiers.h). Tests and benchmarks may pass their own. With
+  // PipelineScope::constraints no objective stage is built: the objectives stay 0.
+  explicit Pipeline(const mold::Scene& scene, const TemperatureSolverFactory& temperatures = {},
+                    PipelineScope scope = PipelineScope::everything);
   ~Pipeline();
 
   // Thread-safe: stages hold only data built at construction (and per-thread caches).

@@ -20,7 +20,9 @@ class Session {
  public:
   // The mold spec at `mold_path`, with the run config RUN.yaml and the command line resolve to.
   // Throws io::InputError naming file and field.
-  explicit Session(const std::string& mold_path, const RunOverrides& overrides = {});
+  // `scope`: PipelineScope::constraints for a command that checks clearances only.
+  explicit Session(const std::string& mold_path, const RunOverrides& overrides = {},
+                   eval::PipelineScope scope = eval::PipelineScope::everything);
   // A stored run's config, exactly as stored (YAML text; `origin` names it in errors).
   Session(mold::MoldSpec spec, const std::string& config_yaml, const std::string& origin);
   Session(mold::MoldSpec spec, const RunOverrides& overrides);
@@ -44,7 +46,8 @@ class Session {
   static long scenes_built();
 
  private:
-  Session(mold::MoldSpec spec, const std::function<RunConfig(const std::vector<std::string>&)>& config_for);
+  Session(mold::MoldSpec spec, const std::function<RunConfig(const std::vector<std::string>&)>& config_for,
+          eval::PipelineScope scope = eval::PipelineScope::everything);
 
   std::unique_ptr<const mold::Scene> scene_;
   std::unique_ptr<const eval::Pipeline> pipeline_;
