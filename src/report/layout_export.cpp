@@ -121,7 +121,9 @@ StoredLayout stored_layout(const std::string& run_dir, std::optional<int> genera
   const auto meta = db.meta();
   if (!meta.count("mold")) throw io::InputError(db_path, 0, 0, "", "a test-problem run: no mold layout to export");
   StoredLayout s;
-  s.session = std::make_unique<run::Session>(run::stored_mold_spec(meta, mold_override, &s.note), meta.at("config"), db_path + ":config");
+  // The shop's plan needs the constraints alone (run::shop_layout keeps it feasible): no thermal model.
+  s.session = std::make_unique<run::Session>(run::stored_mold_spec(meta, mold_override, &s.note), meta.at("config"),
+                                             db_path + ":config", eval::PipelineScope::constraints);
   const auto summaries = db.summaries();
   if (summaries.empty()) throw io::InputError(db_path, 0, 0, "generation", "the run stored no generation yet");
   s.generation = generation.value_or(summaries.back().index);

@@ -49,9 +49,12 @@ Session::Session(const std::string& mold_path, const RunOverrides& overrides, ev
 Session::Session(mold::MoldSpec spec, const RunOverrides& overrides)
     : Session(std::move(spec), [&](const std::vector<std::string>& names) { return resolve_run_config(overrides, names); }) {}
 
-Session::Session(mold::MoldSpec spec, const std::string& config_yaml, const std::string& origin)
-    : Session(std::move(spec),
-              [&](const std::vector<std::string>& names) { return parse_stored_run_config(config_yaml, origin, names); }) {}
+Session::Session(mold::MoldSpec spec, const std::string& config_yaml, const std::string& origin,
+                 eval::PipelineScope scope)
+    : Session(
+          std::move(spec),
+          [&](const std::vector<std::string>& names) { return parse_stored_run_config(config_yaml, origin, names); },
+          scope) {}
 
 long Session::scenes_built() { return scenes; }
 

@@ -24,7 +24,8 @@ class Session {
   explicit Session(const std::string& mold_path, const RunOverrides& overrides = {},
                    eval::PipelineScope scope = eval::PipelineScope::everything);
   // A stored run's config, exactly as stored (YAML text; `origin` names it in errors).
-  Session(mold::MoldSpec spec, const std::string& config_yaml, const std::string& origin);
+  Session(mold::MoldSpec spec, const std::string& config_yaml, const std::string& origin,
+          eval::PipelineScope scope = eval::PipelineScope::everything);
   Session(mold::MoldSpec spec, const RunOverrides& overrides);
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
