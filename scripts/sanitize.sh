@@ -8,10 +8,10 @@ export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
 # Debug builds (-g) hash the working folder too unless told not to: clones would never hit.
 export CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
 # -O1 and line tables only (what OSS-Fuzz builds with): stack traces keep file:line, and a cold
-# build takes ~2.5x less than -O2 -g (experiments/ci/README.md). MTCS_ASAN_CXX=clang++-14
-# compiles it in 0.67x the time, but is not the default yet: its other random test cases found
-# defects (experiments/ci/README.md, "The sanitizer tree with clang").
-CXX_ASAN="$(command -v "${MTCS_ASAN_CXX:-c++}")"
+# build takes ~2.5x less than -O2 -g (experiments/ci/README.md). clang++-14 (scripts/setup.sh
+# installs it for the fuzzers) compiles the tree in 0.67x gcc's time; MTCS_ASAN_CXX=c++ builds
+# it with gcc (experiments/ci/README.md, "The sanitizer tree with clang").
+CXX_ASAN="$(command -v "${MTCS_ASAN_CXX:-clang++-14}" || command -v c++)"
 # A tree configured with another compiler cannot switch: it starts over.
 if [ -f build-asan/CMakeCache.txt ] && ! grep -qx "CMAKE_CXX_COMPILER:[A-Z]*=$CXX_ASAN" build-asan/CMakeCache.txt; then
   rm -rf build-asan
