@@ -245,6 +245,13 @@ RunStore::~RunStore() {
   if (db_ && in_transaction_) sqlite3_exec(db_, "COMMIT;", nullptr, nullptr, nullptr);
   prepared_.reset();  // finalized before the close
   run_rows_.reset();
+  // A writer ending leaves the store out of WAL mode (the log checkpointed into it), so that a
+  // reader of the finished run (report, replay, export: read-only) creates no -wal and -shm
+  // beside it that it could not remove. A reader still attached keeps it in WAL mode: no wait.
+  if (db_ && lock_fd_ >= 0) {
+    sqlite3_busy_timeout(db_, 0);
+    sqlite3_exec(db_, "PRAGMA journal_mode=DELETE;", nullptr, nullptr, nullptr);
+  }
   sqlite3_close(db_);
   if (lock_fd_ >= 0) unlock_store(path_, lock_fd_);
 }

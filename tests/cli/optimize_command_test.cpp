@@ -37,7 +37,9 @@ TEST_CASE("mtcs optimize writes its results and finds a feasible layout from ran
   REQUIRE(run_mtcs("optimize " + kMold + " --out " + dir.string() + " --seed 3 --evaluations 6000 --quiet") == 0);
   for (const char* f : {"run.sqlite", "best.layout.yaml", "bores.csv", "bores.stl", "summary.json"})
     CHECK(fs::exists(dir / f));
-  // Nothing else: no lock file, journal or temporary left behind by the run's end.
+  // Nothing else: no lock file, journal or temporary left behind by the run's end, nor by a
+  // reader of the finished run (read-only: a log it opened it could not remove).
+  REQUIRE(run_mtcs("export " + dir.string() + " --format csv --out " + scratch("plain_export.csv").string()) == 0);
   for (const auto& e : fs::directory_iterator(dir)) {
     const std::string name = e.path().filename().string();
     INFO(name);
