@@ -15,11 +15,10 @@ namespace mtcs::eval {
 Pipeline::Pipeline(const mold::Scene& scene, const TemperatureSolverFactory& temperatures, PipelineScope scope)
     : scene_(scene) {
   const mold::MoldSpec& spec = scene.spec();
-  const bool objectives = scope == PipelineScope::everything;
-  const auto& use = spec.objectives.use;
-  auto uses = [&](mold::Objective o) {
-    return objectives && std::find(use.begin(), use.end(), o) != use.end();
-  };
+  // The objectives it builds stages for: none for the constraints alone.
+  const std::vector<mold::Objective> none;
+  const auto& use = scope == PipelineScope::everything ? spec.objectives.use : none;
+  auto uses = [&](mold::Objective o) { return std::find(use.begin(), use.end(), o) != use.end(); };
   // Objectives.
   if ((uses(mold::Objective::Uniformity) || uses(mold::Objective::WorstCovered))) {
     if (!spec.cavity) throw std::invalid_argument("the thermal objectives need a cavity");
@@ -28,7 +27,7 @@ Pipeline::Pipeline(const mold::Scene& scene, const TemperatureSolverFactory& tem
     stages_.push_back(make_thermal_stage(scene, std::move(samples)));
   }
   for (const mold::Objective o : use) {
-    if (!objectives || !mold::is_temperature_objective(o)) continue;
+    if (!mold::is_temperature_objective(o)) continue;
     if (!spec.cavity) throw std::invalid_argument("the temperature objectives need a cavity");
     stages_.push_back(make_temperature_stage(scene, temperatures ? temperatures : temperature_solver(spec.thermal.tier)));
     samples_ = std::max(samples_, thermal_samples(scene).size());

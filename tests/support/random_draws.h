@@ -7,17 +7,16 @@
 
 namespace mtcs_test {
 
-template <class Dist, class Rng>
-Eigen::Vector3d draw_vec3(Dist& d, Rng& rng) {
-  const double x = d(rng), y = d(rng), z = d(rng);
-  return {x, y, z};
-}
-
 // Three values of `next()`, in that order.
 template <class Next>
 Eigen::Vector3d vec3_of(Next&& next) {
   const double x = next(), y = next(), z = next();
   return {x, y, z};
+}
+
+template <class Dist, class Rng>
+Eigen::Vector3d draw_vec3(Dist& d, Rng& rng) {
+  return vec3_of([&] { return d(rng); });
 }
 
 template <class Dist, class Rng>
