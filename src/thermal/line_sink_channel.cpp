@@ -96,6 +96,26 @@ MatrixXd LineSinkModel::Impl::channel_at_rows(const LineSinkCache::ChannelBlock&
                    [&](int i, Eigen::Index c) { return double(acc[std::size_t(c) * T + std::size_t(i)]); });
 }
 
+MatrixXd LineSinkModel::Impl::face_means_of(const ChannelAxis& source) const {
+  if (!options.single_precision || face_set.slots == 0)
+    return face_average * columns_at(source, face_set, options.single_precision, center, options.far_expansion);
+  // Each face's grid points are consecutive targets: their means straight from the float
+  // columns (no targets x columns matrix in double, no product with the mostly empty average).
+  thread_local std::vector<float> acc;
+  float_columns_into(source, face_set, center, options.far_expansion, acc);
+  const std::size_t T = face_set.targets();
+  const int cols = source.elements * kinds;
+  MatrixXd out(Eigen::Index(faces.size()), cols);
+  for (int c = 0; c < cols; ++c)
+    for (std::size_t f = 0, t = 0; f < faces.size(); ++f) {
+      const std::size_t n = faces[f].cool.size();
+      double sum = 0;
+      for (std::size_t i = 0; i < n; ++i, ++t) sum += double(acc[std::size_t(c) * T + t]);
+      out(Eigen::Index(f), c) = sum / double(n);
+    }
+  return out;
+}
+
 std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(const Channel& ch) const {
   auto b = std::make_shared<LineSinkCache::ChannelBlock>();
   b->axis = channel_axis(ch, options.elements);
@@ -132,7 +152,7 @@ std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(
     b->sample_cols_d.assign(at_samples.data(), at_samples.data() + at_samples.size());
   }
   // At the convective faces' grids (means).
-  b->face_means = face_average * columns_at(a, face_set, options.single_precision, center, options.far_expansion);
+  b->face_means = face_means_of(a);
   // Own rows: the own columns, the heat input and the face losses.
   b->self = channel_at_rows(*b, a);
   b->self_dipole.assign(cols, 0.0);

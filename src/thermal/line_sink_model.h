@@ -207,6 +207,8 @@ struct LineSinkModel::Impl {
   // half-differences; wall image slots options.pair_far element lengths or more from an element
   // of the source see it as its multipole expansion (line_sink_fields.h, FarChunks).
   MatrixXd channel_at_rows(const LineSinkCache::ChannelBlock& rows, const ChannelAxis& source) const;
+  // Per convective face, the mean of `source`'s columns over its grid: faces x cols.
+  MatrixXd face_means_of(const ChannelAxis& source) const;
   // Everything of one channel that does not depend on the others (line_sink_channel.cpp).
   std::shared_ptr<LineSinkCache::ChannelBlock> build_channel(const Channel& ch) const;
 };
