@@ -6,7 +6,7 @@
 # Prints CSV: round,binary,seed,evaluations,run_seconds,evaluations_per_second,user_seconds,load1
 # usage: bash experiments/thermal/plate_es_rate.sh OLD_MTCS NEW_MTCS [rounds] [evaluations]
 # OLD_MOLD=, NEW_MOLD= give each binary its own spec (default molds/plate.yaml): one binary, two
-# settings.
+# settings. ALGORITHM=sms-emoa times the SMS-EMOA instead of the ES.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 old=$1 new=$2 rounds=${3:-2} budget=${4:-20000}
@@ -19,7 +19,7 @@ for r in $(seq 1 "$rounds"); do
       [ "$b" = new ] && bin=$new mold=${NEW_MOLD:-molds/plate.yaml}
       rm -rf "$out/run"
       /usr/bin/time -f "%U" -o "$out/user" nice -n 5 "$bin" optimize "$mold" --out "$out/run" --seed "$s" \
-        --threads 1 --evaluations "$budget" > "$out/log" 2>&1
+        --algorithm "${ALGORITHM:-es}" --threads 1 --evaluations "$budget" > "$out/log" 2>&1
       line=$(grep "feasible best\|best layout" "$out/log" | tail -1)
       evals=$(echo "$line" | sed -E 's/.* ([0-9]+) evaluations in ([0-9.]+) s.*/\1/')
       secs=$(echo "$line" | sed -E 's/.* ([0-9]+) evaluations in ([0-9.]+) s.*/\2/')
