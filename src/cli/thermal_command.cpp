@@ -71,9 +71,6 @@ Command add_thermal_command(CLI::App& app) {
             if (opt->cell > 0 && !fd) std::cerr << "mtcs thermal: note: --cell is the finite volumes' (fd) cell: ignored by the line sinks\n";
             if (opt->elements > 0 && (fd || query.tier == mold::ThermalTier::T1))
               std::cerr << "mtcs thermal: note: --elements is t2/t2d's elements per bore: ignored by " << (fd ? "fd" : "t1") << "\n";
-            if (const auto& cavity = session.spec().cavity; cavity && cavity->mesh)
-              std::cerr << "mtcs thermal: the model of a mesh cavity (" << cavity->mesh->mesh.triangles.size()
-                        << " triangles) can take minutes to build (molds/README.md, \"Speed\")\n";
             const std::vector<geometry::Vec3> points =
                 opt->samples.empty() ? std::vector<geometry::Vec3>{} : eval::read_steel_points(opt->samples, session.scene(), layout);
             const double edge = opt->samples.empty() && !opt->out.empty() ? session.spec().cavity->sample_spacing / 2 : 0;

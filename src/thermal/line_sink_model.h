@@ -13,6 +13,7 @@
 #include <optional>
 #include <vector>
 
+#include "heat_source_tree.h"
 #include "line_sink_fields.h"
 #include "line_sink_tables.h"
 #include "mtcs/thermal/line_sinks.h"
@@ -123,10 +124,18 @@ struct LineSinkModel::Impl {
     double flux = 0;  // W/mm^2
   };
   std::vector<HeatSource> heat_sources;
+  // Many heated triangles (a mesh cavity): their sum by a tree (heat_source_tree.h), per image
+  // at the image of p. A few (a box cavity, a patch): the direct sum, as before the tree.
+  static constexpr std::size_t kTreeAbove = 16;
+  std::optional<HeatSourceTree> heat_tree;
   double heat_field(const Vec3& p) const { return heat_field(p, images); }
   double heat_field(const Vec3& p, std::span<const Image> of) const {
     double sum = 0;
-    for (const HeatSource& h : heat_sources) sum += h.flux * triangle_image_potential(of, h.triangle, p);
+    if (heat_tree) {
+      for (const Image& g : of) sum += g.sign * heat_tree->potential(g.mult.cwiseProduct(p) + g.offset);
+    } else {
+      for (const HeatSource& h : heat_sources) sum += h.flux * triangle_image_potential(of, h.triangle, p);
+    }
     return sum * inv4pik;
   }
   // Field of a unit uniform loss (W/mm^2 out of the steel) over a face.
