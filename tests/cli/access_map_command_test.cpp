@@ -126,7 +126,7 @@ TEST_CASE("access-map MESH: a needle above a cube against the closed form", "[cl
   CHECK(mtcs_test::read_text(tool_csv) == mtcs_test::read_text(csv));
 }
 
-TEST_CASE("access-map MESH: a thicker bore is blocked more often; a PNG is drawn", "[cli][access-map]") {
+TEST_CASE("access-map MESH: a thicker bore is blocked more often, a PNG is drawn", "[cli][access-map]") {
   const fs::path off = cube_off(), thin = scratch("thin.csv"), thick = scratch("thick.csv"), png = scratch("am.png");
   REQUIRE(run_mtcs("access-map " + off.string() + " --pivot 0,0,10 --bore 0,100 --grid 10 --am 16,16 --out " + thin.string()).code == 0);
   REQUIRE(run_mtcs("access-map " + off.string() + " --pivot 0,0,10 --bore 1.5,100 --grid 10 --am 16,16 --out " + thick.string()).code == 0);

@@ -123,7 +123,7 @@ std::vector<Kill> schedule(long rows_total, long polish_calls, double run_second
 
 }  // namespace
 
-TEST_CASE("run store faults: kill -9 at 20 moments; outputs whole or absent, every resume ends as the uninterrupted run",
+TEST_CASE("run store faults: kill -9 at 20 moments, outputs whole or absent, every resume ends as the uninterrupted run",
           "[cli][store][faults][kill]") {
   const fs::path full = scratch("kill_resume", "full"), err = scratch("kill_resume", "run.err");
   fs::remove_all(full);

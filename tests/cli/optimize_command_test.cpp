@@ -239,7 +239,7 @@ TEST_CASE("mtcs optimize: option errors name the command and option without a :0
   for (const auto& r : {algorithm, ref, resume}) CHECK_THAT(r.err, !Catch::Contains(":0:0:"));
 }
 
-TEST_CASE("mtcs optimize --start: the run says what the layout scores and ends no worse; bad starts exit 2",
+TEST_CASE("mtcs optimize --start: the run says what the layout scores and ends no worse, bad starts exit 2",
           "[cli][optimize][start]") {
   const std::string layout = MTCS_SOURCE_DIR + "/molds/plate.layout.yaml";
   const fs::path out = scratch("start");

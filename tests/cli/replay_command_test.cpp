@@ -77,7 +77,7 @@ TEST_CASE("mtcs replay writes a front plot per generation and an STL per final f
   }
 }
 
-TEST_CASE("mtcs replay: the run keeps its mold; moved, deleted or edited molds are named", "[cli][replay]") {
+TEST_CASE("mtcs replay: the run keeps its mold, moved, deleted or edited molds are named", "[cli][replay]") {
   using mtcs_test::run_mtcs_err;
   const fs::path dir = scratch("moved");
   fs::remove_all(dir);

@@ -82,7 +82,7 @@ fs::path uninterrupted() {
 
 }  // namespace
 
-TEST_CASE("run store faults: a full disk (file size limit) stops the run naming the store; it resumes to the same end",
+TEST_CASE("run store faults: a full disk (file size limit) stops the run naming the store, it resumes to the same end",
           "[cli][store][faults][disk]") {
   const fs::path full = uninterrupted();
   const fs::path dir = scratch("store_disk", "limited"), err = scratch("store_disk", "limited.err");
@@ -97,7 +97,7 @@ TEST_CASE("run store faults: a full disk (file size limit) stops the run naming 
   check_cut_store_resumes(dir, full);
 }
 
-TEST_CASE("run store faults: a full tmpfs stops the run naming the store; it resumes to the same end",
+TEST_CASE("run store faults: a full tmpfs stops the run naming the store, it resumes to the same end",
           "[cli][store][faults][disk]") {
   if (std::system("unshare -rm true 2>/dev/null") != 0) {
     WARN("no user namespace to mount a small tmpfs in: the file-size-limit test covers the full disk");

@@ -161,7 +161,7 @@ TEST_CASE("interference: verdicts equal CGAL's PMP::do_intersect on random place
   CHECK(hits < 25);
 }
 
-TEST_CASE("interference: plates touching face to face are not interference; pushed in, they are", "[mesh][interference]") {
+TEST_CASE("interference: plates touching face to face are not interference, pushed in, they are", "[mesh][interference]") {
   const auto a = mesh::box_mesh({{0, 0, 0}, {2, 2, 1}});
   for (const Vec3& shift : {Vec3(0, 0, 0), Vec3(0.3, 0.7, 0)}) {
     // Face to face: the pairs are touches only, the distance 0. Without a tolerance every

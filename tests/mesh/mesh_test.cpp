@@ -17,7 +17,7 @@
 using namespace mtcs;
 using geometry::Vec3;
 
-TEST_CASE("meshes: a box is closed and outward; holes and flipped faces are reported", "[mesh]") {
+TEST_CASE("meshes: a box is closed and outward, holes and flipped faces are reported", "[mesh]") {
   auto box = mesh::box_mesh({{0, 0, 0}, {2, 3, 4}});
   CHECK(mesh::closed_mesh_problem(box).empty());
   CHECK(box.signed_volume() == Approx(24));
@@ -41,7 +41,7 @@ TEST_CASE("meshes: binary STL round trip through CGAL's reader", "[mesh]") {
   CHECK(back.signed_volume() == Approx(48));
 }
 
-TEST_CASE("meshes: BVH segment distance equals brute force; containment", "[mesh]") {
+TEST_CASE("meshes: BVH segment distance equals brute force, containment", "[mesh]") {
   const auto gear = mesh::read_mesh(MTCS_SOURCE_DIR + "/molds/meshes/mcad_herringbone_gear.off");
   REQUIRE(mesh::closed_mesh_problem(gear).empty());
   const mesh::TriangleBvh bvh(gear);

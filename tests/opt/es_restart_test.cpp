@@ -228,7 +228,7 @@ TEST_CASE("ES restart: the rest ends when the new run leads, even by less than t
   CHECK(stalled_on > 0);
 }
 
-TEST_CASE("ES restart: an island's arrival that leads resets the stall count; others leave it", "[opt][es][restart][islands]") {
+TEST_CASE("ES restart: an island's arrival that leads resets the stall count, others leave it", "[opt][es][restart][islands]") {
   const auto sphere = make_test_function("sphere", 2);
   const EvolutionStrategy es(*sphere, restarting(EsConfig::Restart::population));
   auto member = [&](double x) {

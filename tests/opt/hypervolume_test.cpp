@@ -166,7 +166,7 @@ TEST_CASE("hypervolume: 3-D contributions on a large front full of ties equal le
 
 #include "bench/pagmo_peer.h"
 
-TEST_CASE("hypervolume: pagmo agrees on every certified front; 2-D contributions identical", "[opt][hypervolume]") {
+TEST_CASE("hypervolume: pagmo agrees on every certified front, 2-D contributions identical", "[opt][hypervolume]") {
   for (const char* name : {"linear_d2_n1000", "random_d3_n1000", "sphere_d4_n100", "random_d5_n100", "sphere_d2_n100"}) {
     const Front f = read(std::string(MTCS_TEST_DATA + "/hv_fronts/") + name + ".txt");
     const double ours = hypervolume(f.points, f.ref), theirs = mtcs::bench::pagmo_hypervolume(f.points, f.ref);

@@ -170,7 +170,7 @@ TEST_CASE("SmsEmoa::front: each non-dominated point once, the dominated and infe
   CHECK(hypervolume(SmsEmoa::front(g), {4, 4}) == Approx(3 * 1 + 2 * 1));  // (4-1)(4-3) + (4-2)(3-2)
 }
 
-TEST_CASE("SMS-EMOA: a given start opens the initial population; the other members are the plain run's", "[opt][sms-emoa][start]") {
+TEST_CASE("SMS-EMOA: a given start opens the initial population, the other members are the plain run's", "[opt][sms-emoa][start]") {
   const auto p = make_benchmark_problem("zdt1");
   SmsConfig c;
   c.seed = 3;

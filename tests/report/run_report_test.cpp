@@ -312,7 +312,7 @@ TEST_CASE("export: every bore of the run's best layout as a closed tube of the r
   }
 }
 
-TEST_CASE("export without --out: never over the run's own files; beside a layout file, named after it", "[report][export]") {
+TEST_CASE("export without --out: never over the run's own files, beside a layout file, named after it", "[report][export]") {
   // A new user's find: `export RUN_DIR --format csv` replaced optimize's bores.csv (the polished
   // best's) with the last generation's best.
   const std::string before = mtcs_test::read_text(plate_run() / "bores.csv");
@@ -333,7 +333,7 @@ TEST_CASE("export without --out: never over the run's own files; beside a layout
   CHECK(mtcs_test::read_text(layout.parent_path() / "chosen.layout.csv") == before);
 }
 
-TEST_CASE("report and export: a polished run's member 0 is best.layout.yaml's polished best; an edited file is said",
+TEST_CASE("report and export: a polished run's member 0 is best.layout.yaml's polished best, an edited file is said",
           "[report][export]") {
   const path dir = mtcs_test::scratch("report", "polished");
   mtcs_test::fs::remove_all(dir);

@@ -156,7 +156,7 @@ TEST_CASE("islands: an interrupted archipelago resumed ends as the uninterrupted
     }
 }
 
-TEST_CASE("islands: a migration delay changes the run; resuming twice still ends as the uninterrupted run",
+TEST_CASE("islands: a migration delay changes the run, resuming twice still ends as the uninterrupted run",
           "[run][islands]") {
   // The delay is part of the run (its arrivals come at other generations), and a resume in the
   // middle of the migrants' way, stopped again, still ends where the whole run ends.
@@ -179,7 +179,7 @@ TEST_CASE("islands: a migration delay changes the run; resuming twice still ends
   CHECK(rows(parts, 3) == rows(delayed, 3));
 }
 
-TEST_CASE("islands: kill -9 while the store thread writes; every resume ends as the uninterrupted run",
+TEST_CASE("islands: kill -9 while the store thread writes, every resume ends as the uninterrupted run",
           "[run][islands][kill]") {
   // The mtcs binary with MTCS_CRASH_AT=store-island-row:N (SIGKILL at the N-th island row, in the
   // writer thread), then --resume: the rows, bit for bit, of the run never killed.
@@ -203,7 +203,7 @@ TEST_CASE("islands: kill -9 while the store thread writes; every resume ends as 
   }
 }
 
-TEST_CASE("islands: restarts fire on the islands; resumed across them, or on one thread, the run is the same",
+TEST_CASE("islands: restarts fire on the islands, resumed across them, or on one thread, the run is the same",
           "[run][islands][restart]") {
   // Stalls made frequent (2 generations without a 20 % gain): the stall counts travel in the store,
   // and a resume between restarts must restart where the uninterrupted run did.
@@ -244,7 +244,7 @@ TEST_CASE("islands: restarts fire on the islands; resumed across them, or on one
   CHECK(stall_counts(parts) == stalls);
 }
 
-TEST_CASE("islands: settings survive the store's text; bad ones name the field", "[run][islands]") {
+TEST_CASE("islands: settings survive the store's text, bad ones name the field", "[run][islands]") {
   run::IslandSettings s;
   s.islands = 5, s.migration_every = 3, s.migrants = 4, s.topology = opt::Topology::fully_connected;
   s.migration_delay = 2;
@@ -261,7 +261,7 @@ TEST_CASE("islands: settings survive the store's text; bad ones name the field",
   CHECK_THROWS_WITH(run::IslandSettings::parse("islands: 0\n", "meta"), Catch::Contains("islands"));
 }
 
-TEST_CASE("islands: who receives from whom; island 0 keeps the run's seed", "[opt][islands]") {
+TEST_CASE("islands: who receives from whom, island 0 keeps the run's seed", "[opt][islands]") {
   CHECK(opt::migration_sources(opt::Topology::ring, 4, 0) == std::vector<int>{3});
   CHECK(opt::migration_sources(opt::Topology::ring, 4, 2) == std::vector<int>{1});
   CHECK(opt::migration_sources(opt::Topology::fully_connected, 4, 2) == std::vector<int>{0, 1, 3});

@@ -85,7 +85,7 @@ TEST_CASE("run config: penalty is read, written back, and checked", "[run][sessi
   }
 }
 
-TEST_CASE("run config: a store made before the ES's restart resumes without it; today's runs restart after 200",
+TEST_CASE("run config: a store made before the ES's restart resumes without it, today's runs restart after 200",
           "[run][session][restart]") {
   const std::vector<std::string> names{"a", "b"};
   const std::string before = "es: {mu: 10, lambda: 40, rho: 2, plus: true, recombination: true}\nseed: 3\n";

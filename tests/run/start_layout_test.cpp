@@ -111,7 +111,7 @@ TEST_CASE("optimize --start: interrupted and resumed, the run ends as the uninte
   }
 }
 
-TEST_CASE("optimize --start: a missing layout, or more than the population holds, is refused; nothing written",
+TEST_CASE("optimize --start: a missing layout, or more than the population holds, is refused, nothing written",
           "[run][start]") {
   const fs::path dir = scratch("refused");
   auto r = request(dir, "es", 200);

@@ -164,7 +164,7 @@ TEST_CASE("island rows: island tables of an older store (a copy of the archipela
   CHECK(read.island_generation(1, 0)->population[2].score.value == 7);
 }
 
-TEST_CASE("run store: the ES's stall count survives the store, in the run's rows and the islands'; older stores read 0",
+TEST_CASE("run store: the ES's stall count survives the store, in the run's rows and the islands', older stores read 0",
           "[store][islands][restart]") {
   const std::string path = fresh("stalled.sqlite");
   {

@@ -54,7 +54,7 @@ std::vector<double> solve(const Setting& setting, const Samples& samples, LineSi
 
 }  // namespace
 
-TEST_CASE("line sinks: models of one setting share their tables; a changed setting gets its own") {
+TEST_CASE("line sinks: models of one setting share their tables, a changed setting gets its own") {
   const Samples samples = patch_points();
   const std::vector<double> first = solve(block_setting(0.05), samples);
   const std::vector<double> again = solve(block_setting(0.05), samples);  // the kept tables

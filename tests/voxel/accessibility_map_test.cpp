@@ -132,7 +132,7 @@ TEST_CASE("a segment tool against a single box follows the ray-box slab test", "
   CHECK(hits > 20);
 }
 
-TEST_CASE("a pivot inside the part is an error; empty and full grids", "[voxel][am]") {
+TEST_CASE("a pivot inside the part is an error, empty and full grids", "[voxel][am]") {
   GridSpec g{{8, 8, 8}, 1.0, Vec3::Zero()};
   const Octree full(voxelize(mesh::box_mesh({Vec3::Constant(-1), Vec3::Constant(9)}), g));
   const Tool tool{{0, 5, 1}};

@@ -98,7 +98,7 @@ TEST_CASE("empty and full grids give empty and one-node octrees", "[voxel]") {
 
 // The user form's grid (mtcs access-map MESH): N^3 voxels of (largest extent) / (N - 2), the
 // bounding box centred, so a cube fills exactly (N - 2)^3 voxels.
-TEST_CASE("part_grid pads the part by one voxel; part_access_map refuses a pivot inside", "[voxel]") {
+TEST_CASE("part_grid pads the part by one voxel, part_access_map refuses a pivot inside", "[voxel]") {
   const Box cube{Vec3(-2, -1, 3), Vec3(2, 3, 7)};  // 4 mm on every axis
   const mesh::TriangleMesh part = mesh::box_mesh(cube);
   const GridSpec g = part_grid(part, 10);
