@@ -121,9 +121,6 @@ StoredLayout stored_layout(const std::string& run_dir, std::optional<int> genera
   const auto meta = db.meta();
   if (!meta.count("mold")) throw io::InputError(db_path, 0, 0, "", "a test-problem run: no mold layout to export");
   StoredLayout s;
-  // The shop's plan needs the constraints alone (run::shop_layout keeps it feasible): no thermal model.
-  s.session = std::make_unique<run::Session>(run::stored_mold_spec(meta, mold_override, &s.note), meta.at("config"),
-                                             db_path + ":config", eval::PipelineScope::constraints);
   const auto summaries = db.summaries();
   if (summaries.empty()) throw io::InputError(db_path, 0, 0, "generation", "the run stored no generation yet");
   s.generation = generation.value_or(summaries.back().index);
@@ -133,9 +130,15 @@ StoredLayout stored_layout(const std::string& run_dir, std::optional<int> genera
   if (s.member < 0 || std::size_t(s.member) >= g->population.size())
     throw io::InputError(db_path, 0, 0, "--member",
                          "generation " + std::to_string(s.generation) + " has members 0.." + std::to_string(g->population.size() - 1));
-  // The last generation's best as optimize wrote it: polished, when it was.
+  // The last generation's best as optimize wrote it: polished, when it was. Only that one needs
+  // the objectives (best.layout.yaml is taken when it scores what the run wrote); the shop's plan
+  // needs the constraints alone (run::shop_layout keeps it feasible): no thermal model.
+  const bool last_best = s.member == 0 && s.generation == summaries.back().index;
+  const auto scope = last_best && was_polished(run_dir) ? eval::PipelineScope::everything : eval::PipelineScope::constraints;
+  s.session = std::make_unique<run::Session>(run::stored_mold_spec(meta, mold_override, &s.note), meta.at("config"),
+                                             db_path + ":config", scope);
   std::optional<ShopMember> polished;
-  if (s.member == 0 && s.generation == summaries.back().index) polished = polished_best(run_dir, *s.session, s.note);
+  if (last_best) polished = polished_best(run_dir, *s.session, s.note);
   s.layout = polished ? polished->plan : shop_member(*s.session, g->population[std::size_t(s.member)].x).plan;
   return s;
 }

@@ -22,13 +22,26 @@ ShopMember shop_member(const run::Session& session, const opt::Genotype& x) {
   return m;
 }
 
-std::optional<ShopMember> polished_best(const std::string& run_dir, const run::Session& session, std::string& note) {
-  const std::filesystem::path dir(run_dir);
+namespace {
+
+nlohmann::json polished_summary(const std::filesystem::path& dir) {
   std::ifstream in(dir / "summary.json");
   const nlohmann::json summary = nlohmann::json::parse(in, nullptr, false);
-  if (summary.is_discarded() || !summary.contains("polish") || !summary["polish"].value("improved", false) ||
-      !summary.contains("best_objective") || !summary["best_objective"].is_number())
-    return std::nullopt;
+  if (summary.is_discarded() || !summary.contains("polish") || !summary["polish"].is_object() ||
+      !summary["polish"].value("improved", false) || !summary.contains("best_objective") ||
+      !summary["best_objective"].is_number())
+    return nullptr;
+  return summary;
+}
+
+}  // namespace
+
+bool was_polished(const std::string& run_dir) { return !polished_summary(run_dir).is_null(); }
+
+std::optional<ShopMember> polished_best(const std::string& run_dir, const run::Session& session, std::string& note) {
+  const std::filesystem::path dir(run_dir);
+  const nlohmann::json summary = polished_summary(dir);
+  if (summary.is_null()) return std::nullopt;
   const double written = summary["best_objective"].get<double>();
   const std::string layout_file = (dir / "best.layout.yaml").string();
   std::optional<ShopMember> best;

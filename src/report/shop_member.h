@@ -27,6 +27,9 @@ ShopMember shop_member(const run::Session& session, const opt::Genotype& x);
 // RUN_DIR's summary.json records a polish that improved the best and best.layout.yaml still scores
 // the summary's best_objective (not edited since); `note` then says so. None otherwise, and where
 // the file no longer matches, `note` says the stored best stands in for it.
+// The session must score objectives (eval::PipelineScope::everything): the file is checked by its score.
 std::optional<ShopMember> polished_best(const std::string& run_dir, const run::Session& session, std::string& note);
+// Does RUN_DIR's summary.json record a polish that improved the best (so that polished_best may apply)?
+bool was_polished(const std::string& run_dir);
 
 }  // namespace mtcs::report
