@@ -14,6 +14,7 @@
 #include "dense_solve.h"
 #include "line_sink_model.h"
 #include "mtcs/geometry/exact_hash.h"
+#include "mtcs/geometry/segment_distance.h"
 
 namespace mtcs::thermal {
 
@@ -126,8 +127,7 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
     cache.clear();
     cache.owner_ = impl_.get();
   }
-  const std::size_t nc = channels.size();
-  if (nc == 0 && !m.fixed_constant)
+  if (channels.empty() && !m.fixed_constant)
     throw std::invalid_argument("line sinks: no channel and no isothermal face: no steady state");
   // Only the steel conducts: a channel's part outside the block (a connection in the air) takes
   // no heat, and its images would land inside.
@@ -138,7 +138,32 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
     if (!clipped) throw std::invalid_argument("line sinks: a channel lies outside the block");
     ch.axis = *clipped;
   }
+  // A channel inside another's bore (both its ends within that one's radius of its axis: a jog
+  // of a few mm at a junction) has no steel wall: it takes no heat. Left in, its collocation
+  // points sit in the other's coolant, a fraction of a mm from that line source, and the system
+  // can come out near singular (thousands of K on a ribbed_box layout at 8 elements).
+  const std::size_t given = inside.size();
+  const auto within = [&](std::size_t c, std::size_t d) {  // c inside d's bore
+    const geometry::Segment& s = inside[d].axis;
+    return geometry::point_segment_distance(inside[c].axis.p0, s) < inside[d].radius &&
+           geometry::point_segment_distance(inside[c].axis.p1, s) < inside[d].radius;
+  };
+  thread_local std::vector<std::size_t> kept;  // of the given channels, in order
+  kept.clear();
+  for (std::size_t c = 0; c < given; ++c) {
+    bool dropped = false;
+    for (std::size_t d = 0; d < given && !dropped; ++d) {
+      if (d == c || (d < c && std::find(kept.begin(), kept.end(), d) == kept.end())) continue;  // d itself dropped
+      dropped = within(c, d) && !(d > c && within(d, c));  // of two inside each other, the first stays
+    }
+    if (!dropped) kept.push_back(c);
+  }
+  if (kept.size() < given) {
+    for (std::size_t k = 0; k < kept.size(); ++k) inside[k] = inside[kept[k]];
+    inside.resize(kept.size());
+  }
   channels = inside;
+  const std::size_t nc = channels.size();
   // Look up or build every channel's and pair's blocks.
   using Key = LineSinkCache::Tables::Key;
   LineSinkCache::Tables& tables = *cache.tables_;
@@ -305,6 +330,11 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
     out.channel_heat.push_back(q);
   }
   for (int f = 0; f < nf; ++f) out.face_heat += x[n_ch + f] * m.faces[f].area;
+  if (kept.size() < given) {  // one entry per given channel: 0 for those inside another
+    std::vector<double> heat(given, 0.0);
+    for (std::size_t k = 0; k < kept.size(); ++k) heat[kept[k]] = out.channel_heat[k];
+    out.channel_heat = std::move(heat);
+  }
 
   // Over budget: the blocks unused for longest go (the pairs first: cheaper to rebuild).
   if (cache.bytes_ > cache.budget_) {

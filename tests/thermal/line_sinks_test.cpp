@@ -742,3 +742,38 @@ TEST_CASE("line sinks: one bore moved, in a loop", "[.bench]") {
   std::sort(times.begin(), times.end());
   std::printf("one_of_three_moved_ms best %.4f median %.4f\n", times.front(), times[times.size() / 2]);
 }
+
+TEST_CASE("line sinks: a bore inside another's bore takes no heat and changes nothing") {
+  // Two bores 2.5 mm apart joined by a 2.5 mm jog, all 8 mm: the jog lies inside the first
+  // bore (its ends within 4 mm of that axis), so it has no steel wall. Left in, its collocation
+  // points sat in the other's coolant (a ribbed_box layout at 8 elements: -1 363 to 4 197 C).
+  const Reference ref = patch_reference();
+  auto bore = [](Vec3 a, Vec3 b) {
+    Channel c;
+    c.axis = Segment{a, b};
+    c.radius = 4;
+    c.coolant = 40;
+    return c;
+  };
+  const Channel first = bore({0, 30, 45}, {60, 30, 45}), jog = bore({60, 30, 45}, {60, 32.5, 45}),
+                second = bore({60, 32.5, 45}, {120, 32.5, 45}), other = bore({0, 60, 45}, {120, 60, 45});
+  for (const int elements : {4, 8, 12}) {
+    INFO(elements << " elements");
+    LineSinkOptions o;
+    o.elements = elements;
+    const LineSinkModel model(block_setting(), ref.samples, o);
+    LineSinkCache a, b;
+    const auto with = model.solve(std::vector<Channel>{first, jog, second, other}, a);
+    const auto without = model.solve(std::vector<Channel>{first, second, other}, b);
+    CHECK(with.temperature == without.temperature);
+    REQUIRE(with.channel_heat.size() == 4);
+    CHECK(with.channel_heat[1] == 0);
+    CHECK(with.channel_heat[0] == without.channel_heat[0]);
+    CHECK(with.channel_heat[3] == without.channel_heat[2]);
+    // Identical bores: the first stays, the second adds nothing.
+    LineSinkCache c;
+    const auto twice = model.solve(std::vector<Channel>{first, second, other, other}, c);
+    CHECK(twice.temperature == without.temperature);
+    CHECK(twice.channel_heat[3] == 0);
+  }
+}
