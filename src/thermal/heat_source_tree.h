@@ -20,7 +20,7 @@ namespace mtcs::thermal {
 class HeatSourceTree {
  public:
   // triangles with flux 0 are left out (they add nothing).
-  explicit HeatSourceTree(std::span<const HeatedTriangle> triangles, double theta = 0.2);
+  HeatSourceTree(std::span<const HeatedTriangle> triangles, double theta);
   double potential(const Vec3& p) const;
   std::size_t size() const { return sources_.size(); }
 

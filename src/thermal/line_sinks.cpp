@@ -149,14 +149,13 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
            geometry::point_segment_distance(inside[c].axis.p1, s) < inside[d].radius;
   };
   thread_local std::vector<std::size_t> kept;  // of the given channels, in order
+  thread_local std::vector<char> dropped;
   kept.clear();
+  dropped.assign(given, 0);
   for (std::size_t c = 0; c < given; ++c) {
-    bool dropped = false;
-    for (std::size_t d = 0; d < given && !dropped; ++d) {
-      if (d == c || (d < c && std::find(kept.begin(), kept.end(), d) == kept.end())) continue;  // d itself dropped
-      dropped = within(c, d) && !(d > c && within(d, c));  // of two inside each other, the first stays
-    }
-    if (!dropped) kept.push_back(c);
+    for (std::size_t d = 0; d < given && !dropped[c]; ++d)
+      if (d != c && !dropped[d]) dropped[c] = within(c, d) && !(d > c && within(d, c));  // of two inside each other, the first stays
+    if (!dropped[c]) kept.push_back(c);
   }
   if (kept.size() < given) {
     for (std::size_t k = 0; k < kept.size(); ++k) inside[k] = inside[kept[k]];
