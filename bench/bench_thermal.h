@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace mtcs::bench {
 
@@ -14,6 +15,9 @@ struct ThermalBenchOptions {
   std::uint64_t seed = 20261124;
   int repeat = 5;               // timed solves per layout (median)
   bool json = false;
+  std::vector<double> void_panels{6, 10};
+  int circuits = 3;            // per random layout of a mold (4 legs each)
+  bool through_part = false;   // keep the random layouts that drill through the part  // mm: t2d M=4 with the void (mesh cavities only)
 };
 
 // Prints one row per tier: CSV on stdout, or a JSON object with default_tier and tiers.

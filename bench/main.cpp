@@ -156,7 +156,7 @@ int run(int argc, char** argv) {
   clearance->add_option("--repeat", co->repeat, "queries per timed batch")->capture_default_str()->check(CLI::Range(1, 100000));
   clearance->add_option("--builds", co->builds, "BVH builds timed (median)")->capture_default_str()->check(CLI::Range(1, 100));
   clearance->add_option("--bound-fraction", co->bound_fraction, "upper bound of ours-bounded, x largest extent")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+      ->capture_default_str()->delimiter(',')->check(CLI::PositiveNumber);
   CLI::App* interfere = app.add_subcommand(
       "interfere",
       "All intersecting triangle pairs of two placed meshes: ours (median split, and split by solid\n"
@@ -191,6 +191,13 @@ int run(int argc, char** argv) {
       ->capture_default_str()->check(CLI::Range(0.25, 50.0));
   thermal->add_option("--seed", to->seed, "seed of the layouts")->capture_default_str();
   thermal->add_option("--repeat", to->repeat, "timed solves per layout (median)")->capture_default_str()->check(CLI::Range(1, 1000));
+  thermal->add_option("--void-panels", to->void_panels,
+                      "mm: with a mesh cavity, also t2d M=4 knowing the part's void, panels this wide (one tier each)")
+      ->capture_default_str()->delimiter(',')->check(CLI::PositiveNumber);
+  thermal->add_option("--circuits", to->circuits, "circuits of 4 legs per random layout of a mold")
+      ->capture_default_str()->check(CLI::Range(1, 16));
+  thermal->add_flag("--through-part", to->through_part,
+                    "a mold: keep the random layouts whose bores cross the part (by default only those clear of it)");
   thermal->add_flag("--json", to->json, "one JSON object instead of CSV");
 
   auto ao = std::make_shared<AccessMapBenchOptions>();

@@ -80,6 +80,7 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
     options.tier = line_sink_tier(query.tier);
     options.elements = query.elements;
     options.images = query.wall_images;
+    options.void_panel = scene.spec().thermal.void_panel;
     const thermal::CavityCut cut =
         scene.spec().thermal.void_plane ? thermal::cut_at_cavity_void(setting) : thermal::CavityCut{setting};
     const std::vector<thermal::Channel> folded = cut.fold(channels);

@@ -43,6 +43,7 @@ TemperatureSolverFactory temperature_solver(mold::ThermalTier tier) {
     options.tier = line_sink_tier(tier);
     options.elements = spec.elements_per_bore;
     options.images = spec.wall_images;
+    options.void_panel = spec.void_panel;
     // thermal.cavity_void: plane: the line sinks in the block cut at the void (no cut: as is).
     const thermal::CavityCut cut = spec.void_plane ? thermal::cut_at_cavity_void(setting) : thermal::CavityCut{setting};
     auto sinks = std::make_shared<LineSinks>(cut.setting, samples, options);

@@ -25,6 +25,8 @@ using geometry::Vec3;
 namespace {
 
 constexpr double kHuge = 1e12;
+// thermal.cavity_void: surface without thermal.void_panel: panels this wide (mm).
+constexpr double kDefaultVoidPanel = 8;
 
 std::string at(const std::string& path, std::size_t i) { return indexed(path, i); }
 
@@ -359,7 +361,7 @@ Objectives parse_objectives(const YamlReader& r, const YAML::Node& n) {
 ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
   r.expect_map(n, "thermal", {"steel_conductivity", "coolant", "ambient", "adiabatic_faces", "heat_flux", "regions",
                               "polymer", "tier", "elements_per_bore", "wall_images", "cell_size",
-                              "objective_surface", "cavity_void", "sample_spacing"});
+                              "objective_surface", "cavity_void", "void_panel", "sample_spacing"});
   constexpr double kPerM = 1e-3, kPerM2 = 1e-6;  // W/(m K) -> W/(mm K); W/m^2 -> W/mm^2
   constexpr double kCold = -273.15, kHot = 5000;  // degrees C
   ThermalSpec t;
@@ -443,7 +445,13 @@ ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
   if (n["cavity_void"]) {
     const std::string s = r.text(n["cavity_void"], "thermal.cavity_void");
     if (s == "plane") t.void_plane = true;
-    else if (s != "ignore") r.fail(n["cavity_void"], "thermal.cavity_void", "expected ignore or plane; got '" + s + "'");
+    else if (s == "surface") t.void_panel = kDefaultVoidPanel;
+    else if (s != "ignore")
+      r.fail(n["cavity_void"], "thermal.cavity_void", "expected ignore, plane or surface; got '" + s + "'");
+  }
+  if (n["void_panel"]) {
+    if (t.void_panel == 0) r.fail(n["void_panel"], "thermal.void_panel", "needs cavity_void: surface");
+    t.void_panel = r.number(n["void_panel"], "thermal.void_panel", 0.1, kHuge);
   }
   return t;
 }

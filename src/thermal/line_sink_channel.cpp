@@ -96,6 +96,16 @@ MatrixXd LineSinkModel::Impl::channel_at_rows(const LineSinkCache::ChannelBlock&
                    [&](int i, Eigen::Index c) { return double(acc[std::size_t(c) * T + std::size_t(i)]); });
 }
 
+MatrixXd LineSinkModel::Impl::channel_at_rows(const LineSinkCache::ChannelBlock& rows,
+                                              const LineSinkCache::ChannelBlock& source) const {
+  MatrixXd out = channel_at_rows(rows, source.axis);
+  if (source.void_tau.size()) {
+    const MatrixXd v = rows.void_walls * source.void_tau;
+    out += rows_from(rows.axis, kinds, v.cols(), [&](int i, Eigen::Index c) { return v(i, c); });
+  }
+  return out;
+}
+
 MatrixXd LineSinkModel::Impl::face_means_of(const ChannelAxis& source) const {
   if (!options.single_precision || face_set.slots == 0)
     return face_average * columns_at(source, face_set, options.single_precision, center, options.far_expansion);
@@ -114,6 +124,21 @@ MatrixXd LineSinkModel::Impl::face_means_of(const ChannelAxis& source) const {
       out(Eigen::Index(f), c) = sum / double(n);
     }
   return out;
+}
+
+Eigen::MatrixXf LineSinkModel::Impl::void_derivatives(const ChannelAxis& source) const {
+  // A panel's two points are neighbouring targets, in one chunk: both take the closed forms or
+  // both the expansion, whose error is smooth.
+  thread_local std::vector<float> acc;
+  float_columns_into(source, void_pairs, sample_origin, options.far_expansion, acc);
+  const std::size_t T = void_pairs.targets(), n = T / 2;
+  const int cols = source.elements * kinds;
+  Eigen::MatrixXf d(Eigen::Index(n), cols);
+  const float scale = float(1 / (2 * void_step));
+  for (int c = 0; c < cols; ++c)
+    for (std::size_t i = 0; i < n; ++i)
+      d(Eigen::Index(i), c) = scale * (acc[std::size_t(c) * T + 2 * i] - acc[std::size_t(c) * T + 2 * i + 1]);
+  return d;
 }
 
 std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(const Channel& ch) const {
@@ -153,6 +178,22 @@ std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(
   }
   // At the convective faces' grids (means).
   b->face_means = face_means_of(a);
+  // The part's void: the columns' reflections (a bore reaching into the part keeps none).
+  if (void_surface) {
+    std::vector<Vec3> walls;
+    for (int e = 0; e < a.elements; ++e)
+      for (const Vec3& p : wall_points(a, e)) walls.push_back(p);
+    b->void_walls = void_surface->potentials(walls);
+  }
+  if (void_surface && !void_surface->reaches(ch.axis.p0, ch.axis.p1, ch.radius)) {
+    const Eigen::MatrixXf d = void_derivatives(a);
+    b->void_tau = void_surface->layer(d).cast<double>();
+    b->face_means += void_faces * d.cast<double>();
+    if (!b->sample_cols_f.empty())
+      Eigen::Map<Eigen::MatrixXf>(b->sample_cols_f.data(), Eigen::Index(n_samples), cols).noalias() += void_samples_f * d;
+    else
+      Eigen::Map<MatrixXd>(b->sample_cols_d.data(), Eigen::Index(n_samples), cols).noalias() += void_samples * d.cast<double>();
+  }
   // Own rows: the own columns, the heat input and the face losses.
   b->self = channel_at_rows(*b, a);
   b->self_dipole.assign(cols, 0.0);
@@ -163,6 +204,10 @@ std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(
         b->self_dipole[r] = b->self(r, r);
         b->self(r, r) = 0;  // V_self: kept apart, the film condition weighs it differently
       }
+  if (b->void_tau.size()) {  // its own reflection in the void, a field from outside
+    const MatrixXd v = b->void_walls * b->void_tau;
+    b->self += rows_from(a, kinds, v.cols(), [&](int i, Eigen::Index c) { return v(i, c); });
+  }
   b->heat_rows.resize(cols);
   row_functionals(a, [&](const Vec3& p, double* v) { v[0] = heat_at(p); }, 1,
                   b->heat_rows.data(), cols);

@@ -16,6 +16,7 @@
 #include "heat_source_tree.h"
 #include "line_sink_fields.h"
 #include "line_sink_tables.h"
+#include "void_surface.h"
 #include "mtcs/thermal/line_sinks.h"
 
 namespace mtcs::thermal {
@@ -42,6 +43,9 @@ struct LineSinkCache::ChannelBlock {
   MatrixXd face_rows;                 // rows x convective faces
   MatrixXd far_rows;                  // rows x 4: the far lattice's kernel (see Impl::far_kernel)
   MatrixXd moments;                   // 4 x cols: each column's charge and first moment
+  // The part's void (Impl::void_surface): the layer answering the columns (panels x cols), and
+  // the layers' potentials at the wall points (4 per element x panels).
+  MatrixXd void_tau, void_walls;
 };
 
 struct LineSinkCache::PairBlock {
@@ -116,6 +120,20 @@ struct LineSinkModel::Impl {
   MatrixXd face_samples;                     // samples x faces: unit face loss
   VectorXd heat_face_means;                  // per face: heat input's field, face mean
   MatrixXd face_face_means;                  // faces x faces
+
+  // The part's void (options.void_panel): the response of the samples and of the faces' means
+  // to a field's normal derivative at the panels, which the panels' points +- void_step along
+  // their normals give by central differences.
+  std::optional<VoidSurface> void_surface;
+  MatrixXd void_samples;          // samples x panels
+  Eigen::MatrixXf void_samples_f;  // the same in float, for the float columns
+  MatrixXd void_faces;            // convective faces x panels
+  MatrixXd face_void;             // faces x faces: the face losses' correction at the faces
+  PointSet void_pairs;  // per panel, its point + void_step n and - void_step n (one chunk)
+  double void_step = 0;
+  // The normal derivatives at the panels of `source`'s columns (panels x cols), by the float
+  // kernel: relative error ~1e-4 at a step of 1 % of the panel.
+  Eigen::MatrixXf void_derivatives(const ChannelAxis& source) const;
 
   // The heated triangles with a flux (a region without flux, molds/plate.yaml's top face and
   // rim, adds +-0 to the sum: left out, the same bits at half the potentials on the plate).
@@ -216,6 +234,8 @@ struct LineSinkModel::Impl {
   // half-differences; wall image slots options.pair_far element lengths or more from an element
   // of the source see it as its multipole expansion (line_sink_fields.h, FarChunks).
   MatrixXd channel_at_rows(const LineSinkCache::ChannelBlock& rows, const ChannelAxis& source) const;
+  // The same with the source's reflection in the part's void (when there is one).
+  MatrixXd channel_at_rows(const LineSinkCache::ChannelBlock& rows, const LineSinkCache::ChannelBlock& source) const;
   // Per convective face, the mean of `source`'s columns over its grid: faces x cols.
   MatrixXd face_means_of(const ChannelAxis& source) const;
   // Everything of one channel that does not depend on the others (line_sink_channel.cpp).

@@ -90,7 +90,8 @@ struct Tables {
 
 // Every number the tables depend on, in order: equal keys, equal tables.
 std::vector<double> tables_key(const Setting& setting, const LineSinkOptions& options) {
-  std::vector<double> key{double(options.images), double(options.far_images), options.heat_grid, setting.conductivity};
+  std::vector<double> key{double(options.images), double(options.far_images), options.heat_grid, setting.conductivity,
+                          setting.cavity_mesh ? options.void_panel : 0.0};
   for (const Vec3& v : {setting.block.min, setting.block.max}) key.insert(key.end(), v.data(), v.data() + 3);
   for (const FaceCondition& f : setting.faces) key.push_back(f.film), key.push_back(f.ambient);
   for (const HeatedTriangle& t : setting.heat_in) {
@@ -166,9 +167,19 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     m.heat_in += q;
     m.heat_moments[0] += q;
     m.heat_moments.tail<3>() += q * ((t.a + t.b + t.c) / 3 - m.center);
-    if (t.flux != 0) m.heat_sources.push_back({TriangleSource(t.a, t.b, t.c), t.flux});
   }
-  if (m.heat_sources.size() > Impl::kTreeAbove) m.heat_tree.emplace(setting.heat_in, kHeatTreeTheta);
+  // The part's void: the heat input's sheets take the void's correction (their total and
+  // moments stay: the correction carries no heat).
+  std::vector<HeatedTriangle> void_heat;
+  if (options.void_panel > 0 && setting.cavity_mesh && !setting.heat_in.empty()) {
+    m.void_surface.emplace(setting.heat_in, sample_images, options.void_panel, setting.conductivity);
+    void_heat = m.void_surface->heat_with_void();
+  }
+  const std::span<const HeatedTriangle> heat = m.void_surface ? std::span<const HeatedTriangle>(void_heat)
+                                                              : std::span<const HeatedTriangle>(setting.heat_in);
+  for (const HeatedTriangle& t : heat)
+    if (t.flux != 0) m.heat_sources.push_back({TriangleSource(t.a, t.b, t.c), t.flux});
+  if (m.heat_sources.size() > Impl::kTreeAbove) m.heat_tree.emplace(heat, kHeatTreeTheta);
 
   // Convective faces: one unknown uniform loss each, collocated on a grid of the face's part
   // that is not heated.
@@ -349,6 +360,30 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     m.heat_samples[s] = m.heat_field(samples.points[s]);
     for (std::size_t f = 0; f < nf; ++f) m.face_samples(s, f) = m.face_field(m.faces[f], samples.points[s]);
   });
+  if (m.void_surface) {
+    // The samples' and faces' response to the panels, and the face losses' correction.
+    const VoidSurface& v = *m.void_surface;
+    m.void_step = 1e-2 * options.void_panel;
+    for (std::size_t i = 0; i < v.panels(); ++i)
+      for (const double side : {1.0, -1.0}) {
+        m.void_pairs.add(sample_images, v.points()[i] + side * m.void_step * v.normals()[i], m.tol, 1.0, m.sample_origin);
+        m.void_pairs.close_target();
+      }
+    m.void_pairs.make_slots(), m.void_pairs.make_chunk_boxes();
+    m.void_samples = v.response(samples.points);
+    m.void_samples_f = m.void_samples.cast<float>();
+    std::vector<Vec3> face_points;
+    for (const ConvectiveFace& f : m.faces) face_points.insert(face_points.end(), f.cool.begin(), f.cool.end());
+    m.void_faces = m.face_average * v.response(face_points);
+    MatrixXd d(Eigen::Index(v.panels()), Eigen::Index(nf));
+    for (std::size_t i = 0; i < v.panels(); ++i)
+      for (std::size_t f = 0; f < nf; ++f)
+        d(Eigen::Index(i), Eigen::Index(f)) = (m.face_field(m.faces[f], v.points()[i] + m.void_step * v.normals()[i]) -
+                                               m.face_field(m.faces[f], v.points()[i] - m.void_step * v.normals()[i])) /
+                                              (2 * m.void_step);
+    m.face_samples += m.void_samples * d;
+    m.face_void = m.void_faces * d;
+  }
   m.heat_face_means.resize(nf);
   m.face_face_means.resize(nf, nf);
   for (std::size_t f = 0; f < nf; ++f) {
@@ -362,6 +397,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
       m.face_face_means(f, f2) = s / double(plain.size());
     }
   }
+  if (m.void_surface) m.face_face_means += m.face_void;
 }
 
 }  // namespace mtcs::thermal

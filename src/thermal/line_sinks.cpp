@@ -199,7 +199,7 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
       auto& entry = tables.pairs[k];
       if (!entry.block) {
         entry.block = std::make_shared<LineSinkCache::PairBlock>();
-        entry.block->block = m.channel_at_rows(*blocks[r], blocks[c]->axis);
+        entry.block->block = m.channel_at_rows(*blocks[r], *blocks[c]);
         cache.bytes_ += block_bytes(*entry.block);
       }
       entry.used = now;

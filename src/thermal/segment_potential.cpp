@@ -89,6 +89,33 @@ double TriangleSource::potential(const Vec3& s) const {
   return sum_log - ad * 2 * std::atan2(ad * twice_area_, den);
 }
 
+Vec3 TriangleSource::gradient(const Vec3& s) const {
+  if (twice_area_ == 0) return Vec3::Zero();
+  const Vec3 corner[3] = {corner_[0] - s, corner_[1] - s, corner_[2] - s};
+  const double d = -corner[0].dot(normal_);
+  const double r[3] = {corner[0].norm(), corner[1].norm(), corner[2].norm()};
+  Vec3 g = Vec3::Zero();
+  for (int i = 0; i < 3; ++i) {
+    if (length_[i] == 0) continue;
+    const int j = (i + 1) % 3;
+    const double P0 = corner[i].dot(out_[i]);
+    const double l_minus = corner[i].dot(along_[i]), l_plus = corner[j].dot(along_[i]);
+    const double R0sq = P0 * P0 + d * d;
+    double ratio;
+    if (l_minus >= 0) ratio = (r[j] + l_plus) / (r[i] + l_minus);
+    else if (l_plus <= 0) ratio = (r[i] - l_minus) / (r[j] - l_plus);
+    else if (R0sq > 1e-24 * length_[i] * length_[i]) ratio = (r[j] + l_plus) * (r[i] - l_minus) / R0sq;
+    else continue;  // on the edge itself: the log diverges, its principal value is the caller's
+    g -= std::log(ratio) * out_[i];
+  }
+  const double ad = std::abs(d);
+  if (ad <= 1e-12 * std::sqrt(twice_area_)) return g;
+  const double den = r[0] * r[1] * r[2] + corner[0].dot(corner[1]) * r[2] + corner[0].dot(corner[2]) * r[1] +
+                     corner[1].dot(corner[2]) * r[0];
+  const double omega = 2 * std::atan2(ad * twice_area_, den);
+  return g - (d > 0 ? omega : -omega) * normal_;
+}
+
 double triangle_potential(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& s) {
   return TriangleSource(a, b, c).potential(s);
 }

@@ -36,6 +36,13 @@ class TriangleSource {
   TriangleSource() = default;  // degenerate: potential 0 everywhere
   TriangleSource(const Vec3& a, const Vec3& b, const Vec3& c);
   double potential(const Vec3& s) const;
+  // Its gradient at s: -sign(d) Omega n - sum over the edges of out_e log(...), d the height over
+  // the plane, Omega the solid angle. In the plane (|d| below 1e-12 of the size) the normal term
+  // is left out: on the triangle, the principal value; the jump is the caller's (+-1/2).
+  Vec3 gradient(const Vec3& s) const;
+  const Vec3& normal() const { return normal_; }
+  const Vec3& corner(int i) const { return corner_[i]; }
+  double area() const { return 0.5 * twice_area_; }
 
  private:
   Vec3 corner_[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};

@@ -1,0 +1,191 @@
+#include "void_surface.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <stdexcept>
+#include <tuple>
+
+#include <tbb/parallel_for.h>
+
+namespace mtcs::thermal {
+
+namespace {
+
+// Panel j's layer is integrated exactly (per sub-triangle) within kExact of its radius, as its
+// sub-triangles' points within kPoints, beyond as one point: the point's relative error there
+// is below (radius / distance)^2, ~1.5 % (the layer's dipole about the centroid vanishes).
+constexpr double kExact = 3, kPoints = 8;
+
+}  // namespace
+
+VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const Image> images, double panel,
+                         double conductivity)
+    : images_(images.begin(), images.end()), conductivity_(conductivity) {
+  if (!(panel > 0)) throw std::invalid_argument("cavity void: the panel size must be > 0");
+  // The wall's triangles cut into sub-triangles half a panel wide or less, gathered per cube of
+  // side `panel` and per direction of the steel's normal (a thin shell's two faces apart).
+  struct Cut {
+    std::vector<Sub> subs;
+    Vec3 normal_sum = Vec3::Zero();
+  };
+  std::map<std::tuple<long, long, long, int>, Cut> cubes;  // ordered: the same panels every time
+  Vec3 origin = Vec3::Constant(std::numeric_limits<double>::infinity());
+  for (const HeatedTriangle& t : wall) origin = origin.cwiseMin(t.a).cwiseMin(t.b).cwiseMin(t.c);
+  for (const HeatedTriangle& t : wall) {
+    const Vec3 twice = (t.b - t.a).cross(t.c - t.a);
+    if (twice.norm() == 0) continue;
+    const Vec3 steel = -twice.normalized();  // heat_in faces the void
+    int axis = 0;
+    steel.cwiseAbs().maxCoeff(&axis);
+    const int direction = 2 * axis + (steel[axis] > 0);
+    const double longest = std::max({(t.b - t.a).norm(), (t.c - t.b).norm(), (t.a - t.c).norm()});
+    const int k = std::max(1, int(std::ceil(2 * longest / panel)));
+    auto at = [&](double u, double v) { return Vec3(t.a + (u / k) * (t.b - t.a) + (v / k) * (t.c - t.a)); };
+    auto add = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
+      const Vec3 centroid = (a + b + c) / 3;
+      const Vec3 q = (centroid - origin) / panel;
+      Cut& cut = cubes[{long(std::floor(q.x())), long(std::floor(q.y())), long(std::floor(q.z())), direction}];
+      const TriangleSource source(a, b, c);
+      cut.subs.push_back({source, centroid, source.area(), t.flux});
+      cut.normal_sum += source.area() * steel;
+    };
+    for (int i = 0; i < k; ++i)
+      for (int j = 0; j < k - i; ++j) {
+        add(at(i, j), at(i + 1, j), at(i, j + 1));
+        if (j + 1 < k - i) add(at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+      }
+  }
+  if (cubes.empty()) throw std::invalid_argument("cavity void: the wall has no area");
+  for (auto& [key, cut] : cubes) {
+    double area = 0, heat = 0;
+    Vec3 weighted = Vec3::Zero();
+    for (const Sub& s : cut.subs) area += s.area, heat += s.area * s.flux, weighted += s.area * s.centroid;
+    const Vec3 centroid = weighted / area;
+    // Collocated at the sub-triangle nearest the centroid: a point on the wall, its normal.
+    const Sub* best = &cut.subs.front();
+    for (const Sub& s : cut.subs)
+      if ((s.centroid - centroid).squaredNorm() < (best->centroid - centroid).squaredNorm()) best = &s;
+    double radius = 0;
+    for (const Sub& s : cut.subs) radius = std::max(radius, (s.centroid - centroid).norm() + std::sqrt(2 * s.area));
+    point_.push_back(best->centroid);
+    normal_.push_back(-best->source.normal());
+    centroid_.push_back(centroid);
+    area_.push_back(area);
+    radius_.push_back(radius);
+    flux_.push_back(heat / area);
+    sub_.insert(sub_.end(), cut.subs.begin(), cut.subs.end());
+    begin_.push_back(sub_.size());
+  }
+
+  // A = 1/2 - K', row by row in parallel (each row its own).
+  const std::size_t n = panels();
+  const auto N = Eigen::Index(n);
+  Eigen::MatrixXd A(N, N);
+  const double inv4pi = 1 / (4 * std::numbers::pi);
+  // Near pairs: the flux through panel i (its sub-triangles' centroids, area-weighted), not the
+  // normal derivative at one point: across a thin shell's void, the two faces' panels see each
+  // other at nearly a half space, and only the flux keeps the small difference that matters.
+  tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+    for (std::size_t j = 0; j < n; ++j) {
+      const double reach = kExact * radius_[j] + radius_[i];
+      double v;
+      if ((centroid_[i] - centroid_[j]).squaredNorm() < reach * reach) {
+        v = 0;
+        for (std::size_t s = begin_[i]; s < begin_[i + 1]; ++s) {
+          const Vec3 steel = -sub_[s].source.normal();
+          v += sub_[s].area * panel_field(j, sub_[s].centroid, &steel);
+        }
+        v /= area_[i];
+      } else {
+        v = panel_field(j, point_[i], &normal_[i]);
+      }
+      A(Eigen::Index(i), Eigen::Index(j)) = -inv4pi * v;
+    }
+    A(Eigen::Index(i), Eigen::Index(i)) += 0.5;
+  });
+  // The heat input's sheets (q / k per panel) seen from the void side: (1/2 + K') q / k = (I - A) q / k.
+  Eigen::VectorXd q(N);
+  for (std::size_t j = 0; j < n; ++j) q[Eigen::Index(j)] = flux_[j] / conductivity;
+  const Eigen::VectorXd rhs = q - A * q;
+  lu_.compute(A);
+  heat_tau_ = lu_.solve(rhs);
+  inverse_ = lu_.inverse().cast<float>();
+  lu_transposed_.compute(A.transpose());
+}
+
+double VoidSurface::panel_field(std::size_t j, const Vec3& x, const Vec3* normal) const {
+  const double R2 = radius_[j] * radius_[j];
+  double sum = 0;
+  for (const Image& g : images_) {
+    const Vec3 p = g.mult.cwiseProduct(x) + g.offset;
+    const Vec3 m = normal ? Vec3(g.mult.cwiseProduct(*normal)) : Vec3::Zero();
+    const double d2 = (p - centroid_[j]).squaredNorm();
+    auto point = [&](const Vec3& c, double area) {
+      const Vec3 r = p - c;
+      const double inv = 1 / r.norm();
+      return normal ? -area * m.dot(r) * inv * inv * inv : area * inv;
+    };
+    double v = 0;
+    if (d2 < kExact * kExact * R2) {
+      for (std::size_t s = begin_[j]; s < begin_[j + 1]; ++s)
+        v += normal ? m.dot(sub_[s].source.gradient(p)) : sub_[s].source.potential(p);
+    } else if (d2 < kPoints * kPoints * R2) {
+      for (std::size_t s = begin_[j]; s < begin_[j + 1]; ++s) v += point(sub_[s].centroid, sub_[s].area);
+    } else {
+      v = point(centroid_[j], area_[j]);
+    }
+    sum += g.sign * v;
+  }
+  return sum;
+}
+
+bool VoidSurface::reaches(const Vec3& a, const Vec3& b, double radius) const {
+  const Vec3 d = b - a;
+  const double dd = d.squaredNorm();
+  auto distance = [&](const Vec3& p) {
+    const double t = dd > 0 ? std::clamp((p - a).dot(d) / dd, 0.0, 1.0) : 0.0;
+    return (p - a - t * d).norm();
+  };
+  for (std::size_t j = 0; j < panels(); ++j) {
+    if (distance(centroid_[j]) >= radius + radius_[j]) continue;
+    for (std::size_t s = begin_[j]; s < begin_[j + 1]; ++s)  // a sub-triangle lies within sqrt(2 area) of its centroid
+      if (distance(sub_[s].centroid) < radius + std::sqrt(2 * sub_[s].area)) return true;
+  }
+  return false;
+}
+
+std::vector<HeatedTriangle> VoidSurface::heat_with_void() const {
+  std::vector<HeatedTriangle> out;
+  out.reserve(sub_.size());
+  for (std::size_t j = 0; j < panels(); ++j)
+    for (std::size_t s = begin_[j]; s < begin_[j + 1]; ++s) {
+      const Sub& sub = sub_[s];
+      out.push_back({sub.source.corner(0), sub.source.corner(1), sub.source.corner(2),
+                     sub.flux + conductivity_ * heat_tau_[Eigen::Index(j)]});
+    }
+  return out;
+}
+
+Eigen::MatrixXd VoidSurface::potentials(std::span<const Vec3> targets) const {
+  const std::size_t n = panels(), t = targets.size();
+  Eigen::MatrixXd S(static_cast<Eigen::Index>(t), static_cast<Eigen::Index>(n));
+  const double inv4pi = 1 / (4 * std::numbers::pi);
+  for (std::size_t i = 0; i < t; ++i)
+    for (std::size_t j = 0; j < n; ++j) S(Eigen::Index(i), Eigen::Index(j)) = inv4pi * panel_field(j, targets[i], nullptr);
+  return S;
+}
+
+Eigen::MatrixXd VoidSurface::response(std::span<const Vec3> targets) const {
+  const std::size_t n = panels(), t = targets.size();
+  Eigen::MatrixXd St(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(t));  // S transposed: one target per column
+  const double inv4pi = 1 / (4 * std::numbers::pi);
+  tbb::parallel_for(std::size_t(0), t, [&](std::size_t i) {
+    for (std::size_t j = 0; j < n; ++j) St(Eigen::Index(j), Eigen::Index(i)) = inv4pi * panel_field(j, targets[i], nullptr);
+  });
+  // (S A^-1)^T = A^-T S^T.
+  return lu_transposed_.solve(St).transpose();
+}
+
+}  // namespace mtcs::thermal

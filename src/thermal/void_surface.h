@@ -1,0 +1,84 @@
+#pragma once
+// The cavity void for the line-sink tiers, any cavity mesh (thermal.cavity_void: surface).
+// The line sinks and the heat input's sheets live in solid steel; the part's void (plastic,
+// which barely conducts) is not steel, and its wall takes no heat but the cavity's own. On a
+// thin shell (a cup) that is the whole story: without the void, the bores outside cool the
+// core through 2.5 mm of "steel"; the line sinks read the finite volumes with Kendall tau 0.18
+// and an RMS error of 47 K there, with the void filled in the finite volumes as well tau 0.91
+// and 2 K (experiments/thermal/void_surface.md).
+//
+// So each source field f gets a correction: a single layer tau on the wall whose steel-side
+// normal derivative cancels f's, (1/2 - K') tau = df/dn (n into the steel, K' the adjoint
+// double layer, the block's images included), on panels of constant tau about `panel` mm wide
+// (the wall's triangles cut finer, gathered per cube and per direction of the normal). Near
+// panels are integrated exactly (closed forms per sub-triangle), far ones as points; between
+// near panels the condition holds for the flux through the panel, not at one point (across a
+// thin void the two faces see each other at nearly a half space: only the flux keeps the small
+// difference that matters). The heat input's own correction joins its sheets (their fluxes
+// change, nothing else does); a channel's columns get the layer answering their normal
+// derivatives at the panels, at the samples, the faces and every channel's wall.
+// Private to src/thermal.
+
+#include <Eigen/Dense>
+#include <span>
+#include <vector>
+
+#include "line_sink_fields.h"
+#include "mtcs/thermal/model.h"
+
+namespace mtcs::thermal {
+
+class VoidSurface {
+ public:
+  // wall: the cavity's triangles as in Setting::heat_in (counter-clockwise from the void),
+  // with their fluxes; images: the reflections summed exactly. Throws std::invalid_argument
+  // on a panel size <= 0 or a wall without area.
+  VoidSurface(std::span<const HeatedTriangle> wall, std::span<const Image> images, double panel,
+              double conductivity);
+
+  std::size_t panels() const { return point_.size(); }
+  // Each panel's collocation point (on the wall) and normal into the steel.
+  const std::vector<Vec3>& points() const { return point_; }
+  const std::vector<Vec3>& normals() const { return normal_; }
+
+  // The heat input with the void: the wall's sub-triangles, each with its flux plus k tau of
+  // its panel (the heat that the filled model sends into the void sent back into the steel).
+  std::vector<HeatedTriangle> heat_with_void() const;
+
+  // targets x panels: the temperature at each target of the layer solving (1/2 - K') tau = d
+  // for a unit d at each panel, (1/4 pi) S A^-1. A field whose steel-side normal derivative at
+  // the panels is D (panels x columns) gets response D added at the targets.
+  Eigen::MatrixXd response(std::span<const Vec3> targets) const;
+  // The layer tau = A^-1 D of normal derivatives D (panels x columns), and its temperature at
+  // targets: potentials(targets) tau, potentials (targets x panels) = (1/4 pi) S.
+  Eigen::MatrixXd layer(const Eigen::MatrixXd& d) const { return lu_.solve(d); }
+  // The same in single precision, by A^-1 kept explicit (a product, not two triangular solves).
+  Eigen::MatrixXf layer(const Eigen::MatrixXf& d) const { return inverse_ * d; }
+  Eigen::MatrixXd potentials(std::span<const Vec3> targets) const;
+
+  // Whether the cylinder of `radius` about a -> b reaches the wall (a bore through the part, or
+  // touching it: an illegal layout, whose columns keep no reflection, as without the void).
+  bool reaches(const Vec3& a, const Vec3& b, double radius) const;
+
+ private:
+  struct Sub {
+    TriangleSource source;
+    Vec3 centroid;
+    double area, flux;
+  };
+  // The potential (gradient == false) or the gradient's component along `normal` of panel j's
+  // unit layer at p, images summed, free of 1/(4 pi).
+  double panel_field(std::size_t j, const Vec3& p, const Vec3* normal) const;
+
+  std::vector<Image> images_;
+  double conductivity_ = 0;
+  std::vector<Sub> sub_;                       // by panel
+  std::vector<std::size_t> begin_{0};          // panel j: sub_[begin_[j], begin_[j + 1])
+  std::vector<Vec3> point_, normal_, centroid_;
+  std::vector<double> area_, radius_, flux_;   // flux: area-weighted mean over the panel
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_, lu_transposed_;  // of A = 1/2 - K' and of its transpose
+  Eigen::MatrixXf inverse_;                    // A^-1
+  Eigen::VectorXd heat_tau_;                   // the heat input's own correction
+};
+
+}  // namespace mtcs::thermal

@@ -1,0 +1,176 @@
+// The part's void for the line sinks (src/thermal/void_surface.h) against closed forms: a
+// sphere's void in an unbounded body.
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <vector>
+
+#include "thermal/line_sink_fields.h"
+#include "thermal/void_surface.h"
+#include "mtcs/thermal/finite_volume.h"
+#include "mtcs/thermal/line_sinks.h"
+#include "mtcs/mesh/triangle_mesh.h"
+#include <memory>
+#include <random>
+
+using namespace mtcs::thermal;
+
+namespace {
+
+// An icosphere of radius a about c, its triangles as Setting::heat_in has a cavity's
+// (counter-clockwise seen from the void), each with `flux`.
+std::vector<HeatedTriangle> sphere_wall(const Vec3& c, double a, int levels, double flux) {
+  const double t = (1 + std::sqrt(5.0)) / 2;
+  std::vector<Vec3> v{{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                      {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<std::array<int, 3>> f{{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                    {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                    {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                    {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  for (Vec3& p : v) p.normalize();
+  for (int l = 0; l < levels; ++l) {
+    std::map<std::pair<int, int>, int> middle;
+    auto mid = [&](int i, int j) {
+      const auto key = std::minmax(i, j);
+      if (auto it = middle.find(key); it != middle.end()) return it->second;
+      v.push_back((v[std::size_t(i)] + v[std::size_t(j)]).normalized());
+      return middle[key] = int(v.size()) - 1;
+    };
+    std::vector<std::array<int, 3>> g;
+    for (const auto& [i, j, k] : f) {
+      const int a0 = mid(i, j), b0 = mid(j, k), c0 = mid(k, i);
+      g.push_back({i, a0, c0}), g.push_back({j, b0, a0}), g.push_back({k, c0, b0}), g.push_back({a0, b0, c0});
+    }
+    f = g;
+  }
+  std::vector<HeatedTriangle> out;
+  for (const auto& [i, j, k] : f)  // outward counter-clockwise: reversed, seen from the void
+    out.push_back({c + a * v[std::size_t(i)], c + a * v[std::size_t(k)], c + a * v[std::size_t(j)], flux});
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("void surface: an insulated sphere in a uniform gradient, and a uniformly heated one") {
+  const Vec3 c(10, -5, 3);
+  const double a = 20, k = 0.03;
+  const std::vector<Image> unbounded{Image{}};
+  const std::vector<HeatedTriangle> wall = sphere_wall(c, a, 3, 0.035);
+  const VoidSurface v(wall, unbounded, 6, k);
+  REQUIRE(v.panels() > 100);
+  for (std::size_t i = 0; i < v.panels(); ++i) {
+    CHECK(std::abs((v.points()[i] - c).norm() - a) < 0.2);                 // on the wall
+    CHECK(v.normals()[i].dot((v.points()[i] - c).normalized()) > 0.95);  // outward: into the steel
+  }
+  // T = z far away, an insulated sphere: T = z (1 + a^3 / (2 r^3)) about its centre. The layer
+  // answers df/dn = n_z with a^3 cos(theta) / (2 r^2): a / 2 on the wall's top, a / 8 at 2a.
+  Eigen::MatrixXd d(Eigen::Index(v.panels()), 1);
+  for (std::size_t i = 0; i < v.panels(); ++i) d(Eigen::Index(i), 0) = v.normals()[i].z();
+  std::vector<Vec3> targets;
+  for (const double r : {a, 1.2 * a, 2 * a})
+    for (const Vec3& u : {Vec3(0, 0, 1), Vec3(0.6, 0, 0.8), Vec3(0, -0.8, -0.6), Vec3(1, 0, 0)}) targets.push_back(c + r * u);
+  const Eigen::VectorXd got = v.response(targets) * d;
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    const Vec3 p = targets[i] - c;
+    const double r = p.norm(), exact = a * a * a * (p.z() / r) / (2 * r * r);
+    INFO("at r = " << r << ", cos " << p.z() / r << ": " << got[Eigen::Index(i)] << " against " << exact);
+    CHECK(std::abs(got[Eigen::Index(i)] - exact) <= 0.03 * a / 2);
+  }
+  // A uniform flux on a sphere leaves through the steel as it does from a sheet in solid steel
+  // (the field outside is the same): no correction, to the panels' error.
+  double worst = 0;
+  for (const HeatedTriangle& t : v.heat_with_void()) worst = std::max(worst, std::abs(t.flux - 0.035));
+  CHECK(worst <= 0.05 * 0.035);
+}
+
+namespace {
+
+// An 80 x 60 x 42 mm block, nearly adiabatic outside, with a 50 x 36 x 3 mm plate-shaped void in
+// its middle (a mesh cavity), heated through all of its faces.
+Setting plate_void_setting() {
+  Setting s;
+  s.block = {Vec3(0, 0, 0), Vec3(80, 60, 42)};
+  s.conductivity = 0.03;
+  for (auto& f : s.faces) f = {1e-5, 25};
+  auto mesh = std::make_shared<mtcs::mesh::TriangleMesh>(mtcs::mesh::box_mesh({Vec3(15, 12, 19.5), Vec3(65, 48, 22.5)}));
+  for (std::size_t t = 0; t < mesh->triangles.size(); ++t)  // seen from the void: reversed
+    s.heat_in.push_back({mesh->corner(t, 0), mesh->corner(t, 2), mesh->corner(t, 1), 0.03});
+  s.cavity_mesh = mesh;
+  return s;
+}
+
+// The void's top and bottom faces, a 2.5 mm grid.
+Samples plate_void_samples() {
+  Samples s;
+  for (const double z : {19.5, 22.5})
+    for (double x = 16.25; x < 65; x += 2.5)
+      for (double y = 13.25; y < 48; y += 2.5) s.points.emplace_back(x, y, z), s.weights.push_back(6.25);
+  return s;
+}
+
+double kendall_tau(const std::vector<double>& a, const std::vector<double>& b) {
+  double s = 0, n = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = i + 1; j < a.size(); ++j) s += ((a[i] > a[j]) - (a[i] < a[j])) * ((b[i] > b[j]) - (b[i] < b[j])), ++n;
+  return s / n;
+}
+
+}  // namespace
+
+TEST_CASE("void surface: the line sinks see a plate-shaped void as the finite volumes do") {
+  const Setting s = plate_void_setting();
+  const Samples samples = plate_void_samples();
+  LineSinkOptions with_void;
+  with_void.void_panel = 6;
+  const LineSinkModel plain(s, samples), voided(s, samples, with_void);
+  LineSinkCache c1, c2;
+  // Bores along x below the void, above it, or both: without the void, a bore below cools the
+  // top face through 3 mm of "steel"; with it, only around the rim.
+  std::mt19937 rng(20261130);
+  std::uniform_real_distribution<double> y(8, 52), below(6, 14), above(28, 36);
+  std::vector<double> fv_std, plain_std, void_std, fv_mean, void_mean;
+  double plain_sq = 0, void_sq = 0, n = 0;
+  for (int k = 0; k < 8; ++k) {
+    std::vector<Channel> bores;
+    for (int b = 0; b < 3; ++b) {
+      const double z = (k % 3 == 0 || (k % 3 == 2 && b == 0)) ? above(rng) : below(rng), yb = y(rng);
+      bores.push_back({mtcs::geometry::Segment{Vec3(0, yb, z), Vec3(80, yb, z)}, 4, 40});
+    }
+    const FvResult fv = solve_finite_volume({s, bores}, samples, {1.0});
+    const std::vector<double> a = plain.temperatures(bores, c1), b = voided.temperatures(bores, c2);
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      plain_sq += std::pow(a[i] - fv.temperature[i], 2), void_sq += std::pow(b[i] - fv.temperature[i], 2);
+      n += 1;
+    }
+    fv_std.push_back(summarize(fv.temperature, samples).std), fv_mean.push_back(summarize(fv.temperature, samples).mean);
+    plain_std.push_back(summarize(a, samples).std);
+    void_std.push_back(summarize(b, samples).std), void_mean.push_back(summarize(b, samples).mean);
+  }
+  const double plain_rms = std::sqrt(plain_sq / n), void_rms = std::sqrt(void_sq / n);
+  INFO("RMS against T3 at 1 mm: plain " << plain_rms << " K, void " << void_rms << " K; tau of the std: plain "
+                                        << kendall_tau(plain_std, fv_std) << ", void " << kendall_tau(void_std, fv_std)
+                                        << "; of the mean: void " << kendall_tau(void_mean, fv_mean));
+  CHECK(void_rms < 0.5 * plain_rms);
+  CHECK(kendall_tau(void_std, fv_std) >= 0.7);
+  CHECK(kendall_tau(void_std, fv_std) > kendall_tau(plain_std, fv_std));
+  CHECK(kendall_tau(void_mean, fv_mean) >= 0.7);
+}
+
+TEST_CASE("void surface: a bore through the part keeps no reflection and stays finite") {
+  const Setting s = plate_void_setting();
+  const Samples samples = plate_void_samples();
+  LineSinkOptions with_void;
+  with_void.void_panel = 6;
+  const LineSinkModel voided(s, samples, with_void);
+  LineSinkCache cache;
+  // Through the void's middle, and one grazing its top face.
+  for (const double z : {21.0, 22.5 + 3.5}) {
+    const std::vector<Channel> bores{{mtcs::geometry::Segment{Vec3(0, 30, z), Vec3(80, 30, z)}, 4, 40}};
+    const LineSinkSolution r = voided.solve(bores, cache);
+    for (const double t : r.temperature) REQUIRE(std::isfinite(t));
+    CHECK(summarize(r.temperature, samples).max < 200);
+    CHECK(summarize(r.temperature, samples).mean > 40);
+  }
+}
