@@ -283,6 +283,10 @@ int bench_thermal(const ThermalBenchOptions& o) {
   // A mesh cavity: also the line sinks that know its void (thermal.cavity_void: surface).
   if (c.setting.cavity_mesh)
     for (const double panel : o.void_panels) tiers.insert(tiers.begin() + 5, Tier{"t2d", 4, 0, panel});
+  if (!o.tiers.empty())  // only those asked for, by the start of their labels
+    std::erase_if(tiers, [&](const Tier& t) {
+      return std::none_of(o.tiers.begin(), o.tiers.end(), [&](const std::string& w) { return label(t).rfind(w, 0) == 0; });
+    });
   std::vector<Row> rows;
   for (const Tier& t : tiers) {
     const auto t1 = std::chrono::steady_clock::now();

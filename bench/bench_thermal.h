@@ -17,7 +17,8 @@ struct ThermalBenchOptions {
   bool json = false;
   std::vector<double> void_panels{6, 10};
   int circuits = 3;            // per random layout of a mold (4 legs each)
-  bool through_part = false;   // keep the random layouts that drill through the part  // mm: t2d M=4 with the void (mesh cavities only)
+  bool through_part = false;
+  std::vector<std::string> tiers;  // labels' starts ("t2d M=4", "fd"); empty: every tier   // keep the random layouts that drill through the part  // mm: t2d M=4 with the void (mesh cavities only)
 };
 
 // Prints one row per tier: CSV on stdout, or a JSON object with default_tier and tiers.

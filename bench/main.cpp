@@ -198,6 +198,8 @@ int run(int argc, char** argv) {
       ->capture_default_str()->check(CLI::Range(1, 16));
   thermal->add_flag("--through-part", to->through_part,
                     "a mold: keep the random layouts whose bores cross the part (by default only those clear of it)");
+  thermal->add_option("--tiers", to->tiers, "only the tiers whose labels start so, comma-separated (e.g. \"t0,t2d M=4\")")
+      ->delimiter(',');
   thermal->add_flag("--json", to->json, "one JSON object instead of CSV");
 
   auto ao = std::make_shared<AccessMapBenchOptions>();

@@ -211,6 +211,10 @@ std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(
   b->heat_rows.resize(cols);
   row_functionals(a, [&](const Vec3& p, double* v) { v[0] = heat_at(p); }, 1,
                   b->heat_rows.data(), cols);
+  if (void_surface) {  // the heat input's correction
+    const VectorXd v = b->void_walls * void_surface->heat_layer();
+    b->heat_rows += rows_from(a, kinds, 1, [&](int i, Eigen::Index) { return v[i]; });
+  }
   b->far_rows.resize(cols, 4);
   row_functionals(a, [&](const Vec3& p, double* v) {
     const Eigen::Vector4d k = far_at(p);

@@ -90,8 +90,7 @@ struct Tables {
 
 // Every number the tables depend on, in order: equal keys, equal tables.
 std::vector<double> tables_key(const Setting& setting, const LineSinkOptions& options) {
-  std::vector<double> key{double(options.images), double(options.far_images), options.heat_grid, setting.conductivity,
-                          setting.cavity_mesh ? options.void_panel : 0.0};
+  std::vector<double> key{double(options.images), double(options.far_images), options.heat_grid, setting.conductivity};
   for (const Vec3& v : {setting.block.min, setting.block.max}) key.insert(key.end(), v.data(), v.data() + 3);
   for (const FaceCondition& f : setting.faces) key.push_back(f.film), key.push_back(f.ambient);
   for (const HeatedTriangle& t : setting.heat_in) {
@@ -168,18 +167,12 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     m.heat_moments[0] += q;
     m.heat_moments.tail<3>() += q * ((t.a + t.b + t.c) / 3 - m.center);
   }
-  // The part's void: the heat input's sheets take the void's correction (their total and
-  // moments stay: the correction carries no heat).
-  std::vector<HeatedTriangle> void_heat;
-  if (options.void_panel > 0 && setting.cavity_mesh && !setting.heat_in.empty()) {
-    m.void_surface.emplace(setting.heat_in, sample_images, options.void_panel, setting.conductivity);
-    void_heat = m.void_surface->heat_with_void();
-  }
-  const std::span<const HeatedTriangle> heat = m.void_surface ? std::span<const HeatedTriangle>(void_heat)
-                                                              : std::span<const HeatedTriangle>(setting.heat_in);
-  for (const HeatedTriangle& t : heat)
+  for (const HeatedTriangle& t : setting.heat_in)
     if (t.flux != 0) m.heat_sources.push_back({TriangleSource(t.a, t.b, t.c), t.flux});
-  if (m.heat_sources.size() > Impl::kTreeAbove) m.heat_tree.emplace(heat, kHeatTreeTheta);
+  if (m.heat_sources.size() > Impl::kTreeAbove) m.heat_tree.emplace(setting.heat_in, kHeatTreeTheta);
+  // The part's void (void_surface.h).
+  if (options.void_panel > 0 && setting.cavity_mesh && !setting.heat_in.empty())
+    m.void_surface.emplace(setting.heat_in, sample_images, options.void_panel, setting.conductivity);
 
   // Convective faces: one unknown uniform loss each, collocated on a grid of the face's part
   // that is not heated.
@@ -397,7 +390,11 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
       m.face_face_means(f, f2) = s / double(plain.size());
     }
   }
-  if (m.void_surface) m.face_face_means += m.face_void;
+  if (m.void_surface) {  // the void's correction of the face losses and of the heat input
+    m.face_face_means += m.face_void;
+    m.heat_samples += m.void_samples * m.void_surface->heat_derivatives();
+    m.heat_face_means += m.void_faces * m.void_surface->heat_derivatives();
+  }
 }
 
 }  // namespace mtcs::thermal

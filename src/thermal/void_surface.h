@@ -41,9 +41,11 @@ class VoidSurface {
   const std::vector<Vec3>& points() const { return point_; }
   const std::vector<Vec3>& normals() const { return normal_; }
 
-  // The heat input with the void: the wall's sub-triangles, each with its flux plus k tau of
-  // its panel (the heat that the filled model sends into the void sent back into the steel).
-  std::vector<HeatedTriangle> heat_with_void() const;
+  // The heat input's own correction, a source like any other: its sheets (q / k per panel)
+  // seen from the void's side, (1/2 + K') q / k, stand for its normal derivative D (the heat
+  // the model without the void sends into it, sent back into the steel); and its layer.
+  const Eigen::VectorXd& heat_derivatives() const { return heat_d_; }
+  const Eigen::VectorXd& heat_layer() const { return heat_tau_; }
 
   // targets x panels: the temperature at each target of the layer solving (1/2 - K') tau = d
   // for a unit d at each panel, (1/4 pi) S A^-1. A field whose steel-side normal derivative at
@@ -69,6 +71,8 @@ class VoidSurface {
   // The potential (gradient == false) or the gradient's component along `normal` of panel j's
   // unit layer at p, images summed, free of 1/(4 pi).
   double panel_field(std::size_t j, const Vec3& p, const Vec3* normal) const;
+  // The potential alone, cheaper: the far panels by their second moments.
+  double panel_potential(std::size_t j, const Vec3& p) const;
 
   std::vector<Image> images_;
   double conductivity_ = 0;
@@ -76,9 +80,10 @@ class VoidSurface {
   std::vector<std::size_t> begin_{0};          // panel j: sub_[begin_[j], begin_[j + 1])
   std::vector<Vec3> point_, normal_, centroid_;
   std::vector<double> area_, radius_, flux_;   // flux: area-weighted mean over the panel
+  std::vector<Eigen::Matrix3d> second_;        // sum of area (c - centroid)(c - centroid)^T over the subs
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_, lu_transposed_;  // of A = 1/2 - K' and of its transpose
   Eigen::MatrixXf inverse_;                    // A^-1
-  Eigen::VectorXd heat_tau_;                   // the heat input's own correction
+  Eigen::VectorXd heat_d_, heat_tau_;          // the heat input's own correction
 };
 
 }  // namespace mtcs::thermal
