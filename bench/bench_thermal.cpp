@@ -280,8 +280,8 @@ int bench_thermal(const ThermalBenchOptions& o) {
 
   std::vector<Tier> tiers = {{"t0"},       {"t1", 1},    {"t2", 4},    {"t2d", 2},  {"t2d", 4},
                              {"t2d", 8},   {"t2d", 12},  {"fd", 0, 4}, {"fd", 0, 2}};
-  // A mesh cavity: also the line sinks that know its void (thermal.cavity_void: surface).
-  if (c.setting.cavity_mesh)
+  // A cavity in the block: also the line sinks that know its void (thermal.cavity_void: surface).
+  if (c.setting.cavity_mesh || c.setting.cavity_box)
     for (const double panel : o.void_panels) tiers.insert(tiers.begin() + 5, Tier{"t2d", 4, 0, panel});
   if (!o.tiers.empty())  // only those asked for, by the start of their labels
     std::erase_if(tiers, [&](const Tier& t) {

@@ -125,6 +125,16 @@ def physics(thickness, extra="", temperatures=True):
             "           temperature_max: 10, cycle_time: 10}\n")
 
 
+def void_surface(panel):
+    """The line sinks' view of the part's void: an insulating surface of panels this wide (mm);
+    the width per mold from experiments/thermal/void_surface.md (ranking against the finite
+    volumes, cost per new bore)."""
+    return ("# The part's void as an insulating surface of %g mm panels: on random layouts the line\n"
+            "# sinks then rank as the finite volumes do (experiments/thermal/void_surface.md).\n"
+            "  cavity_void: surface\n"
+            "  void_panel: %g\n" % (panel, panel))
+
+
 TIER0 = """objectives:
   use: [uniformity, worst_covered, cost]
   scales: {uniformity: 5, worst_covered: 20, cost: 1000}
@@ -166,7 +176,7 @@ def main(out):
            ((52.5, 50, 42.5), (167.5, 52.5, 80)), ((52.5, 127.5, 42.5), (167.5, 130, 80))]
     write_off(os.path.join(meshes, "cup.off"), union_mesh(cup))
     with open(os.path.join(out, "cup.yaml"), "w") as f:
-        f.write(CUP.replace("{physics}", physics(2.5, temperatures=False)))
+        f.write(CUP.replace("{physics}", physics(2.5, extra=void_surface(12))))
     write_layout(os.path.join(out, "cup.layout.yaml"),
                  [(8, u_loop(70, 100, 115, 24)), (8, u_loop(120, 150, 115, 24)),
                   (8, u_loop(30, 190, 150, 60))],
@@ -176,7 +186,7 @@ def main(out):
     bracket = [((60, 40, 40), (180, 140, 46)), ((60, 40, 46), (66, 140, 120))]
     write_off(os.path.join(meshes, "l_bracket.off"), union_mesh(bracket))
     with open(os.path.join(out, "l_bracket.yaml"), "w") as f:
-        f.write(BRACKET.replace("{physics}", physics(6, temperatures=False)))
+        f.write(BRACKET.replace("{physics}", physics(6, extra=void_surface(12))))
     write_layout(os.path.join(out, "l_bracket.layout.yaml"),
                  [(8, u_loop(80, 110, 125, 26)), (8, u_loop(130, 160, 125, 26)),
                   (8, u_loop(44, 24, 125, 90))],
@@ -188,14 +198,14 @@ def main(out):
                     ((130, 100, 42.5), (145, 115, 78))]           # deep boss
     write_off(os.path.join(meshes, "ribbed_box.off"), union_mesh(ribbed))
     with open(os.path.join(out, "ribbed_box.yaml"), "w") as f:
-        f.write(RIBBED.replace("{physics}", physics(2.5, temperatures=False)))
+        f.write(RIBBED.replace("{physics}", physics(2.5, extra=void_surface(12))))
     write_layout(os.path.join(out, "ribbed_box.layout.yaml"),
                  [(8, u_loop(70, 100, 115, 24)), (8, u_loop(120, 150, 115, 24))],
                  "ribbed_box: the floor only; the boss stays hot (baffles are out of scope)")
 
     # A real part: the herringbone gear of molds/meshes (LGPL-2.1, see molds/meshes/LICENSE.md).
     with open(os.path.join(out, "gear.yaml"), "w") as f:
-        f.write(GEAR.replace("{physics}", physics(5, temperatures=False)))
+        f.write(GEAR.replace("{physics}", physics(5, extra=void_surface(8))))
     write_layout(os.path.join(out, "gear.layout.yaml"),
                  [(8, u_loop(55, 85, 125, 25)), (8, u_loop(100, 130, 125, 25)),
                   (8, [(160, 50, 56), (132, 50, 56), (132, 110, 56), (160, 110, 56)])],

@@ -514,6 +514,10 @@ MoldSpec load_mold_spec(const std::string& path) {
     s.circuits.min = std::min(s.circuits.max, default_min_circuits(s.cavity->bounds()));
   if (root["objectives"]) s.objectives = parse_objectives(r, root["objectives"]);
   if (root["thermal"]) s.thermal = parse_thermal(r, root["thermal"]);
+  // A mesh cavity (a part) is a void the line sinks must see: without it they rank its layouts
+  // no better than the wall distances do (experiments/thermal/void_surface.md).
+  if (!(root["thermal"] && root["thermal"]["cavity_void"]) && s.cavity && s.cavity->mesh)
+    s.thermal.void_panel = kDefaultVoidPanel;
   // Coarser samples only: the cavity's count check then bounds the thermal set too.
   if (s.thermal.sample_spacing && s.cavity && *s.thermal.sample_spacing < s.cavity->sample_spacing)
     r.fail(root["thermal"]["sample_spacing"], "thermal.sample_spacing",

@@ -171,7 +171,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     if (t.flux != 0) m.heat_sources.push_back({TriangleSource(t.a, t.b, t.c), t.flux});
   if (m.heat_sources.size() > Impl::kTreeAbove) m.heat_tree.emplace(setting.heat_in, kHeatTreeTheta);
   // The part's void (void_surface.h).
-  if (options.void_panel > 0 && setting.cavity_mesh && !setting.heat_in.empty())
+  if (options.void_panel > 0 && (setting.cavity_mesh || setting.cavity_box) && !setting.heat_in.empty())
     m.void_surface.emplace(setting.heat_in, sample_images, options.void_panel, setting.conductivity);
 
   // Convective faces: one unknown uniform loss each, collocated on a grid of the face's part
@@ -356,7 +356,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
   if (m.void_surface) {
     // The samples' and faces' response to the panels, and the face losses' correction.
     const VoidSurface& v = *m.void_surface;
-    m.void_step = 1e-2 * options.void_panel;
+    m.void_step = 1e-2 * v.panel();
     for (std::size_t i = 0; i < v.panels(); ++i)
       for (const double side : {1.0, -1.0}) {
         m.void_pairs.add(sample_images, v.points()[i] + side * m.void_step * v.normals()[i], m.tol, 1.0, m.sample_origin);

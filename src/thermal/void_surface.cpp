@@ -17,6 +17,8 @@ namespace {
 // sub-triangles' points within kPoints, beyond as one point: the point's relative error there
 // is below (radius / distance)^2, ~1.5 % (the layer's dipole about the centroid vanishes).
 constexpr double kExact = 3, kPoints = 8;
+// ~N^2 of memory (N = 3000: 72 MB in double, with the inverse in float), N^3 / 3 for the LU.
+constexpr double kMaxPanels = 3000;
 
 }  // namespace
 
@@ -24,6 +26,11 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
                          double conductivity)
     : images_(images.begin(), images.end()), conductivity_(conductivity) {
   if (!(panel > 0)) throw std::invalid_argument("cavity void: the panel size must be > 0");
+  // At most kMaxPanels panels: the dense solve costs panels^3 once and panels^2 per new bore.
+  double area = 0;
+  for (const HeatedTriangle& t : wall) area += 0.5 * (t.b - t.a).cross(t.c - t.a).norm();
+  panel = std::max(panel, std::sqrt(area / kMaxPanels));
+  panel_ = panel;
   // The wall's triangles cut into sub-triangles half a panel wide or less, gathered per cube of
   // side `panel` and per direction of the steel's normal (a thin shell's two faces apart).
   struct Cut {

@@ -37,6 +37,8 @@ class VoidSurface {
               double conductivity);
 
   std::size_t panels() const { return point_.size(); }
+  // The panels' width: `panel`, or wider on a wall too large for 3000 panels of that width.
+  double panel() const { return panel_; }
   // Each panel's collocation point (on the wall) and normal into the steel.
   const std::vector<Vec3>& points() const { return point_; }
   const std::vector<Vec3>& normals() const { return normal_; }
@@ -75,7 +77,7 @@ class VoidSurface {
   double panel_potential(std::size_t j, const Vec3& p) const;
 
   std::vector<Image> images_;
-  double conductivity_ = 0;
+  double conductivity_ = 0, panel_ = 0;
   std::vector<Sub> sub_;                       // by panel
   std::vector<std::size_t> begin_{0};          // panel j: sub_[begin_[j], begin_[j + 1])
   std::vector<Vec3> point_, normal_, centroid_;

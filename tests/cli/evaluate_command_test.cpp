@@ -43,7 +43,7 @@ TEST_CASE("mtcs evaluate --json prints one object with the documented fields", "
   REQUIRE(r.code == 0);
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j["feasible"].is_boolean());
-  CHECK(j["objectives"].contains("uniformity"));
+  CHECK(j["objectives"].contains("temperature_std"));
   CHECK(j["objectives"].contains("cost"));
   CHECK(j["violations"].is_array());
   bool mesh_stage = false;

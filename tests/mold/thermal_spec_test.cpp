@@ -72,6 +72,22 @@ TEST_CASE("thermal spec: cavity_void, ignore by default, plane on request", "[mo
   CHECK(e.column() == 16);
 }
 
+TEST_CASE("thermal spec: cavity_void surface, its panels 8 mm unless void_panel says", "[mold][thermal]") {
+  CHECK(load(kBlock).thermal.void_panel == 0);
+  CHECK(load(kBlock + "thermal: {cavity_void: surface}\n").thermal.void_panel == 8);
+  CHECK(load(kBlock + "thermal: {cavity_void: surface, void_panel: 12}\n").thermal.void_panel == 12);
+  CHECK_FALSE(load(kBlock + "thermal: {cavity_void: surface}\n").thermal.void_plane);
+  const auto alone = error_of(kBlock + "thermal:\n  void_panel: 12\n");
+  CHECK(alone.field() == "thermal.void_panel");
+  CHECK(alone.line() == 3);
+  const auto tiny = error_of(kBlock + "thermal: {cavity_void: surface, void_panel: 0}\n");
+  CHECK(tiny.field() == "thermal.void_panel");
+  // A mesh cavity's void is a surface unless the spec says otherwise.
+  CHECK(mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/gear.yaml").thermal.void_panel == 8);
+  CHECK(mold::load_mold_spec(MTCS_SOURCE_DIR + "/docs/first-mold/part.yaml").thermal.void_panel == 8);
+  CHECK(mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate.yaml").thermal.void_panel == 0);
+}
+
 TEST_CASE("thermal spec: sample_spacing, the cavity's by default, coarser only", "[mold][thermal]") {
   const std::string cavity = "cavity: {box: {min: [20, 20, 30], max: [80, 60, 36]}, sample_spacing: 4}\n";
   CHECK_FALSE(load(kBlock + cavity).thermal.sample_spacing);

@@ -188,8 +188,9 @@ struct ThermalSpec {
   std::optional<double> sample_spacing;
   ObjectiveSurface objective_surface = ObjectiveSurface::Heated;
   // thermal.cavity_void: plane: the line-sink tiers cut the block at a box cavity's most heated
-  // face (mtcs/thermal/void_plane.h); surface: a mesh cavity's wall as panels void_panel mm
-  // wide (thermal.void_panel; src/thermal/void_surface.h); ignore (default): they see no void.
+  // face (mtcs/thermal/void_plane.h); surface (a mesh cavity's default): the cavity's wall as
+  // panels void_panel mm wide (thermal.void_panel; src/thermal/void_surface.h); ignore (a box
+  // cavity's default): they see no void.
   bool void_plane = false;
   double void_panel = 0;  // mm; 0: no void surface
 };

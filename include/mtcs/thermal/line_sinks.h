@@ -56,8 +56,8 @@ struct LineSinkOptions {
                         // or another's rows) this far from an element's centre sees the element
                         // as its multipole expansion to P6 (q <= 1 / (2 pair_far); 0: every
                         // block exact; with single_precision only, the double path stays exact)
-  double void_panel = 0;  // mm: > 0 with a cavity mesh: the part's void as a surface of panels
-                          // this wide (src/thermal/void_surface.h); 0: the void is steel
+  double void_panel = 0;  // mm: > 0 with a cavity (mesh or box): the part's void as a surface of
+                          // panels this wide (src/thermal/void_surface.h); 0: the void is steel
 };
 
 // The per-channel and per-pair influence blocks of recent evaluations, keyed by the exact
