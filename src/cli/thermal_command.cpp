@@ -59,7 +59,8 @@ Command add_thermal_command(CLI::App& app) {
               std::cerr << "mtcs thermal: --samples needs --out T.csv for the temperatures\n";
               return 2;
             }
-            const run::Session session(opt->mold);
+            // The scene alone: the temperatures below build their own model (not the pipeline's).
+            const run::Session session(opt->mold, {}, eval::PipelineScope::constraints);
             const mold::Layout layout = mold::decode(session.scene(), session.read_layout(opt->layout));
             eval::ThermalQuery query = eval::thermal_query(session.spec());
             if (!opt->tier.empty())

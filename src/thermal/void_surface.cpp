@@ -13,10 +13,12 @@ namespace mtcs::thermal {
 
 namespace {
 
-// Panel j's layer is integrated exactly (per sub-triangle) within kExact of its radius, as its
-// sub-triangles' points within kPoints, beyond as one point: the point's relative error there
-// is below (radius / distance)^2, ~1.5 % (the layer's dipole about the centroid vanishes).
-constexpr double kExact = 3, kPoints = 8;
+// Panel j's layer within kPoints of its radius: per sub-triangle, exactly within kNearSub
+// (kNearSubGradient for the gradient, whose point error (size / distance)^2 weighs more across
+// a thin void) of the sub-triangle's size, else as a point; beyond, the panel as one point, relative error
+// below (radius / distance)^2, ~1.5 % (the layer's dipole about the centroid vanishes). Pairs
+// of panels within kExact radii hold the condition for the flux through the panel.
+constexpr double kExact = 3, kPoints = 8, kNearSub = 3, kNearSubGradient = 6;
 // ~N^2 of memory (N = 3000: 72 MB in double, with the inverse in float), N^3 / 3 for the LU.
 constexpr double kMaxPanels = 3000;
 
@@ -129,7 +131,7 @@ double VoidSurface::panel_potential(std::size_t j, const Vec3& x) const {
   // Beyond kFar radii the panel's charge and second moment (its first moment about the
   // centroid vanishes): relative error ~(R / d)^3 / 2, under 1 %; nearer, each sub-triangle as a
   // point, or exactly within kNearSub of its size.
-  constexpr double kFar = 4, kNearSub = 3;
+  constexpr double kFar = 4;
   const double R2 = radius_[j] * radius_[j];
   const Eigen::Matrix3d& M = second_[j];
   const double trace = M.trace();
@@ -169,11 +171,15 @@ double VoidSurface::panel_field(std::size_t j, const Vec3& x, const Vec3* normal
       return normal ? -area * m.dot(r) * inv * inv * inv : area * inv;
     };
     double v = 0;
-    if (d2 < kExact * kExact * R2) {
-      for (std::size_t s = begin_[j]; s < begin_[j + 1]; ++s)
-        v += normal ? m.dot(sub_[s].source.gradient(p)) : sub_[s].source.potential(p);
-    } else if (d2 < kPoints * kPoints * R2) {
-      for (std::size_t s = begin_[j]; s < begin_[j + 1]; ++s) v += point(sub_[s].centroid, sub_[s].area);
+    if (d2 < kPoints * kPoints * R2) {
+      const double near_sub2 = normal ? kNearSubGradient * kNearSubGradient : kNearSub * kNearSub;
+      // Per sub-triangle: exactly within kNearSub of its size, else as a point.
+      for (std::size_t s = begin_[j]; s < begin_[j + 1]; ++s) {
+        if ((p - sub_[s].centroid).squaredNorm() < near_sub2 * 2 * sub_[s].area)
+          v += normal ? m.dot(sub_[s].source.gradient(p)) : sub_[s].source.potential(p);
+        else
+          v += point(sub_[s].centroid, sub_[s].area);
+      }
     } else {
       v = point(centroid_[j], area_[j]);
     }
