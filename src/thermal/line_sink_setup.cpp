@@ -166,9 +166,8 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     m.heat_in += q;
     m.heat_moments[0] += q;
     m.heat_moments.tail<3>() += q * ((t.a + t.b + t.c) / 3 - m.center);
-  }
-  for (const HeatedTriangle& t : setting.heat_in)
     if (t.flux != 0) m.heat_sources.push_back({TriangleSource(t.a, t.b, t.c), t.flux});
+  }
   if (m.heat_sources.size() > Impl::kTreeAbove) m.heat_tree.emplace(setting.heat_in, kHeatTreeTheta);
   // The part's void (void_surface.h).
   if (options.void_panel > 0 && (setting.cavity_mesh || setting.cavity_box) && !setting.heat_in.empty())

@@ -16,7 +16,8 @@
 // thin void the two faces see each other at nearly a half space: only the flux keeps the small
 // difference that matters). The heat input's own correction joins its sheets (their fluxes
 // change, nothing else does); a channel's columns get the layer answering their normal
-// derivatives at the panels, at the samples, the faces and every channel's wall.
+// derivatives at the panels, at the samples, the faces and every channel's wall. Left out:
+// the face losses' reflection at the channels' walls (the faces take a few % of the heat).
 // Private to src/thermal.
 
 #include <Eigen/Dense>

@@ -53,22 +53,24 @@ int shared_bores(const mold::Layout& parent, const mold::Layout& child) {
   return n;
 }
 
+// A bundled mold's spec with the wall-distance objectives (the gear optimises temperatures,
+// its void a surface): the stage these tests check.
+std::string wall_distance_spec(const std::string& mold) {
+  const std::string path = MTCS_SOURCE_DIR + "/molds/" + mold + ".yaml";
+  std::ifstream in(path);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string use = "use: [temperature_std, temperature_max, cost]", mesh = "mesh: meshes/";
+  if (text.find(use) == std::string::npos) return path;
+  text.replace(text.find(use), use.size(), "use: [uniformity, worst_covered, cost]");
+  if (text.find(mesh) != std::string::npos) text.replace(text.find(mesh), mesh.size(), "mesh: " + MTCS_SOURCE_DIR + "/molds/meshes/");
+  return mtcs_test::write_scratch("wall_distance_" + mold, mold + ".yaml", text).string();
+}
+
 }  // namespace
 
 TEST_CASE("A child scored after its parent equals a cold score, for every mutation operator", "[run][incremental]") {
   const std::string mold = GENERATE(std::string("plate_wall_distance"), std::string("gear"));
-  // The gear optimises temperatures since its void is a surface: here its wall distances.
-  std::string path = MTCS_SOURCE_DIR + "/molds/" + mold + ".yaml";
-  if (mold == "gear") {
-    std::ifstream in(path);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const std::string use = "use: [temperature_std, temperature_max, cost]", mesh = "mesh: meshes/";
-    REQUIRE(text.find(use) != std::string::npos);
-    text.replace(text.find(use), use.size(), "use: [uniformity, worst_covered, cost]");
-    text.replace(text.find(mesh), mesh.size(), "mesh: " + MTCS_SOURCE_DIR + "/molds/meshes/");
-    path = mtcs_test::write_scratch("wall_distance_gear", "gear.yaml", text).string();
-  }
-  const run::Session session(path);
+  const run::Session session(wall_distance_spec(mold));
   const mold::Scene& scene = session.scene();
   const eval::Pipeline warm(scene), cold(scene);
   struct Operator {
@@ -147,18 +149,7 @@ TEST_CASE("The thermal objectives equal the plain loop's bit for bit", "[run][in
   // middle of a layout; the last layout has 70 circuits (more than one layout's share of the
   // stage's rows).
   const std::string mold = GENERATE(std::string("plate_wall_distance"), std::string("gear"));
-  // The gear optimises temperatures since its void is a surface: here its wall distances.
-  std::string path = MTCS_SOURCE_DIR + "/molds/" + mold + ".yaml";
-  if (mold == "gear") {
-    std::ifstream in(path);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const std::string use = "use: [temperature_std, temperature_max, cost]", mesh = "mesh: meshes/";
-    REQUIRE(text.find(use) != std::string::npos);
-    text.replace(text.find(use), use.size(), "use: [uniformity, worst_covered, cost]");
-    text.replace(text.find(mesh), mesh.size(), "mesh: " + MTCS_SOURCE_DIR + "/molds/meshes/");
-    path = mtcs_test::write_scratch("wall_distance_gear", "gear.yaml", text).string();
-  }
-  const run::Session session(path);
+  const run::Session session(wall_distance_spec(mold));
   const mold::Scene& scene = session.scene();
   const auto& use = scene.spec().objectives.use;
   const auto slot = [&](mold::Objective o) { return std::size_t(std::find(use.begin(), use.end(), o) - use.begin()); };
