@@ -11,6 +11,7 @@
 
 #include "support/scratch_file.h"
 #include "support/paths.h"
+#include "support/bundled_variant.h"
 
 namespace fs = std::filesystem;
 
@@ -38,8 +39,9 @@ Run run_mtcs(const std::string& args) {
 }  // namespace
 
 TEST_CASE("mtcs evaluate --json prints one object with the documented fields", "[cli]") {
-  const Run r = run_mtcs("evaluate " + MTCS_SOURCE_DIR + "/molds/gear.yaml --layout " + MTCS_SOURCE_DIR +
-                         "/molds/gear.layout.yaml --json");
+  // The gear's void ignored: the fields are the same, its model builds in a fraction (sanitised).
+  const std::string gear = mtcs_test::bundled_variant("gear", "cavity_void: surface\n  void_panel: 8", "cavity_void: ignore");
+  const Run r = run_mtcs("evaluate " + gear + " --layout " + MTCS_SOURCE_DIR + "/molds/gear.layout.yaml --json");
   REQUIRE(r.code == 0);
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j["feasible"].is_boolean());

@@ -18,6 +18,7 @@
 #include "mtcs/mesh/bvh.h"
 #include "mtcs/mesh/mesh_io.h"
 #include "support/paths.h"
+#include "support/bundled_variant.h"
 #include "support/random_draws.h"
 
 using namespace mtcs;
@@ -270,7 +271,7 @@ TEST_CASE("pipeline: constraints alone are evaluate's violations, objectives ski
   // The reach move asks only for feasibility (Pipeline::constraints): the same violations, in
   // the same order, and the same CV as a full evaluation, on layouts with many violations.
   const std::string mold = GENERATE(std::string("plate_wall_distance"), std::string("gear"));
-  const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/" + mold + ".yaml");
+  const mold::MoldSpec spec = mold::load_mold_spec(mtcs_test::wall_distance_spec(mold));
   const mold::Scene scene(spec);
   const eval::Pipeline pipeline(scene);
   std::mt19937 gen(5);

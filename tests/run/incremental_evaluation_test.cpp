@@ -19,7 +19,7 @@
 #include "mtcs/run/session.h"
 #include "support/plain_nearest_squared.h"
 #include "support/paths.h"
-#include "support/scratch_file.h"
+#include "support/bundled_variant.h"
 
 using namespace mtcs;
 
@@ -53,24 +53,11 @@ int shared_bores(const mold::Layout& parent, const mold::Layout& child) {
   return n;
 }
 
-// A bundled mold's spec with the wall-distance objectives (the gear optimises temperatures,
-// its void a surface): the stage these tests check.
-std::string wall_distance_spec(const std::string& mold) {
-  const std::string path = MTCS_SOURCE_DIR + "/molds/" + mold + ".yaml";
-  std::ifstream in(path);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string use = "use: [temperature_std, temperature_max, cost]", mesh = "mesh: meshes/";
-  if (text.find(use) == std::string::npos) return path;
-  text.replace(text.find(use), use.size(), "use: [uniformity, worst_covered, cost]");
-  if (text.find(mesh) != std::string::npos) text.replace(text.find(mesh), mesh.size(), "mesh: " + MTCS_SOURCE_DIR + "/molds/meshes/");
-  return mtcs_test::write_scratch("wall_distance_" + mold, mold + ".yaml", text).string();
-}
-
 }  // namespace
 
 TEST_CASE("A child scored after its parent equals a cold score, for every mutation operator", "[run][incremental]") {
   const std::string mold = GENERATE(std::string("plate_wall_distance"), std::string("gear"));
-  const run::Session session(wall_distance_spec(mold));
+  const run::Session session(mtcs_test::wall_distance_spec(mold));
   const mold::Scene& scene = session.scene();
   const eval::Pipeline warm(scene), cold(scene);
   struct Operator {
@@ -149,7 +136,7 @@ TEST_CASE("The thermal objectives equal the plain loop's bit for bit", "[run][in
   // middle of a layout; the last layout has 70 circuits (more than one layout's share of the
   // stage's rows).
   const std::string mold = GENERATE(std::string("plate_wall_distance"), std::string("gear"));
-  const run::Session session(wall_distance_spec(mold));
+  const run::Session session(mtcs_test::wall_distance_spec(mold));
   const mold::Scene& scene = session.scene();
   const auto& use = scene.spec().objectives.use;
   const auto slot = [&](mold::Objective o) { return std::size_t(std::find(use.begin(), use.end(), o) - use.begin()); };
