@@ -207,20 +207,18 @@ Eigen::MatrixXd VoidSurface::potentials(std::span<const Vec3> targets) const {
   const std::size_t n = panels(), t = targets.size();
   Eigen::MatrixXd S(static_cast<Eigen::Index>(t), static_cast<Eigen::Index>(n));
   const double inv4pi = 1 / (4 * std::numbers::pi);
-  for (std::size_t i = 0; i < t; ++i)
+  auto row = [&](std::size_t i) {
     for (std::size_t j = 0; j < n; ++j) S(Eigen::Index(i), Eigen::Index(j)) = inv4pi * panel_potential(j, targets[i]);
+  };
+  // Many targets (the samples, once per model) in parallel, each row its own; a bore's walls inline.
+  if (t > 64) tbb::parallel_for(std::size_t(0), t, row);
+  else for (std::size_t i = 0; i < t; ++i) row(i);
   return S;
 }
 
 Eigen::MatrixXd VoidSurface::response(std::span<const Vec3> targets) const {
-  const std::size_t n = panels(), t = targets.size();
-  Eigen::MatrixXd St(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(t));  // S transposed: one target per column
-  const double inv4pi = 1 / (4 * std::numbers::pi);
-  tbb::parallel_for(std::size_t(0), t, [&](std::size_t i) {
-    for (std::size_t j = 0; j < n; ++j) St(Eigen::Index(j), Eigen::Index(i)) = inv4pi * panel_potential(j, targets[i]);
-  });
   // (S A^-1)^T = A^-T S^T.
-  return lu_transposed_.solve(St).transpose();
+  return lu_transposed_.solve(potentials(targets).transpose()).transpose();
 }
 
 }  // namespace mtcs::thermal
