@@ -513,6 +513,14 @@ MoldSpec load_mold_spec(const std::string& path) {
   if (!(root["circuits"] && root["circuits"]["min"]) && s.cavity)
     s.circuits.min = std::min(s.circuits.max, default_min_circuits(s.cavity->bounds()));
   if (root["objectives"]) s.objectives = parse_objectives(r, root["objectives"]);
+  // Temperatures and wall distances are taken on the part's surface; a block alone has only a cost.
+  const bool use_given = root["objectives"] && root["objectives"]["use"];
+  if (!s.cavity && !use_given) s.objectives.use = {Objective::Cost};
+  if (!s.cavity)
+    for (std::size_t i = 0; i < s.objectives.use.size(); ++i)
+      if (s.objectives.use[i] != Objective::Cost)
+        r.fail(root["objectives"]["use"][i], at("objectives.use", i),
+               "'" + to_string(s.objectives.use[i]) + "' is taken on the part's surface: give a cavity, or use only cost");
   if (root["thermal"]) s.thermal = parse_thermal(r, root["thermal"]);
   // A mesh cavity (a part) is a void the line sinks must see: without it they rank its layouts
   // no better than the wall distances do (experiments/thermal/void_surface.md).

@@ -141,7 +141,8 @@ TEST_CASE("pipeline: built for the constraints alone, it has no objective stage 
 }
 
 TEST_CASE("pipeline: the thermal proxy agrees with a Monte Carlo estimate", "[eval]") {
-  const mold::Scene scene(mold::load_mold_spec(write("thermal.yaml", plate_spec()).string()));
+  const mold::Scene scene(
+      mold::load_mold_spec(write("thermal.yaml", plate_spec("objectives: {use: [uniformity, worst_covered]}\n")).string()));
   const eval::Pipeline pipeline(scene);
   const mold::Genome genome{{straight(100, 88), straight(200, 88)}};
   const auto e = pipeline.evaluate(genome);

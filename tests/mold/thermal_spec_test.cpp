@@ -31,6 +31,7 @@ fs::path write(const std::string& name, const std::string& text) {
 }
 
 const std::string kBlock = "block: {box: {min: [0, 0, 0], max: [120, 80, 60]}}\n";
+const std::string kCavity = "cavity: {box: {min: [30, 16, 50], max: [90, 64, 55]}}\n";
 
 mold::MoldSpec load(const std::string& text) { return mold::load_mold_spec(write("spec.yaml", text).string()); }
 
@@ -152,7 +153,7 @@ TEST_CASE("thermal spec: SI values are converted to mm, W and degrees C", "[mold
 }
 
 TEST_CASE("thermal spec: the temperature objectives and their scales", "[mold][thermal]") {
-  const auto o = load(kBlock +
+  const auto o = load(kBlock + kCavity +
                       "objectives:\n"
                       "  use: [temperature_std, temperature_mean, temperature_max, cycle_time, uniformity]\n"
                       "  scales: {temperature_std: 2, temperature_mean: 10, temperature_max: 20, cycle_time: 5}\n")
@@ -163,13 +164,32 @@ TEST_CASE("thermal spec: the temperature objectives and their scales", "[mold][t
   CHECK(o.scale(O::TemperatureMean) == 10);
   CHECK(o.scale(O::TemperatureMax) == 20);
   CHECK(o.scale(O::CycleTime) == 5);
-  CHECK(o.scale(O::Uniformity) == 1);
+  CHECK(o.scale(O::Uniformity) == 5);
   for (const O x : o.use) CHECK(mold::objective_named(mold::to_string(x)) == x);
   CHECK(mold::is_temperature_objective(O::CycleTime));
   CHECK_FALSE(mold::is_temperature_objective(O::WorstCovered));
 }
 
+TEST_CASE("thermal spec: without objectives.use a part gets temperatures, a bare block its cost", "[mold][thermal]") {
+  using O = mold::Objective;
+  const auto part = load(kBlock + kCavity).objectives;
+  CHECK(part.use == std::vector{O::TemperatureStd, O::TemperatureMax, O::Cost});
+  CHECK(part.scale(O::TemperatureStd) == 1);
+  CHECK(part.scale(O::TemperatureMax) == 10);
+  CHECK(part.scale(O::Cost) == 1000);
+  CHECK(load(kBlock + kCavity + "objectives: {scales: {cost: 50}}\n").objectives.use == part.use);
+  CHECK(load(kBlock).objectives.use == std::vector{O::Cost});
+  CHECK(load(kBlock + "objectives: {use: [cost]}\n").objectives.use == std::vector{O::Cost});
+}
+
 TEST_CASE("thermal spec: bad input names file, line, column and field", "[mold][thermal][errors]") {
+  SECTION("a surface objective without a cavity") {
+    const auto e = error_of(kBlock + "objectives:\n  use: [cost, temperature_max]\n");
+    CHECK(e.field() == "objectives.use[1]");
+    CHECK(e.line() == 3);
+    CHECK(e.column() == 15);
+    CHECK(mentions(e, "cavity"));
+  }
   SECTION("film and flow rate") {
     const auto e = error_of(kBlock + "thermal:\n  coolant: {film: 5000, flow_rate: 8}\n");
     CHECK(e.field() == "thermal.coolant");

@@ -112,11 +112,14 @@ inline const std::string kObjectiveNames =
 // Needs a thermal solve (not the tier-0 wall distances).
 bool is_temperature_objective(Objective o);
 
+// Without objectives.use a spec gets temperatures (the thermal section's tier): their spread,
+// their peak and the drilling cost. The scales are the bundled molds': a kelvin of spread weighs
+// as much as 10 K of peak or 1 000 of cost.
 struct Objectives {
-  std::vector<Objective> use{Objective::Uniformity, Objective::WorstCovered, Objective::Cost};
-  double scale_uniformity = 1, scale_worst_covered = 1, scale_cost = 1;
-  double scale_temperature_mean = 1, scale_temperature_std = 1, scale_temperature_max = 1;  // K
-  double scale_cycle_time = 1;                                                                // s
+  std::vector<Objective> use{Objective::TemperatureStd, Objective::TemperatureMax, Objective::Cost};
+  double scale_uniformity = 5, scale_worst_covered = 20, scale_cost = 1000;                   // mm, mm, cost
+  double scale_temperature_mean = 10, scale_temperature_std = 1, scale_temperature_max = 10;  // K
+  double scale_cycle_time = 10;                                                               // s
   Length target_wall_distance{2.0, true};
   double cost_setup = 20, cost_per_mm = 0.05, cost_deep_factor = 0.02, cost_plug = 5;
 
