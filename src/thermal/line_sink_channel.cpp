@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "line_sink_model.h"
+#include "skinny_product.h"
 
 namespace mtcs::thermal {
 
@@ -190,7 +191,7 @@ std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(
     b->void_tau = void_surface->layer(d).cast<double>();
     b->face_means += void_faces * d.cast<double>();
     if (!b->sample_cols_f.empty())
-      Eigen::Map<Eigen::MatrixXf>(b->sample_cols_f.data(), Eigen::Index(n_samples), cols).noalias() += void_samples_f * d;
+      add_skinny_product(void_samples_ft, d, Eigen::Map<Eigen::MatrixXf>(b->sample_cols_f.data(), Eigen::Index(n_samples), cols));
     else
       Eigen::Map<MatrixXd>(b->sample_cols_d.data(), Eigen::Index(n_samples), cols).noalias() += void_samples * d.cast<double>();
   }

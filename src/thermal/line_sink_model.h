@@ -126,7 +126,7 @@ struct LineSinkModel::Impl {
   // their normals give by central differences.
   std::optional<VoidSurface> void_surface;
   MatrixXd void_samples;          // samples x panels
-  Eigen::MatrixXf void_samples_f;  // the same in float, for the float columns
+  Eigen::MatrixXf void_samples_ft;  // its transpose in float, for the float columns (skinny_product.h)
   MatrixXd void_faces;            // convective faces x panels
   MatrixXd face_void;             // faces x faces: the face losses' correction at the faces
   PointSet void_pairs;  // per panel, its point + void_step n and - void_step n (one chunk)

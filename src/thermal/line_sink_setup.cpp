@@ -363,7 +363,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
       }
     m.void_pairs.make_slots(), m.void_pairs.make_chunk_boxes();
     m.void_samples = v.response(samples.points);
-    m.void_samples_f = m.void_samples.cast<float>();
+    m.void_samples_ft = m.void_samples.transpose().cast<float>();
     std::vector<Vec3> face_points;
     for (const ConvectiveFace& f : m.faces) face_points.insert(face_points.end(), f.cool.begin(), f.cool.end());
     m.void_faces = m.face_average * v.response(face_points);

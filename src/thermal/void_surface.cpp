@@ -9,6 +9,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "skinny_product.h"
+
 namespace mtcs::thermal {
 
 namespace {
@@ -123,7 +125,7 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
   heat_d_ = q - A * q;
   lu_.compute(A);
   heat_tau_ = lu_.solve(heat_d_);
-  inverse_ = lu_.inverse().cast<float>();
+  inverse_transposed_ = lu_.inverse().transpose().cast<float>();
   lu_transposed_.compute(A.transpose());
 }
 
@@ -214,6 +216,12 @@ Eigen::MatrixXd VoidSurface::potentials(std::span<const Vec3> targets) const {
   if (t > 64) tbb::parallel_for(std::size_t(0), t, row);
   else for (std::size_t i = 0; i < t; ++i) row(i);
   return S;
+}
+
+Eigen::MatrixXf VoidSurface::layer(const Eigen::MatrixXf& d) const {
+  Eigen::MatrixXf tau = Eigen::MatrixXf::Zero(inverse_transposed_.cols(), d.cols());
+  add_skinny_product(inverse_transposed_, d, tau);
+  return tau;
 }
 
 Eigen::MatrixXd VoidSurface::response(std::span<const Vec3> targets) const {

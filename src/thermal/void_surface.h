@@ -58,7 +58,7 @@ class VoidSurface {
   // targets: potentials(targets) tau, potentials (targets x panels) = (1/4 pi) S.
   Eigen::MatrixXd layer(const Eigen::MatrixXd& d) const { return lu_.solve(d); }
   // The same in single precision, by A^-1 kept explicit (a product, not two triangular solves).
-  Eigen::MatrixXf layer(const Eigen::MatrixXf& d) const { return inverse_ * d; }
+  Eigen::MatrixXf layer(const Eigen::MatrixXf& d) const;
   Eigen::MatrixXd potentials(std::span<const Vec3> targets) const;
 
   // Whether the cylinder of `radius` about a -> b reaches the wall (a bore through the part, or
@@ -85,7 +85,7 @@ class VoidSurface {
   std::vector<double> area_, radius_, flux_;   // flux: area-weighted mean over the panel
   std::vector<Eigen::Matrix3d> second_;        // sum of area (c - centroid)(c - centroid)^T over the subs
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_, lu_transposed_;  // of A = 1/2 - K' and of its transpose
-  Eigen::MatrixXf inverse_;                    // A^-1
+  Eigen::MatrixXf inverse_transposed_;         // A^-T: A^-1 by rows (skinny_product.h)
   Eigen::VectorXd heat_d_, heat_tau_;          // the heat input's own correction
 };
 
