@@ -9,6 +9,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "cpu_features.h"
 #include "skinny_product.h"
 
 namespace mtcs::thermal {
@@ -88,7 +89,12 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
     flux_.push_back(heat / area);
     Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
     for (const Sub& s : cut.subs) second += s.area * (s.centroid - centroid) * (s.centroid - centroid).transpose();
-    second_.push_back(second);
+    constexpr double kFar = 4;  // radii: potential_row's far panels
+    far_.cx.push_back(centroid.x()), far_.cy.push_back(centroid.y()), far_.cz.push_back(centroid.z());
+    far_.area.push_back(area), far_.far2.push_back(kFar * kFar * radius * radius);
+    far_.xx.push_back(second(0, 0)), far_.yy.push_back(second(1, 1)), far_.zz.push_back(second(2, 2));
+    far_.xy.push_back(second(0, 1)), far_.xz.push_back(second(0, 2)), far_.yz.push_back(second(1, 2));
+    far_.trace.push_back(second.trace());
     sub_.insert(sub_.end(), cut.subs.begin(), cut.subs.end());
     begin_.push_back(sub_.size());
   }
@@ -129,35 +135,72 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
   lu_transposed_.compute(A.transpose());
 }
 
-double VoidSurface::panel_potential(std::size_t j, const Vec3& x) const {
-  // Beyond kFar radii the panel's charge and second moment (its first moment about the
-  // centroid vanishes): relative error ~(R / d)^3 / 2, under 1 %; nearer, each sub-triangle as a
-  // point, or exactly within kNearSub of its size.
-  constexpr double kFar = 4;
-  const double R2 = radius_[j] * radius_[j];
-  const Eigen::Matrix3d& M = second_[j];
-  const double trace = M.trace();
-  double sum = 0;
+double VoidSurface::near_potential(std::size_t j, const Vec3& p) const {
+  double v = 0;
+  for (std::size_t s = begin_[j]; s < begin_[j + 1]; ++s) {
+    const Vec3 q = p - sub_[s].centroid;
+    const double e2 = q.squaredNorm();
+    v += e2 < kNearSub * kNearSub * 2 * sub_[s].area ? sub_[s].source.potential(p) : sub_[s].area / std::sqrt(e2);
+  }
+  return v;
+}
+
+namespace {
+
+// One image's pass over all panels: beyond far2 (kFar radii) a panel's charge and second moment
+// (its first moment about the centroid vanishes), relative error ~(R / d)^3 / 2, under 1 %:
+// 1 / |r - y| summed = A / d + (3 r^T M' r / d^2 - tr M) / (2 d^3), M' the moment mirrored as
+// the image is (off-diagonal signs s). row[j] += sign * that where far; near[j] = 1 where not.
+#define MTCS_FAR_PASS_BODY                                                                           \
+  for (std::size_t j = 0; j < n; ++j) {                                                              \
+    const double rx = p[0] - f.cx[j], ry = p[1] - f.cy[j], rz = p[2] - f.cz[j];                      \
+    const double d2 = rx * rx + ry * ry + rz * rz;                                                   \
+    const double inv = 1 / std::sqrt(d2);                                                            \
+    const double q = f.xx[j] * rx * rx + f.yy[j] * ry * ry + f.zz[j] * rz * rz +                     \
+                     2 * (s[0] * f.xy[j] * rx * ry + s[1] * f.xz[j] * rx * rz + s[2] * f.yz[j] * ry * rz); \
+    const double v = f.area[j] * inv + 0.5 * inv * inv * inv * (3 * q / d2 - f.trace[j]);            \
+    const bool is_near = d2 < f.far2[j];                                                             \
+    row[j] += is_near ? 0.0 : sign * v;                                                              \
+    near[j] = is_near ? 1.0 : 0.0;                                                                   \
+  }
+
+struct FarColumns {
+  const double *__restrict cx, *__restrict cy, *__restrict cz, *__restrict area, *__restrict far2, *__restrict xx,
+      *__restrict yy, *__restrict zz, *__restrict xy, *__restrict xz, *__restrict yz, *__restrict trace;
+};
+
+__attribute__((target("avx2,fma"))) void far_pass_avx2(const FarColumns& f, std::size_t n, const double* p,
+                                                       const double* s, double sign, double* __restrict row,
+                                                       double* __restrict near) {
+  MTCS_FAR_PASS_BODY
+}
+void far_pass_base(const FarColumns& f, std::size_t n, const double* p, const double* s, double sign,
+                   double* __restrict row, double* __restrict near) {
+  MTCS_FAR_PASS_BODY
+}
+#undef MTCS_FAR_PASS_BODY
+
+}  // namespace
+
+void VoidSurface::potential_row(const Vec3& x, double* row) const {
+  const std::size_t n = panels();
+  const FarColumns f{far_.cx.data(), far_.cy.data(), far_.cz.data(), far_.area.data(), far_.far2.data(),
+                     far_.xx.data(), far_.yy.data(), far_.zz.data(), far_.xy.data(), far_.xz.data(),
+                     far_.yz.data(), far_.trace.data()};
+  thread_local std::vector<double> near;
+  near.resize(n);
+  std::fill(row, row + n, 0.0);
   for (const Image& g : images_) {
     const Vec3 p = g.mult.cwiseProduct(x) + g.offset;
-    const Vec3 r = p - centroid_[j];
-    const double d2 = r.squaredNorm();
-    double v = 0;
-    if (d2 >= kFar * kFar * R2) {
-      // 1 / |r - y| summed: A / d + (3 r^T M r / d^2 - tr M) / (2 d^3), M the mirrored moment.
-      const Vec3 m = g.mult.cwiseProduct(r);  // the image's moment: M in the mirrored frame
-      const double inv = 1 / std::sqrt(d2);
-      v = area_[j] * inv + 0.5 * inv * inv * inv * (3 * m.dot(M * m) / d2 - trace);
-    } else {
-      for (std::size_t s = begin_[j]; s < begin_[j + 1]; ++s) {
-        const Vec3 q = p - sub_[s].centroid;
-        const double e2 = q.squaredNorm();
-        v += e2 < kNearSub * kNearSub * 2 * sub_[s].area ? sub_[s].source.potential(p) : sub_[s].area / std::sqrt(e2);
-      }
-    }
-    sum += g.sign * v;
+    const double at[3] = {p.x(), p.y(), p.z()};
+    const double mirror[3] = {g.mult.x() * g.mult.y(), g.mult.x() * g.mult.z(), g.mult.y() * g.mult.z()};
+    if (has_avx2_fma()) far_pass_avx2(f, n, at, mirror, g.sign, row, near.data());
+    else far_pass_base(f, n, at, mirror, g.sign, row, near.data());
+    for (std::size_t j = 0; j < n; ++j)
+      if (near[j] != 0) row[j] += g.sign * near_potential(j, p);
   }
-  return sum;
+  const double inv4pi = 1 / (4 * std::numbers::pi);
+  for (std::size_t j = 0; j < n; ++j) row[j] *= inv4pi;
 }
 
 double VoidSurface::panel_field(std::size_t j, const Vec3& x, const Vec3* normal) const {
@@ -208,9 +251,11 @@ bool VoidSurface::reaches(const Vec3& a, const Vec3& b, double radius) const {
 Eigen::MatrixXd VoidSurface::potentials(std::span<const Vec3> targets) const {
   const std::size_t n = panels(), t = targets.size();
   Eigen::MatrixXd S(static_cast<Eigen::Index>(t), static_cast<Eigen::Index>(n));
-  const double inv4pi = 1 / (4 * std::numbers::pi);
   auto row = [&](std::size_t i) {
-    for (std::size_t j = 0; j < n; ++j) S(Eigen::Index(i), Eigen::Index(j)) = inv4pi * panel_potential(j, targets[i]);
+    thread_local std::vector<double> values;
+    values.resize(n);
+    potential_row(targets[i], values.data());
+    for (std::size_t j = 0; j < n; ++j) S(Eigen::Index(i), Eigen::Index(j)) = values[j];
   };
   // Many targets (the samples, once per model) in parallel, each row its own; a bore's walls inline.
   if (t > 64) tbb::parallel_for(std::size_t(0), t, row);

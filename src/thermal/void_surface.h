@@ -74,8 +74,12 @@ class VoidSurface {
   // The potential (gradient == false) or the gradient's component along `normal` of panel j's
   // unit layer at p, images summed, free of 1/(4 pi).
   double panel_field(std::size_t j, const Vec3& p, const Vec3* normal) const;
-  // The potential alone, cheaper: the far panels by their second moments.
-  double panel_potential(std::size_t j, const Vec3& p) const;
+  // 1 / (4 pi) times the potential of every panel's unit layer at x, images summed, into row
+  // (panels): the far panels by their second moments (a pass over all panels at once, AVX2
+  // when the CPU has it), the near ones by their sub-triangles.
+  void potential_row(const Vec3& x, double* row) const;
+  // Panel j's sub-triangles at p (one image): exactly within kNearSub of their size, else as points.
+  double near_potential(std::size_t j, const Vec3& p) const;
 
   std::vector<Image> images_;
   double conductivity_ = 0, panel_ = 0;
@@ -83,7 +87,12 @@ class VoidSurface {
   std::vector<std::size_t> begin_{0};          // panel j: sub_[begin_[j], begin_[j + 1])
   std::vector<Vec3> point_, normal_, centroid_;
   std::vector<double> area_, radius_, flux_;   // flux: area-weighted mean over the panel
-  std::vector<Eigen::Matrix3d> second_;        // sum of area (c - centroid)(c - centroid)^T over the subs
+  // By column, for potential_row: centroids, areas, the squared distance from which a panel is
+  // far, and the six entries and trace of its second moment, the sum of
+  // area (c - centroid)(c - centroid)^T over its subs.
+  struct FarTerms {
+    std::vector<double> cx, cy, cz, area, far2, xx, yy, zz, xy, xz, yz, trace;
+  } far_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_, lu_transposed_;  // of A = 1/2 - K' and of its transpose
   Eigen::MatrixXf inverse_transposed_;         // A^-T: A^-1 by rows (skinny_product.h)
   Eigen::VectorXd heat_d_, heat_tau_;          // the heat input's own correction
