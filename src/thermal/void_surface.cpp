@@ -155,10 +155,10 @@ namespace {
   for (std::size_t j = 0; j < n; ++j) {                                                              \
     const double rx = p[0] - f.cx[j], ry = p[1] - f.cy[j], rz = p[2] - f.cz[j];                      \
     const double d2 = rx * rx + ry * ry + rz * rz;                                                   \
-    const double inv = 1 / std::sqrt(d2);                                                            \
+    const double inv = 1 / std::sqrt(d2), inv2 = inv * inv;                                          \
     const double q = f.xx[j] * rx * rx + f.yy[j] * ry * ry + f.zz[j] * rz * rz +                     \
                      2 * (s[0] * f.xy[j] * rx * ry + s[1] * f.xz[j] * rx * rz + s[2] * f.yz[j] * ry * rz); \
-    const double v = f.area[j] * inv + 0.5 * inv * inv * inv * (3 * q / d2 - f.trace[j]);            \
+    const double v = f.area[j] * inv + 0.5 * inv * inv2 * (3 * q * inv2 - f.trace[j]);               \
     const bool is_near = d2 < f.far2[j];                                                             \
     row[j] += is_near ? 0.0 : sign * v;                                                              \
     near[j] = is_near ? 1.0 : 0.0;                                                                   \
