@@ -1,6 +1,8 @@
 #include "mtcs/run/session.h"
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 
 #include <spdlog/spdlog.h>
 
@@ -27,12 +29,29 @@ std::unique_ptr<const eval::Pipeline> screening_pipeline(const mold::Scene& scen
   return std::make_unique<const eval::Pipeline>(scene, factory);
 }
 
+// The scene's pipeline. A part's void makes the thermal model a matter of seconds (its panels
+// solved once): said before, and how long it took after, so that a run does not start silent.
+std::unique_ptr<const eval::Pipeline> built_pipeline(const mold::Scene& scene, eval::PipelineScope scope) {
+  const mold::MoldSpec& spec = scene.spec();
+  const bool slow = scope == eval::PipelineScope::everything && spec.thermal.void_panel > 0 &&
+                    std::any_of(spec.objectives.use.begin(), spec.objectives.use.end(), mold::is_temperature_objective);
+  if (slow)
+    spdlog::info("thermal model ({}): the part's void as panels of {} mm, solved once", mold::to_string(spec.thermal.tier),
+                 spec.thermal.void_panel);
+  const auto t0 = std::chrono::steady_clock::now();
+  auto pipeline = std::make_unique<const eval::Pipeline>(scene, eval::TemperatureSolverFactory{}, scope);
+  if (slow)
+    spdlog::info("thermal model ready in {:.1f} s",
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  return pipeline;
+}
+
 }  // namespace
 
 Session::Session(mold::MoldSpec spec, const std::function<RunConfig(const std::vector<std::string>&)>& config_for,
                  eval::PipelineScope scope)
     : scene_(std::make_unique<const mold::Scene>(std::move(spec))),
-      pipeline_(std::make_unique<const eval::Pipeline>(*scene_, eval::TemperatureSolverFactory{}, scope)),
+      pipeline_(built_pipeline(*scene_, scope)),
       names_(pipeline_->objective_names()),
       config_(config_for(names_)),
       screen_pipeline_(screening_pipeline(*scene_, config_)),
