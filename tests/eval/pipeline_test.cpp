@@ -32,11 +32,14 @@ fs::path write(const std::string& name, const std::string& text) {
 }
 
 // A 300 x 200 x 120 block with a plate cavity whose underside is at z = 105.
+// The constraint tests need no thermal model (the default objectives are temperatures): cost
+// alone, unless the test names its objectives.
 std::string plate_spec(const std::string& extra = "") {
+  const std::string objectives = extra.find("objectives:") == std::string::npos ? "objectives: {use: [cost]}\n" : "";
   return "block: {box: {min: [0, 0, 0], max: [300, 200, 120]}}\n"
          "cavity: {box: {min: [50, 25, 105], max: [250, 175, 108]}, sample_spacing: 5}\n"
          "drilling: {diameters: [8], allowed_faces: [+y, -y]}\n"
-         "circuits: {inlet_faces: [-y], outlet_faces: [+y]}\n" + extra;
+         "circuits: {inlet_faces: [-y], outlet_faces: [+y]}\n" + objectives + extra;
 }
 
 // One straight through-bore along y at (x, z).
@@ -241,7 +244,8 @@ TEST_CASE("pipeline: a mesh cavity gives the exact solid-cylinder clearance and 
                            "cavity: {mesh: " + stl.string() + ", sample_spacing: 5}\n"
                            "drilling: {diameters: [8], allowed_faces: [+y, -y]}\n"
                            "circuits: {inlet_faces: [-y], outlet_faces: [+y]}\n"
-                           "clearances: {bore_cavity: 20}\n";
+                           "clearances: {bore_cavity: 20}\n"
+                           "objectives: {use: [cost]}\n";
   const mold::Scene scene(mold::load_mold_spec(write("mesh_cavity.yaml", spec).string()));
   const eval::Pipeline pipeline(scene);
   const auto names = pipeline.stage_names();
