@@ -97,13 +97,18 @@ MatrixXd LineSinkModel::Impl::channel_at_rows(const LineSinkCache::ChannelBlock&
                    [&](int i, Eigen::Index c) { return double(acc[std::size_t(c) * T + std::size_t(i)]); });
 }
 
+MatrixXd LineSinkModel::Impl::void_at_rows(const LineSinkCache::ChannelBlock& rows,
+                                           const LineSinkCache::ChannelBlock& source) const {
+  // Float, as the layer itself (void_surface.h): rows x cols from panels-long streams.
+  Eigen::MatrixXf v = Eigen::MatrixXf::Zero(rows.void_rows.cols(), source.void_tau.cols());
+  add_skinny_product(rows.void_rows, source.void_tau, v);
+  return v.cast<double>();
+}
+
 MatrixXd LineSinkModel::Impl::channel_at_rows(const LineSinkCache::ChannelBlock& rows,
                                               const LineSinkCache::ChannelBlock& source) const {
   MatrixXd out = channel_at_rows(rows, source.axis);
-  if (source.void_tau.size()) {
-    const MatrixXd v = rows.void_walls * source.void_tau;
-    out += rows_from(rows.axis, kinds, v.cols(), [&](int i, Eigen::Index c) { return v(i, c); });
-  }
+  if (source.void_tau.size()) out += void_at_rows(rows, source);
   return out;
 }
 
@@ -180,15 +185,19 @@ std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(
   // At the convective faces' grids (means).
   b->face_means = face_means_of(a);
   // The part's void: the columns' reflections (a bore reaching into the part keeps none).
+  // The void panels' potentials at the rows (any layer's field there is these times the layer).
+  MatrixXd void_rows;
   if (void_surface) {
     std::vector<Vec3> walls;
     for (int e = 0; e < a.elements; ++e)
       for (const Vec3& p : wall_points(a, e)) walls.push_back(p);
-    b->void_walls = void_surface->potentials(walls);
+    const MatrixXd w = void_surface->potentials(walls);
+    void_rows = rows_from(a, kinds, w.cols(), [&](int i, Eigen::Index c) { return w(i, c); });
+    b->void_rows = void_rows.transpose().cast<float>();
   }
   if (void_surface && !void_surface->reaches(ch.axis.p0, ch.axis.p1, ch.radius)) {
     const Eigen::MatrixXf d = void_derivatives(a);
-    b->void_tau = void_surface->layer(d).cast<double>();
+    b->void_tau = void_surface->layer(d);
     b->face_means += void_faces * d.cast<double>();
     if (!b->sample_cols_f.empty())
       add_skinny_product(void_samples_ft, d, Eigen::Map<Eigen::MatrixXf>(b->sample_cols_f.data(), Eigen::Index(n_samples), cols));
@@ -205,17 +214,11 @@ std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(
         b->self_dipole[r] = b->self(r, r);
         b->self(r, r) = 0;  // V_self: kept apart, the film condition weighs it differently
       }
-  if (b->void_tau.size()) {  // its own reflection in the void, a field from outside
-    const MatrixXd v = b->void_walls * b->void_tau;
-    b->self += rows_from(a, kinds, v.cols(), [&](int i, Eigen::Index c) { return v(i, c); });
-  }
+  if (b->void_tau.size()) b->self += void_at_rows(*b, *b);  // its own reflection in the void, a field from outside
   b->heat_rows.resize(cols);
   row_functionals(a, [&](const Vec3& p, double* v) { v[0] = heat_at(p); }, 1,
                   b->heat_rows.data(), cols);
-  if (void_surface) {  // the heat input's correction
-    const VectorXd v = b->void_walls * void_surface->heat_layer();
-    b->heat_rows += rows_from(a, kinds, 1, [&](int i, Eigen::Index) { return v[i]; });
-  }
+  if (void_surface) b->heat_rows += void_rows * void_surface->heat_layer();  // the heat input's correction
   b->far_rows.resize(cols, 4);
   row_functionals(a, [&](const Vec3& p, double* v) {
     const Eigen::Vector4d k = far_at(p);

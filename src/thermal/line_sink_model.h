@@ -43,9 +43,10 @@ struct LineSinkCache::ChannelBlock {
   MatrixXd face_rows;                 // rows x convective faces
   MatrixXd far_rows;                  // rows x 4: the far lattice's kernel (see Impl::far_kernel)
   MatrixXd moments;                   // 4 x cols: each column's charge and first moment
-  // The part's void (Impl::void_surface): the layer answering the columns (panels x cols), and
-  // the layers' potentials at the wall points (4 per element x panels).
-  MatrixXd void_tau, void_walls;
+  // The part's void (Impl::void_surface), in float as the layer: the layer answering the
+  // columns (panels x cols; empty for a bore reaching the void), and the panels' potentials at
+  // the rows (panels x rows: transposed, for skinny_product.h).
+  Eigen::MatrixXf void_tau, void_rows;
 };
 
 struct LineSinkCache::PairBlock {
@@ -236,6 +237,8 @@ struct LineSinkModel::Impl {
   MatrixXd channel_at_rows(const LineSinkCache::ChannelBlock& rows, const ChannelAxis& source) const;
   // The same with the source's reflection in the part's void (when there is one).
   MatrixXd channel_at_rows(const LineSinkCache::ChannelBlock& rows, const LineSinkCache::ChannelBlock& source) const;
+  // That reflection alone: source's layer at rows' rows (rows x source's cols).
+  MatrixXd void_at_rows(const LineSinkCache::ChannelBlock& rows, const LineSinkCache::ChannelBlock& source) const;
   // Per convective face, the mean of `source`'s columns over its grid: faces x cols.
   MatrixXd face_means_of(const ChannelAxis& source) const;
   // Everything of one channel that does not depend on the others (line_sink_channel.cpp).

@@ -89,7 +89,8 @@ std::size_t block_bytes(const LineSinkCache::ChannelBlock& b) {
   return sizeof b + b.sample_cols_f.size() * sizeof(float) + b.sample_cols_d.size() * sizeof(double) +
          w.points.size() * (sizeof(WeightedPoint) + 3 * sizeof(float)) + w.sx.size() * 4 * sizeof(float) +
          std::size_t(b.face_means.size() + b.self.size() + b.face_rows.size() + b.far_rows.size() + b.moments.size() +
-                     b.heat_rows.size() + b.cols) * sizeof(double);
+                     b.heat_rows.size() + b.cols) * sizeof(double) +
+         std::size_t(b.void_tau.size() + b.void_rows.size()) * sizeof(float);
 }
 std::size_t block_bytes(const LineSinkCache::PairBlock& p) { return sizeof p + std::size_t(p.block.size()) * sizeof(double) + 64; }
 
