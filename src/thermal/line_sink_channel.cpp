@@ -184,8 +184,8 @@ std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(
   }
   // At the convective faces' grids (means).
   b->face_means = face_means_of(a);
-  // The part's void: the columns' reflections (a bore reaching into the part keeps none).
-  // The void panels' potentials at the rows (any layer's field there is these times the layer).
+  // The part's void: the panels' potentials at the rows (any layer's field there is these times
+  // the layer), and the columns' reflections (a bore reaching into the part keeps none).
   MatrixXd void_rows;
   if (void_surface) {
     std::vector<Vec3> walls;
