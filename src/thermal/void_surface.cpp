@@ -45,6 +45,7 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
   std::map<std::tuple<long, long, long, int>, Cut> cubes;  // ordered: the same panels every time
   Vec3 origin = Vec3::Constant(std::numeric_limits<double>::infinity());
   for (const HeatedTriangle& t : wall) origin = origin.cwiseMin(t.a).cwiseMin(t.b).cwiseMin(t.c);
+  far_.origin = origin;
   for (const HeatedTriangle& t : wall) {
     const Vec3 twice = (t.b - t.a).cross(t.c - t.a);
     if (twice.norm() == 0) continue;
@@ -90,11 +91,12 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
     Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
     for (const Sub& s : cut.subs) second += s.area * (s.centroid - centroid) * (s.centroid - centroid).transpose();
     constexpr double kFar = 4;  // radii: potential_row's far panels
-    far_.cx.push_back(centroid.x()), far_.cy.push_back(centroid.y()), far_.cz.push_back(centroid.z());
-    far_.area.push_back(area), far_.far2.push_back(kFar * kFar * radius * radius);
-    far_.xx.push_back(second(0, 0)), far_.yy.push_back(second(1, 1)), far_.zz.push_back(second(2, 2));
-    far_.xy.push_back(second(0, 1)), far_.xz.push_back(second(0, 2)), far_.yz.push_back(second(1, 2));
-    far_.trace.push_back(second.trace());
+    const Vec3 local = centroid - origin;
+    far_.cx.push_back(float(local.x())), far_.cy.push_back(float(local.y())), far_.cz.push_back(float(local.z()));
+    far_.area.push_back(float(area)), far_.far2.push_back(float(kFar * kFar * radius * radius));
+    far_.xx.push_back(float(second(0, 0))), far_.yy.push_back(float(second(1, 1))), far_.zz.push_back(float(second(2, 2)));
+    far_.xy.push_back(float(second(0, 1))), far_.xz.push_back(float(second(0, 2))), far_.yz.push_back(float(second(1, 2)));
+    far_.trace.push_back(float(second.trace()));
     sub_.insert(sub_.end(), cut.subs.begin(), cut.subs.end());
     begin_.push_back(sub_.size());
   }
@@ -150,32 +152,38 @@ namespace {
 // One image's pass over all panels: beyond far2 (kFar radii) a panel's charge and second moment
 // (its first moment about the centroid vanishes), relative error ~(R / d)^3 / 2, under 1 %:
 // 1 / |r - y| summed = A / d + (3 r^T M' r / d^2 - tr M) / (2 d^3), M' the moment mirrored as
-// the image is (off-diagonal signs s). row[j] += sign * that where far; near[j] = 1 where not.
+// the image is (off-diagonal signs s). acc[j] += sign * that where far; near[j] = 1 where not.
+// In float, coordinates from the wall's corner: r to ~1e-7 of the block's size, a relative
+// error of ~1e-6 at kFar radii, below the expansion's own and below the float layer's.
 #define MTCS_FAR_PASS_BODY                                                                           \
-  for (std::size_t j = 0; j < n; ++j) {                                                              \
-    const double rx = p[0] - f.cx[j], ry = p[1] - f.cy[j], rz = p[2] - f.cz[j];                      \
-    const double d2 = rx * rx + ry * ry + rz * rz;                                                   \
-    const double inv = 1 / std::sqrt(d2), inv2 = inv * inv;                                          \
-    const double q = f.xx[j] * rx * rx + f.yy[j] * ry * ry + f.zz[j] * rz * rz +                     \
-                     2 * (s[0] * f.xy[j] * rx * ry + s[1] * f.xz[j] * rx * rz + s[2] * f.yz[j] * ry * rz); \
-    const double v = f.area[j] * inv + 0.5 * inv * inv2 * (3 * q * inv2 - f.trace[j]);               \
-    const bool is_near = d2 < f.far2[j];                                                             \
-    row[j] += is_near ? 0.0 : sign * v;                                                              \
-    near[j] = is_near ? 1.0 : 0.0;                                                                   \
+  const float px = p[0], py = p[1], pz = p[2], sxy = s[0], sxz = s[1], syz = s[2];                  \
+  const float *__restrict cx = f.cx, *__restrict cy = f.cy, *__restrict cz = f.cz;                   \
+  const float *__restrict area = f.area, *__restrict far2 = f.far2, *__restrict trace = f.trace;     \
+  const float *__restrict xx = f.xx, *__restrict yy = f.yy, *__restrict zz = f.zz;                   \
+  const float *__restrict xy = f.xy, *__restrict xz = f.xz, *__restrict yz = f.yz;                   \
+  _Pragma("GCC ivdep") for (std::size_t j = 0; j < n; ++j) {                                         \
+    const float rx = px - cx[j], ry = py - cy[j], rz = pz - cz[j];                                   \
+    const float d2 = rx * rx + ry * ry + rz * rz;                                                    \
+    const float inv = 1 / std::sqrt(d2), inv2 = inv * inv;                                           \
+    const float q = xx[j] * rx * rx + yy[j] * ry * ry + zz[j] * rz * rz +                            \
+                    2 * (sxy * xy[j] * rx * ry + sxz * xz[j] * rx * rz + syz * yz[j] * ry * rz);     \
+    const float v = area[j] * inv + 0.5f * inv * inv2 * (3 * q * inv2 - trace[j]);                  \
+    const bool is_near = d2 < far2[j];                                                               \
+    acc[j] += is_near ? 0.0f : sign * v;                                                             \
+    near[j] = is_near ? 1.0f : 0.0f;                                                                 \
   }
 
 struct FarColumns {
-  const double *__restrict cx, *__restrict cy, *__restrict cz, *__restrict area, *__restrict far2, *__restrict xx,
-      *__restrict yy, *__restrict zz, *__restrict xy, *__restrict xz, *__restrict yz, *__restrict trace;
+  const float *cx, *cy, *cz, *area, *far2, *xx, *yy, *zz, *xy, *xz, *yz, *trace;
 };
 
-__attribute__((target("avx2,fma"))) void far_pass_avx2(const FarColumns& f, std::size_t n, const double* p,
-                                                       const double* s, double sign, double* __restrict row,
-                                                       double* __restrict near) {
+__attribute__((target("avx2,fma"))) void far_pass_avx2(const FarColumns& f, std::size_t n, const float* p,
+                                                       const float* s, float sign, float* __restrict acc,
+                                                       float* __restrict near) {
   MTCS_FAR_PASS_BODY
 }
-void far_pass_base(const FarColumns& f, std::size_t n, const double* p, const double* s, double sign,
-                   double* __restrict row, double* __restrict near) {
+void far_pass_base(const FarColumns& f, std::size_t n, const float* p, const float* s, float sign,
+                   float* __restrict acc, float* __restrict near) {
   MTCS_FAR_PASS_BODY
 }
 #undef MTCS_FAR_PASS_BODY
@@ -187,20 +195,23 @@ void VoidSurface::potential_row(const Vec3& x, double* row) const {
   const FarColumns f{far_.cx.data(), far_.cy.data(), far_.cz.data(), far_.area.data(), far_.far2.data(),
                      far_.xx.data(), far_.yy.data(), far_.zz.data(), far_.xy.data(), far_.xz.data(),
                      far_.yz.data(), far_.trace.data()};
-  thread_local std::vector<double> near;
+  thread_local std::vector<float> acc, near;
+  acc.assign(n, 0.0f);
   near.resize(n);
-  std::fill(row, row + n, 0.0);
+  std::fill(row, row + n, 0.0);  // the near panels, in double
   for (const Image& g : images_) {
     const Vec3 p = g.mult.cwiseProduct(x) + g.offset;
-    const double at[3] = {p.x(), p.y(), p.z()};
-    const double mirror[3] = {g.mult.x() * g.mult.y(), g.mult.x() * g.mult.z(), g.mult.y() * g.mult.z()};
-    if (has_avx2_fma()) far_pass_avx2(f, n, at, mirror, g.sign, row, near.data());
-    else far_pass_base(f, n, at, mirror, g.sign, row, near.data());
+    const Vec3 local = p - far_.origin;
+    const float at[3] = {float(local.x()), float(local.y()), float(local.z())};
+    const float mirror[3] = {float(g.mult.x() * g.mult.y()), float(g.mult.x() * g.mult.z()),
+                             float(g.mult.y() * g.mult.z())};
+    if (has_avx2_fma()) far_pass_avx2(f, n, at, mirror, float(g.sign), acc.data(), near.data());
+    else far_pass_base(f, n, at, mirror, float(g.sign), acc.data(), near.data());
     for (std::size_t j = 0; j < n; ++j)
       if (near[j] != 0) row[j] += g.sign * near_potential(j, p);
   }
   const double inv4pi = 1 / (4 * std::numbers::pi);
-  for (std::size_t j = 0; j < n; ++j) row[j] *= inv4pi;
+  for (std::size_t j = 0; j < n; ++j) row[j] = inv4pi * (row[j] + double(acc[j]));
 }
 
 double VoidSurface::panel_field(std::size_t j, const Vec3& x, const Vec3* normal) const {

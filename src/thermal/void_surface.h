@@ -90,8 +90,10 @@ class VoidSurface {
   // By column, for potential_row: centroids, areas, the squared distance from which a panel is
   // far, and the six entries and trace of its second moment, the sum of
   // area (c - centroid)(c - centroid)^T over its subs.
+  // In float (potential_row's pass), the centroids from the wall's lowest corner `origin`.
   struct FarTerms {
-    std::vector<double> cx, cy, cz, area, far2, xx, yy, zz, xy, xz, yz, trace;
+    Vec3 origin = Vec3::Zero();
+    std::vector<float> cx, cy, cz, area, far2, xx, yy, zz, xy, xz, yz, trace;
   } far_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_, lu_transposed_;  // of A = 1/2 - K' and of its transpose
   Eigen::MatrixXf inverse_transposed_;         // A^-T: A^-1 by rows (skinny_product.h)
