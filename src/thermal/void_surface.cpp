@@ -134,7 +134,6 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
   lu_.compute(A);
   heat_tau_ = lu_.solve(heat_d_);
   inverse_transposed_ = lu_.inverse().transpose().cast<float>();
-  lu_transposed_.compute(A.transpose());
 }
 
 double VoidSurface::near_potential(std::size_t j, const Vec3& p) const {
@@ -282,7 +281,9 @@ Eigen::MatrixXf VoidSurface::layer(const Eigen::MatrixXf& d) const {
 
 Eigen::MatrixXd VoidSurface::response(std::span<const Vec3> targets) const {
   // (S A^-1)^T = A^-T S^T.
-  return lu_transposed_.solve(potentials(targets).transpose()).transpose();
+  const Eigen::MatrixXd st = potentials(targets).transpose();
+  const Eigen::MatrixXd y = lu_.transpose().solve(st);
+  return y.transpose();
 }
 
 }  // namespace mtcs::thermal

@@ -95,7 +95,7 @@ class VoidSurface {
     Vec3 origin = Vec3::Zero();
     std::vector<float> cx, cy, cz, area, far2, xx, yy, zz, xy, xz, yz, trace;
   } far_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_, lu_transposed_;  // of A = 1/2 - K' and of its transpose
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;   // of A = 1/2 - K' (its transpose solves by it too)
   Eigen::MatrixXf inverse_transposed_;         // A^-T: A^-1 by rows (skinny_product.h)
   Eigen::VectorXd heat_d_, heat_tau_;          // the heat input's own correction
 };
