@@ -131,7 +131,9 @@ TEST_CASE("mtcs evaluate gives each bore's drillable evidence, and its draw comm
                          "cavity: {mesh: " + MTCS_TEST_DATA + "/meshes/mcad_herringbone_gear.off, translate: [80, 80, 55]}\n"
                          "drilling: {diameters: [8], axis_parallel: false, max_angle_deg: 30,\n"
                          "           access_map: {grid: 32, cells: [16, 16]}}\n"
-                         "circuits: {inlet_faces: [-y], outlet_faces: [-y]}\n";
+                         "circuits: {inlet_faces: [-y], outlet_faces: [-y]}\n"
+                         // The wall distances: a void model of the gear takes minutes under ASan.
+                         "objectives: {use: [uniformity, worst_covered, cost]}\n";
   // One U: in through the gear at x = 60 (blocked), across behind it, out at x = 140 (free).
   std::ofstream(layout) << "circuits:\n  - diameter: 8\n    waypoints: [[60, 0, 55], [60, 130, 55], [140, 130, 55], [140, 0, 55]]\n";
   const Run r = run_mtcs("evaluate " + spec.string() + " --layout " + layout.string() + " --json");

@@ -35,7 +35,9 @@ std::string gear_spec(const std::string& access_map = "{grid: 48, cells: [24, 24
   return "block: {box: {min: [0, 0, 0], max: [160, 160, 90]}}\n"
          "cavity: {mesh: " + std::string(MTCS_TEST_DATA) + "/meshes/mcad_herringbone_gear.off, translate: [80, 80, 55]}\n"
          "drilling: {diameters: [8], axis_parallel: false, max_angle_deg: 30, access_map: " + access_map + "}\n"
-         "circuits: {inlet_faces: [-y], outlet_faces: [-y]}\n";
+         "circuits: {inlet_faces: [-y], outlet_faces: [-y]}\n"
+         // The wall distances, as before temperatures became the default: no void model to build.
+         "objectives: {use: [uniformity, worst_covered, cost]}\n";
 }
 
 bool any_free(const voxel::AccessMap& map, const std::vector<std::array<int, 2>>& cells) {

@@ -30,7 +30,9 @@ std::string gear_spec_path() {
                       "cavity: {mesh: " + MTCS_TEST_DATA + "/meshes/mcad_herringbone_gear.off, translate: [80, 80, 55]}\n"
                       "drilling: {diameters: [8], axis_parallel: false, max_angle_deg: 30, allowed_faces: [-y, +y, -x, +x],\n"
                       "           access_map: {grid: 48, cells: [24, 24]}}\n"
-                      "circuits: {inlet_faces: [-y], outlet_faces: [-y]}\n";
+                      "circuits: {inlet_faces: [-y], outlet_faces: [-y]}\n"
+                      // The wall distances, as before temperatures became the default: no void model.
+                      "objectives: {use: [uniformity, worst_covered, cost]}\n";
   return p.string();
 }
 
