@@ -75,8 +75,8 @@ class VoidSurface {
   // unit layer at p, images summed, free of 1/(4 pi).
   double panel_field(std::size_t j, const Vec3& p, const Vec3* normal) const;
   // 1 / (4 pi) times the potential of every panel's unit layer at x, images summed, into row
-  // (panels): the far panels by their second moments (a pass over all panels at once, AVX2
-  // when the CPU has it), the near ones by their sub-triangles.
+  // (panels): the far panels by their second moments (one float pass over all panels per
+  // image, AVX2 when the CPU has it), the near ones by their sub-triangles in double.
   void potential_row(const Vec3& x, double* row) const;
   // Panel j's sub-triangles at p (one image): exactly within kNearSub of their size, else as points.
   double near_potential(std::size_t j, const Vec3& p) const;
@@ -87,10 +87,9 @@ class VoidSurface {
   std::vector<std::size_t> begin_{0};          // panel j: sub_[begin_[j], begin_[j + 1])
   std::vector<Vec3> point_, normal_, centroid_;
   std::vector<double> area_, radius_, flux_;   // flux: area-weighted mean over the panel
-  // By column, for potential_row: centroids, areas, the squared distance from which a panel is
-  // far, and the six entries and trace of its second moment, the sum of
-  // area (c - centroid)(c - centroid)^T over its subs.
-  // In float (potential_row's pass), the centroids from the wall's lowest corner `origin`.
+  // By column and in float, for potential_row's pass: centroids (from the wall's lowest corner
+  // `origin`), areas, the squared distance from which a panel is far, and the six entries and
+  // trace of its second moment, the sum of area (c - centroid)(c - centroid)^T over its subs.
   struct FarTerms {
     Vec3 origin = Vec3::Zero();
     std::vector<float> cx, cy, cz, area, far2, xx, yy, zz, xy, xz, yz, trace;
