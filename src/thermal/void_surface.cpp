@@ -117,11 +117,11 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
         v = 0;
         for (std::size_t s = begin_[i]; s < begin_[i + 1]; ++s) {
           const Vec3 steel = -sub_[s].source.normal();
-          v += sub_[s].area * panel_field(j, sub_[s].centroid, &steel);
+          v += sub_[s].area * panel_gradient(j, sub_[s].centroid, steel);
         }
         v /= area_[i];
       } else {
-        v = panel_field(j, point_[i], &normal_[i]);
+        v = panel_gradient(j, point_[i], normal_[i]);
       }
       A(Eigen::Index(i), Eigen::Index(j)) = -inv4pi * v;
     }
@@ -213,25 +213,23 @@ void VoidSurface::potential_row(const Vec3& x, double* row) const {
   for (std::size_t j = 0; j < n; ++j) row[j] = inv4pi * (row[j] + double(acc[j]));
 }
 
-double VoidSurface::panel_field(std::size_t j, const Vec3& x, const Vec3* normal) const {
+double VoidSurface::panel_gradient(std::size_t j, const Vec3& x, const Vec3& normal) const {
   const double R2 = radius_[j] * radius_[j];
   double sum = 0;
   for (const Image& g : images_) {
     const Vec3 p = g.mult.cwiseProduct(x) + g.offset;
-    const Vec3 m = normal ? Vec3(g.mult.cwiseProduct(*normal)) : Vec3::Zero();
-    const double d2 = (p - centroid_[j]).squaredNorm();
+    const Vec3 m = g.mult.cwiseProduct(normal);
     auto point = [&](const Vec3& c, double area) {
       const Vec3 r = p - c;
       const double inv = 1 / r.norm();
-      return normal ? -area * m.dot(r) * inv * inv * inv : area * inv;
+      return -area * m.dot(r) * inv * inv * inv;
     };
     double v = 0;
-    if (d2 < kPoints * kPoints * R2) {
-      const double near_sub2 = normal ? kNearSubGradient * kNearSubGradient : kNearSub * kNearSub;
-      // Per sub-triangle: exactly within kNearSub of its size, else as a point.
+    if ((p - centroid_[j]).squaredNorm() < kPoints * kPoints * R2) {
+      // Per sub-triangle: exactly within kNearSubGradient of its size, else as a point.
       for (std::size_t s = begin_[j]; s < begin_[j + 1]; ++s) {
-        if ((p - sub_[s].centroid).squaredNorm() < near_sub2 * 2 * sub_[s].area)
-          v += normal ? m.dot(sub_[s].source.gradient(p)) : sub_[s].source.potential(p);
+        if ((p - sub_[s].centroid).squaredNorm() < kNearSubGradient * kNearSubGradient * 2 * sub_[s].area)
+          v += m.dot(sub_[s].source.gradient(p));
         else
           v += point(sub_[s].centroid, sub_[s].area);
       }

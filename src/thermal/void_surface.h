@@ -54,10 +54,9 @@ class VoidSurface {
   // for a unit d at each panel, (1/4 pi) S A^-1. A field whose steel-side normal derivative at
   // the panels is D (panels x columns) gets response D added at the targets.
   Eigen::MatrixXd response(std::span<const Vec3> targets) const;
-  // The layer tau = A^-1 D of normal derivatives D (panels x columns), and its temperature at
-  // targets: potentials(targets) tau, potentials (targets x panels) = (1/4 pi) S.
-  Eigen::MatrixXd layer(const Eigen::MatrixXd& d) const { return lu_.solve(d); }
-  // The same in single precision, by A^-1 kept explicit (a product, not two triangular solves).
+  // The layer tau = A^-1 D of normal derivatives D (panels x columns), in single precision by
+  // A^-1 kept explicit (a product, not two triangular solves), and its temperature at targets:
+  // potentials(targets) tau, potentials (targets x panels) = (1/4 pi) S.
   Eigen::MatrixXf layer(const Eigen::MatrixXf& d) const;
   Eigen::MatrixXd potentials(std::span<const Vec3> targets) const;
 
@@ -71,9 +70,9 @@ class VoidSurface {
     Vec3 centroid;
     double area, flux;
   };
-  // The potential (gradient == false) or the gradient's component along `normal` of panel j's
-  // unit layer at p, images summed, free of 1/(4 pi).
-  double panel_field(std::size_t j, const Vec3& p, const Vec3* normal) const;
+  // The gradient's component along `normal` of panel j's unit layer at p, images summed, free
+  // of 1/(4 pi) (the potential: potential_row).
+  double panel_gradient(std::size_t j, const Vec3& p, const Vec3& normal) const;
   // 1 / (4 pi) times the potential of every panel's unit layer at x, images summed, into row
   // (panels): the far panels by their second moments (one float pass over all panels per
   // image, AVX2 when the CPU has it), the near ones by their sub-triangles in double.

@@ -34,12 +34,12 @@ fs::path write(const std::string& name, const std::string& text) {
 // A 300 x 200 x 120 block with a plate cavity whose underside is at z = 105.
 // The constraint tests need no thermal model (the default objectives are temperatures): cost
 // alone, unless the test names its objectives.
-std::string plate_spec(const std::string& extra = "") {
-  const std::string objectives = extra.find("objectives:") == std::string::npos ? "objectives: {use: [cost]}\n" : "";
+std::string plate_spec(const std::string& extra = "", const std::string& objectives = "[cost]") {
   return "block: {box: {min: [0, 0, 0], max: [300, 200, 120]}}\n"
          "cavity: {box: {min: [50, 25, 105], max: [250, 175, 108]}, sample_spacing: 5}\n"
          "drilling: {diameters: [8], allowed_faces: [+y, -y]}\n"
-         "circuits: {inlet_faces: [-y], outlet_faces: [+y]}\n" + objectives + extra;
+         "circuits: {inlet_faces: [-y], outlet_faces: [+y]}\n"
+         "objectives: {use: " + objectives + "}\n" + extra;
 }
 
 // One straight through-bore along y at (x, z).
@@ -100,7 +100,7 @@ TEST_CASE("pipeline: designed junctions are not collisions, other crossings are"
 
 TEST_CASE("pipeline: a stage the scene does not need is not built and leaves no trace", "[eval]") {
   const mold::Scene plain(mold::load_mold_spec(
-      write("plain.yaml", plate_spec("objectives: {use: [cost]}\n")).string()));
+      write("plain.yaml", plate_spec()).string()));
   const eval::Pipeline pipeline(plain);
   const auto names = pipeline.stage_names();
   CHECK(std::find(names.begin(), names.end(), "thermal") == names.end());
@@ -145,7 +145,7 @@ TEST_CASE("pipeline: built for the constraints alone, it has no objective stage 
 
 TEST_CASE("pipeline: the thermal proxy agrees with a Monte Carlo estimate", "[eval]") {
   const mold::Scene scene(
-      mold::load_mold_spec(write("thermal.yaml", plate_spec("objectives: {use: [uniformity, worst_covered]}\n")).string()));
+      mold::load_mold_spec(write("thermal.yaml", plate_spec("", "[uniformity, worst_covered]")).string()));
   const eval::Pipeline pipeline(scene);
   const mold::Genome genome{{straight(100, 88), straight(200, 88)}};
   const auto e = pipeline.evaluate(genome);
