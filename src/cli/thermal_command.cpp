@@ -2,6 +2,8 @@
 // balance, a field for ParaView / MeshLab or a picture, or temperatures at the user's points.
 
 #include <CLI/CLI.hpp>
+
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -74,7 +76,9 @@ Command add_thermal_command(CLI::App& app) {
               std::cerr << "mtcs thermal: note: --elements is t2/t2d's elements per bore: ignored by " << (fd ? "fd" : "t1") << "\n";
             const std::vector<geometry::Vec3> points =
                 opt->samples.empty() ? std::vector<geometry::Vec3>{} : eval::read_steel_points(opt->samples, session.scene(), layout);
-            const double edge = opt->samples.empty() && !opt->out.empty() ? session.spec().cavity->sample_spacing / 2 : 0;
+            // The field's vertices as far apart as the cavity's samples: the model resolves no
+            // finer, and each vertex costs a sample's evaluation (the gear's: 34 600 of them).
+            const double edge = opt->samples.empty() && !opt->out.empty() ? session.spec().cavity->sample_spacing : 0;
             const eval::CavityTemperature r = eval::cavity_temperature(session.scene(), layout, query, points, edge);
 
             if (!opt->samples.empty()) {
@@ -87,7 +91,14 @@ Command add_thermal_command(CLI::App& app) {
               const std::string field_path = png ? opt->out + ".ply" : opt->out;
               io::AtomicFile file(field_path);
               if (ext == ".vtp") mesh::write_vtp(file.stream(), r.field);
-              else mesh::write_ply(file.stream(), r.field, r.summary.mean - 3 * r.summary.std - 1e-9, r.summary.max);
+              else {
+                // Colours from the coldest vertex, or three std below the mean if that is warmer
+                // (one cold spot should not wash out the rest), to the hottest sample.
+                double coldest = r.summary.max;
+                for (double t : r.field.values) coldest = std::min(coldest, t);
+                mesh::write_ply(file.stream(), r.field, std::max(coldest, r.summary.mean - 3 * r.summary.std) - 1e-9,
+                                r.summary.max);
+              }
               file.commit();
               if (png) {
                 const std::string title = "cavity temperature, tier " + r.tier;

@@ -7,61 +7,94 @@
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <set>
 #include <tuple>
 
 #include "mtcs/mesh/mesh_io.h"
 
 namespace mtcs::mesh {
 
+namespace {
+
+// The index k of the triangle's longest edge (t[k], t[k + 1]); ties to the lowest k, so that the
+// marking and the splitting below agree.
+int longest_edge(const TriangleMesh& m, const std::array<int, 3>& t) {
+  int k = 0;
+  double best = -1;
+  for (int e = 0; e < 3; ++e) {
+    const double len = (m.vertices[std::size_t(t[std::size_t(e)])] - m.vertices[std::size_t(t[std::size_t((e + 1) % 3)])]).squaredNorm();
+    if (len > best) best = len, k = e;
+  }
+  return k;
+}
+
+}  // namespace
+
 TriangleMesh refine(const TriangleMesh& mesh, double max_edge, int max_split) {
+  using Edge = std::pair<int, int>;
+  auto key = [](int a, int b) { return a < b ? Edge{a, b} : Edge{b, a}; };
+  TriangleMesh out = mesh;
   double longest = 0;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) longest = std::max(longest, (mesh.corner(t, k) - mesh.corner(t, (k + 1) % 3)).norm());
-  const int cap = std::max(1, max_split);
-  const double want = max_edge > 0 ? std::ceil(longest / max_edge) : 1;  // may be huge: clamp as a double
-  const int n = want >= cap ? cap : std::max(1, int(want));
-  if (n == 1) return mesh;
-
-  TriangleMesh out;
-  out.vertices = mesh.vertices;
-  // Points inside an edge, shared by its two triangles: keyed by (lower vertex, upper vertex, step
-  // from the lower one).
-  std::map<std::tuple<int, int, int>, int> on_edge;
-  auto edge_point = [&](int a, int b, int i) {  // the i-th of n steps from a to b
-    if (i == 0) return a;
-    if (i == n) return b;
-    const bool flip = a > b;
-    const auto key = flip ? std::make_tuple(b, a, n - i) : std::make_tuple(a, b, i);
-    auto [it, fresh] = on_edge.try_emplace(key, int(out.vertices.size()));
-    if (fresh) {
-      const auto [lo, hi, step] = key;
-      out.vertices.push_back(mesh.vertices[std::size_t(lo)] +
-                             (mesh.vertices[std::size_t(hi)] - mesh.vertices[std::size_t(lo)]) * (double(step) / n));
-    }
+  const double shortest_cut = longest / std::max(1, max_split);  // no shorter edge is marked
+  if (!(max_edge > 0) || !(longest > max_edge)) return out;
+  auto length = [&](int a, int b) { return (out.vertices[std::size_t(a)] - out.vertices[std::size_t(b)]).norm(); };
+  std::map<Edge, int> middle;  // shared by the edge's two triangles: the result stays closed
+  auto midpoint = [&](int a, int b) {
+    auto [it, fresh] = middle.try_emplace(key(a, b), int(out.vertices.size()));
+    if (fresh) out.vertices.push_back(0.5 * (out.vertices[std::size_t(a)] + out.vertices[std::size_t(b)]));
     return it->second;
   };
-  for (const auto& tri : mesh.triangles) {
-    const int a = tri[0], b = tri[1], c = tri[2];
-    // Barycentric lattice (i steps towards b, j towards c); interior points belong to this triangle.
-    std::vector<int> index(std::size_t((n + 1) * (n + 2) / 2));
-    auto at = [&](int i, int j) -> int& { return index[std::size_t(j * (2 * n + 3 - j) / 2 + i)]; };
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i + j <= n; ++i) {
-        if (j == 0) at(i, j) = edge_point(a, b, i);
-        else if (i == 0) at(i, j) = edge_point(a, c, j);
-        else if (i + j == n) at(i, j) = edge_point(b, c, j);
-        else {
-          at(i, j) = int(out.vertices.size());
-          const Vec3& pa = mesh.vertices[std::size_t(a)];
-          out.vertices.push_back(pa + (mesh.vertices[std::size_t(b)] - pa) * (double(i) / n) +
-                                 (mesh.vertices[std::size_t(c)] - pa) * (double(j) / n));
-        }
+  // Longest-edge bisection (Rivara): each pass halves every edge still too long; a triangle with
+  // any edge to halve halves its longest edge too, so every piece keeps its angles bounded and
+  // both triangles of an edge split it at the same point.
+  for (int pass = 0; pass < 256; ++pass) {
+    std::set<Edge> marked;
+    for (const auto& t : out.triangles)
+      for (int e = 0; e < 3; ++e) {
+        const int a = t[std::size_t(e)], b = t[std::size_t((e + 1) % 3)];
+        const double len = length(a, b);
+        if (len > max_edge && len > shortest_cut) marked.insert(key(a, b));
       }
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i + j < n; ++i) {
-        out.triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
-        if (i + j + 1 < n) out.triangles.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    if (marked.empty()) break;
+    for (bool grew = true; grew;) {
+      grew = false;
+      for (const auto& t : out.triangles) {
+        const int k = longest_edge(out, t);
+        const Edge l = key(t[std::size_t(k)], t[std::size_t((k + 1) % 3)]);
+        if (marked.count(l)) continue;
+        for (int e = 0; e < 3; ++e)
+          if (marked.count(key(t[std::size_t(e)], t[std::size_t((e + 1) % 3)]))) {
+            marked.insert(l), grew = true;
+            break;
+          }
       }
+    }
+    std::vector<std::array<int, 3>> next;
+    next.reserve(2 * out.triangles.size());
+    for (const auto& t : out.triangles) {
+      const int k = longest_edge(out, t);
+      const int a = t[std::size_t(k)], b = t[std::size_t((k + 1) % 3)], c = t[std::size_t((k + 2) % 3)];
+      if (!marked.count(key(a, b))) {
+        next.push_back(t);
+        continue;
+      }
+      const int m = midpoint(a, b);  // children (a, m, c) and (m, b, c), each maybe split once more
+      if (marked.count(key(c, a))) {
+        const int p = midpoint(c, a);
+        next.push_back({a, m, p}), next.push_back({m, c, p});
+      } else {
+        next.push_back({a, m, c});
+      }
+      if (marked.count(key(b, c))) {
+        const int r = midpoint(b, c);
+        next.push_back({m, b, r}), next.push_back({m, r, c});
+      } else {
+        next.push_back({m, b, c});
+      }
+    }
+    out.triangles = std::move(next);
   }
   return out;
 }

@@ -2,6 +2,8 @@
 // the writers give each vertex its value.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "mtcs/mesh/mesh_io.h"
@@ -10,18 +12,49 @@
 using namespace mtcs::mesh;
 using mtcs::geometry::Box;
 
-TEST_CASE("refine splits every triangle alike and keeps the surface closed") {
+TEST_CASE("refine bisects to the edge asked for and keeps the surface closed") {
   const TriangleMesh box = box_mesh(Box{Vec3(0, 0, 0), Vec3(3, 2, 1)});
-  const double longest = std::sqrt(13.0);  // the diagonal of the 3 x 2 faces
-  const TriangleMesh fine = refine(box, longest / 2.5);  // n = 3
-  CHECK(fine.triangles.size() == 12 * 9);
-  // Euler: V - E + F = 2 with E = 3F/2.
+  const TriangleMesh fine = refine(box, 0.4);
+  double longest = 0, shortest = 1e9;
+  for (std::size_t t = 0; t < fine.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const double e = (fine.corner(t, k) - fine.corner(t, (k + 1) % 3)).norm();
+      longest = std::max(longest, e), shortest = std::min(shortest, e);
+    }
+  CHECK(longest <= 0.4);
+  CHECK(shortest >= 0.1);  // bisection: never below a quarter of the edge asked for here
+  // Euler: V - E + F = 2 with E = 3F/2; closed, oriented, the same area and volume.
   CHECK(fine.vertices.size() == 2 + 3 * fine.triangles.size() / 2 - fine.triangles.size());
   CHECK(closed_mesh_problem(fine).empty());
-  CHECK(fine.area() == Approx(box.area()).epsilon(1e-14));
-  CHECK(fine.signed_volume() == Approx(6.0).epsilon(1e-14));
+  CHECK(fine.area() == Approx(box.area()).epsilon(1e-13));
+  CHECK(fine.signed_volume() == Approx(6.0).epsilon(1e-13));
   CHECK(refine(box, 10).triangles.size() == 12);  // already fine enough
-  CHECK(refine(box, 1e-9, 4).triangles.size() == 12 * 16);  // capped
+  // Capped: it stops once no edge is longer than the longest / max_split.
+  const TriangleMesh capped = refine(box, 1e-9, 4);
+  double capped_longest = 0;
+  for (std::size_t t = 0; t < capped.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      capped_longest = std::max(capped_longest, (capped.corner(t, k) - capped.corner(t, (k + 1) % 3)).norm());
+  CHECK(capped_longest <= std::sqrt(13.0) / 4);
+  CHECK(capped.triangles.size() <= 12 * 16);
+  CHECK(closed_mesh_problem(capped).empty());
+}
+
+TEST_CASE("refine leaves small triangles as they are: a thin slab's rim") {
+  // 100 x 100 x 1: with one split count for the whole mesh, the 1 mm rim faces would be cut as
+  // finely as the 141 mm diagonals; bisection cuts each face to the edge asked for.
+  const TriangleMesh slab = box_mesh(Box{Vec3(0, 0, 0), Vec3(100, 100, 1)});
+  const TriangleMesh fine = refine(slab, 5);
+  CHECK(closed_mesh_problem(fine).empty());
+  CHECK(fine.area() == Approx(slab.area()).epsilon(1e-13));
+  // The rim (faces across x or y): uniform splitting (n = 29) made 8 x 841 = 6 728 triangles of
+  // it; bisection ~1 900 (its long edges are split as the large faces split them).
+  std::size_t rim = 0;
+  for (std::size_t t = 0; t < fine.triangles.size(); ++t) {
+    const Vec3 n = (fine.corner(t, 1) - fine.corner(t, 0)).cross(fine.corner(t, 2) - fine.corner(t, 0));
+    if (std::abs(n.z()) < 1e-9 * n.norm()) ++rim;
+  }
+  CHECK(rim < 2500);
 }
 
 TEST_CASE("write_vtp writes one value per point and the polygons") {

@@ -18,10 +18,10 @@ struct SurfaceField {
   std::string unit;            // e.g. "degC"
 };
 
-// The mesh with every triangle split into n^2 similar ones, one n for the whole mesh (the least
-// that brings its longest edge to max_edge or below, at most max_split) so that shared edges
-// are split alike and the result stays closed: a field sampled at its vertices then follows the
-// field's variation on large flat faces.
+// The mesh with its triangles bisected at their longest edges until no edge is longer than
+// max_edge (or than the mesh's longest edge / max_split): a field sampled at the vertices then
+// follows its variation on large flat faces, while small triangles (a thin wall's rim) stay as
+// they are. Both triangles of an edge split it at the same point, so a closed mesh stays closed.
 TriangleMesh refine(const TriangleMesh& mesh, double max_edge, int max_split = 64);
 
 // VTK XML PolyData, ASCII, the field as point data (ParaView opens it directly).
