@@ -72,11 +72,18 @@ class VoidSurface {
   };
   // The gradient's component along `normal` of panel j's unit layer at p, images summed, free
   // of 1/(4 pi) (the potential: potential_row).
-  double panel_gradient(std::size_t j, const Vec3& p, const Vec3& normal) const;
+  // Images [first_image, end_image) only (the first: the panel itself).
+  double panel_gradient(std::size_t j, const Vec3& p, const Vec3& normal, std::size_t first_image = 0,
+                        std::size_t end_image = std::size_t(-1)) const;
   // 1 / (4 pi) times the potential of every panel's unit layer at x, images summed, into row
   // (panels): the far panels by their second moments (one float pass over all panels per
   // image, AVX2 when the CPU has it), the near ones by their sub-triangles in double.
   void potential_row(const Vec3& x, double* row) const;
+  // How far x lies from panel j's sub-triangles (each as a ball about its centroid; 0 inside).
+  double distance_to_panel(std::size_t j, const Vec3& x) const;
+  // The flux of panel j's unit layer (free of 1/(4 pi), images summed) through triangle abc
+  // along `steel`, the triangle halved while wider than its distance to panel j (to `depth`).
+  double graded_flux(std::size_t j, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& steel, int depth) const;
   // Panel j's sub-triangles at p (one image): exactly within kNearSub of their size, else as points.
   double near_potential(std::size_t j, const Vec3& p) const;
 
