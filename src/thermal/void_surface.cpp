@@ -159,14 +159,12 @@ double VoidSurface::graded_flux(std::size_t j, const Vec3& a, const Vec3& b, con
                                 int depth) const {
   const Vec3 centroid = (a + b + c) / 3;
   const double area = 0.5 * (b - a).cross(c - a).norm();
-  // Only the panel itself is near: its images, at the whole triangle's centroid.
-  const double images = depth == 0 ? area * panel_gradient(j, centroid, steel, 1) : 0.0;
   if (depth < kGradedDepth && std::sqrt(2 * area) > distance_to_panel(j, centroid)) {
     const Vec3 ab = 0.5 * (a + b), bc = 0.5 * (b + c), ca = 0.5 * (c + a);
-    return images + graded_flux(j, a, ab, ca, steel, depth + 1) + graded_flux(j, ab, b, bc, steel, depth + 1) +
+    return graded_flux(j, a, ab, ca, steel, depth + 1) + graded_flux(j, ab, b, bc, steel, depth + 1) +
            graded_flux(j, ca, bc, c, steel, depth + 1) + graded_flux(j, ab, bc, ca, steel, depth + 1);
   }
-  return images + area * panel_gradient(j, centroid, steel, 0, 1);
+  return area * panel_gradient(j, centroid, steel);
 }
 
 double VoidSurface::near_potential(std::size_t j, const Vec3& p) const {
@@ -246,12 +244,10 @@ void VoidSurface::potential_row(const Vec3& x, double* row) const {
   for (std::size_t j = 0; j < n; ++j) row[j] = inv4pi * (row[j] + double(acc[j]));
 }
 
-double VoidSurface::panel_gradient(std::size_t j, const Vec3& x, const Vec3& normal, std::size_t first_image,
-                                   std::size_t end_image) const {
+double VoidSurface::panel_gradient(std::size_t j, const Vec3& x, const Vec3& normal) const {
   const double R2 = radius_[j] * radius_[j];
   double sum = 0;
-  for (std::size_t k = first_image; k < std::min(end_image, images_.size()); ++k) {
-    const Image& g = images_[k];
+  for (const Image& g : images_) {
     const Vec3 p = g.mult.cwiseProduct(x) + g.offset;
     const Vec3 m = g.mult.cwiseProduct(normal);
     auto point = [&](const Vec3& c, double area) {

@@ -72,9 +72,7 @@ class VoidSurface {
   };
   // The gradient's component along `normal` of panel j's unit layer at p, images summed, free
   // of 1/(4 pi) (the potential: potential_row).
-  // Images [first_image, end_image) only (the first: the panel itself).
-  double panel_gradient(std::size_t j, const Vec3& p, const Vec3& normal, std::size_t first_image = 0,
-                        std::size_t end_image = std::size_t(-1)) const;
+  double panel_gradient(std::size_t j, const Vec3& p, const Vec3& normal) const;
   // 1 / (4 pi) times the potential of every panel's unit layer at x, images summed, into row
   // (panels): the far panels by their second moments (one float pass over all panels per
   // image, AVX2 when the CPU has it), the near ones by their sub-triangles in double.
