@@ -5,6 +5,7 @@ the same colour map and a colour bar in the field's unit.
 
 Usage: plot_surface_field.py FIELD.ply OUT.png [TITLE]
 """
+import math
 import sys
 
 import matplotlib
@@ -37,6 +38,27 @@ def read_ply(path):
     return verts, values, faces, label
 
 
+def facing_the_camera(verts, faces, elev, azim):
+    """The faces whose outer side the camera sees. matplotlib sorts polygons by depth, one value
+    each, and on a thin shell (a cup's two faces 2.5 mm apart) the far face shows through the near
+    one in stripes; on a closed surface the faces turned away are hidden anyway. An open surface
+    (no inside, no outside) keeps every face."""
+    def normal(f):
+        a, b, c = (verts[i] for i in f)
+        u = [b[k] - a[k] for k in range(3)]
+        v = [c[k] - a[k] for k in range(3)]
+        return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+    # Six times the signed volume: its sign tells which side is out.
+    volume = sum(sum(verts[f[0]][k] * n for k, n in enumerate(normal(f))) for f in faces)
+    span = [max(v[k] for v in verts) - min(v[k] for v in verts) for k in range(3)]
+    if abs(volume) <= 1e-6 * 6 * span[0] * span[1] * span[2]:
+        return faces
+    e, a = math.radians(elev), math.radians(azim)
+    eye = (math.cos(e) * math.cos(a), math.cos(e) * math.sin(a), math.sin(e))
+    out = 1 if volume > 0 else -1
+    return [f for f in faces if out * sum(n * d for n, d in zip(normal(f), eye)) > 0]
+
+
 def main(path, out, title=""):
     verts, values, faces, label = read_ply(path)
     lo, hi = min(values), max(values)
@@ -59,11 +81,13 @@ def main(path, out, title=""):
         fig.tight_layout()
         fig.savefig(out, dpi=110)
         return
-    polys = [[verts[i] for i in f] for f in faces]
-    colours = [cmap(norm(sum(values[i] for i in f) / 3)) for f in faces]
     fig = plt.figure(figsize=(8, 6))
     ax = fig.add_subplot(projection="3d")
-    ax.add_collection3d(Poly3DCollection(polys, facecolors=colours, edgecolors="none"))
+    faces = facing_the_camera(verts, faces, ax.elev, ax.azim)
+    polys = [[verts[i] for i in f] for f in faces]
+    colours = [cmap(norm(sum(values[i] for i in f) / 3)) for f in faces]
+    # Edges in the faces' own colours: with none, antialiasing leaves light seams between them.
+    ax.add_collection3d(Poly3DCollection(polys, facecolors=colours, edgecolors=colours, linewidths=0.2))
     span = max(max(xs) - min(xs), max(ys) - min(ys), max(zs) - min(zs)) / 2 or 1
     for axis, c in (("x", xs), ("y", ys), ("z", zs)):
         mid = (max(c) + min(c)) / 2
