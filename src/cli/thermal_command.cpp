@@ -2,8 +2,6 @@
 // balance, a field for ParaView / MeshLab or a picture, or temperatures at the user's points.
 
 #include <CLI/CLI.hpp>
-
-#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -90,15 +88,7 @@ Command add_thermal_command(CLI::App& app) {
               const bool png = ext == ".png";
               const std::string field_path = png ? opt->out + ".ply" : opt->out;
               io::AtomicFile file(field_path);
-              if (ext == ".vtp") mesh::write_vtp(file.stream(), r.field);
-              else {
-                // Colours from the coldest vertex, or three std below the mean if that is warmer
-                // (one cold spot should not wash out the rest), to the hottest sample.
-                double coldest = r.summary.max;
-                for (double t : r.field.values) coldest = std::min(coldest, t);
-                mesh::write_ply(file.stream(), r.field, std::max(coldest, r.summary.mean - 3 * r.summary.std) - 1e-9,
-                                r.summary.max);
-              }
+              eval::write_cavity_temperature_field(file.stream(), r, ext == ".vtp");
               file.commit();
               if (png) {
                 const std::string title = "cavity temperature, tier " + r.tier;

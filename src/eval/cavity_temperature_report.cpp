@@ -1,8 +1,11 @@
 #include "mtcs/eval/cavity_temperature_report.h"
 
+#include <algorithm>
 #include <charconv>
 #include <iomanip>
 #include <nlohmann/json.hpp>
+
+#include "mtcs/mesh/surface_field.h"
 
 namespace mtcs::eval {
 
@@ -17,6 +20,13 @@ void write_cavity_temperature_text(std::ostream& out, const CavityTemperature& r
       << r.balance.to_channels << " W + outer faces " << r.balance.to_faces << " W (residual "
       << std::scientific << std::setprecision(1) << r.balance.residual() << " W)\n"
       << std::fixed << std::setprecision(3) << "seconds " << r.seconds << "\n";
+}
+
+void write_cavity_temperature_field(std::ostream& out, const CavityTemperature& r, bool vtp) {
+  if (vtp) return mesh::write_vtp(out, r.field);
+  double coldest = r.summary.max;
+  for (double t : r.field.values) coldest = std::min(coldest, t);
+  mesh::write_ply(out, r.field, std::max(coldest, r.summary.mean - 3 * r.summary.std) - 1e-9, r.summary.max);
 }
 
 void write_cavity_temperature_json(std::ostream& out, const CavityTemperature& r) {

@@ -22,7 +22,8 @@ int longest_edge(const TriangleMesh& m, const std::array<int, 3>& t) {
   int k = 0;
   double best = -1;
   for (int e = 0; e < 3; ++e) {
-    const double len = (m.vertices[std::size_t(t[std::size_t(e)])] - m.vertices[std::size_t(t[std::size_t((e + 1) % 3)])]).squaredNorm();
+    const Vec3& a = m.vertices[std::size_t(t[std::size_t(e)])];
+    const double len = (a - m.vertices[std::size_t(t[std::size_t((e + 1) % 3)])]).squaredNorm();
     if (len > best) best = len, k = e;
   }
   return k;
@@ -58,10 +59,13 @@ TriangleMesh refine(const TriangleMesh& mesh, double max_edge, int max_split) {
         if (len > max_edge && len > shortest_cut) marked.insert(key(a, b));
       }
     if (marked.empty()) break;
+    std::vector<int> longest_of(out.triangles.size());
+    for (std::size_t t = 0; t < out.triangles.size(); ++t) longest_of[t] = longest_edge(out, out.triangles[t]);
     for (bool grew = true; grew;) {
       grew = false;
-      for (const auto& t : out.triangles) {
-        const int k = longest_edge(out, t);
+      for (std::size_t i = 0; i < out.triangles.size(); ++i) {
+        const auto& t = out.triangles[i];
+        const int k = longest_of[i];
         const Edge l = key(t[std::size_t(k)], t[std::size_t((k + 1) % 3)]);
         if (marked.count(l)) continue;
         for (int e = 0; e < 3; ++e)
@@ -73,8 +77,9 @@ TriangleMesh refine(const TriangleMesh& mesh, double max_edge, int max_split) {
     }
     std::vector<std::array<int, 3>> next;
     next.reserve(2 * out.triangles.size());
-    for (const auto& t : out.triangles) {
-      const int k = longest_edge(out, t);
+    for (std::size_t i = 0; i < out.triangles.size(); ++i) {
+      const auto& t = out.triangles[i];
+      const int k = longest_of[i];
       const int a = t[std::size_t(k)], b = t[std::size_t((k + 1) % 3)], c = t[std::size_t((k + 2) % 3)];
       if (!marked.count(key(a, b))) {
         next.push_back(t);

@@ -14,7 +14,8 @@
 // panels are integrated exactly (closed forms per sub-triangle), far ones as points; between
 // near panels the condition holds for the flux through the panel, not at one point (across a
 // thin void the two faces see each other at nearly a half space: only the flux keeps the small
-// difference that matters). The heat input's own correction joins its sheets (their fluxes
+// difference that matters), graded toward an edge where two panels meet (the flux is singular
+// there). The heat input's own correction joins its sheets (their fluxes
 // change, nothing else does); a channel's columns get the layer answering their normal
 // derivatives at the panels, at the samples, the faces and every channel's wall. Left out:
 // the face losses' reflection at the channels' walls (the faces take a few % of the heat).
@@ -80,7 +81,8 @@ class VoidSurface {
   // How far x lies from panel j's sub-triangles (each as a ball about its centroid; 0 inside).
   double distance_to_panel(std::size_t j, const Vec3& x) const;
   // The flux of panel j's unit layer (free of 1/(4 pi), images summed) through triangle abc
-  // along `steel`, the triangle halved while wider than its distance to panel j (to `depth`).
+  // along `steel`, the triangle halved while wider than its distance to panel j, down to
+  // kGradedDepth levels (`depth`: this call's).
   double graded_flux(std::size_t j, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& steel, int depth) const;
   // Panel j's sub-triangles at p (one image): exactly within kNearSub of their size, else as points.
   double near_potential(std::size_t j, const Vec3& p) const;

@@ -1,7 +1,7 @@
 #pragma once
 // A cavity temperature as `mtcs thermal` prints it: the summary and heat balance as text or as one
 // JSON object {tier, mean, std, max, hottest, surface, samples, heat_in, heat_to_bores, heat_to_faces,
-// seconds}; temperatures at a user's points as CSV x,y,z,T (17 digits).
+// seconds}; the surface field (.vtp, .ply); temperatures at a user's points as CSV x,y,z,T (17 digits).
 
 #include <ostream>
 #include <vector>
@@ -12,6 +12,10 @@ namespace mtcs::eval {
 
 void write_cavity_temperature_text(std::ostream& out, const CavityTemperature& r);
 void write_cavity_temperature_json(std::ostream& out, const CavityTemperature& r);
+// The field on the cavity surface: VTK PolyData, or PLY coloured from the coldest vertex (or three
+// std below the mean, if that is warmer: one cold spot should not wash out the rest) to the
+// hottest sample.
+void write_cavity_temperature_field(std::ostream& out, const CavityTemperature& r, bool vtp);
 void write_point_temperatures_csv(std::ostream& out, const std::vector<geometry::Vec3>& points,
                                   const std::vector<double>& temperatures);
 
