@@ -1,6 +1,7 @@
 #include "void_surface.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -30,6 +31,80 @@ constexpr double kMaxPanels = 3000;
 // 29 K too cold on average (its heat leaked round the wall's edges into the bores outside);
 // at depths 3, 4, 5: 8, 6, 5 K (experiments/thermal/void_surface.md, section 6).
 constexpr int kGradedDepth = 4;
+// Faces of the wall closer than this many panels end their panels at one plane; at most
+// kMaxFacePlanes faces' planes per axis.
+constexpr double kMergePlanes = 0.05;
+constexpr std::size_t kMaxFacePlanes = 64;
+
+// Per axis, the planes where panels end: those of the wall's faces normal to the axis that lie
+// less than a panel from another such face (the two faces of a wall thinner than a panel), and
+// between them equal steps no wider than `panel`. Where a thin shell turns a corner, its outer
+// face runs a wall's thickness past the inner one. In cells blind to the faces, a panel on one
+// face then had a shorter partner across the void, and the cup's field dipped up to 60 K below
+// T3 along the part's outer edges (experiments/thermal/void_surface.md, section 7). Ending the
+// panels at the faces' planes pairs them, and the corner's strip is a panel of its own. More
+// than kMaxFacePlanes such planes on an axis: none on it (the panels' count stays bounded).
+std::array<std::vector<double>, 3> panel_planes(std::span<const HeatedTriangle> wall, double panel) {
+  std::array<std::vector<double>, 3> faces, planes;
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const HeatedTriangle& t : wall) {
+    lo = lo.cwiseMin(t.a).cwiseMin(t.b).cwiseMin(t.c), hi = hi.cwiseMax(t.a).cwiseMax(t.b).cwiseMax(t.c);
+    const Vec3 n = (t.b - t.a).cross(t.c - t.a);
+    for (int axis = 0; axis < 3; ++axis)
+      if (n.norm() > 0 && std::abs(n[axis]) >= (1 - 1e-9) * n.norm()) faces[std::size_t(axis)].push_back(t.a[axis]);
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<double>& f = faces[std::size_t(axis)];
+    std::sort(f.begin(), f.end());
+    f.erase(std::unique(f.begin(), f.end(), [&](double a, double b) { return b - a <= kMergePlanes * panel; }), f.end());
+    std::vector<double> kept{lo[axis]};
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      const bool thin = (i > 0 && f[i] - f[i - 1] < panel) || (i + 1 < f.size() && f[i + 1] - f[i] < panel);
+      if (thin && f[i] - kept.back() > kMergePlanes * panel) kept.push_back(f[i]);
+    }
+    if (kept.size() > kMaxFacePlanes + 1) kept.erase(kept.begin() + 1, kept.end());
+    if (hi[axis] - kept.back() > kMergePlanes * panel) kept.push_back(hi[axis]);
+    else kept.back() = hi[axis];
+    std::vector<double>& at = planes[std::size_t(axis)];
+    for (std::size_t i = 0; i + 1 < kept.size(); ++i) {
+      const int steps = std::max(1, int(std::ceil((kept[i + 1] - kept[i]) / panel - 1e-9)));
+      for (int s = 1; s < steps; ++s) at.push_back(kept[i] + (kept[i + 1] - kept[i]) * s / steps);
+      if (i + 2 < kept.size()) at.push_back(kept[i + 1]);  // the ends divide nothing
+    }
+  }
+  return planes;
+}
+
+// Triangle t cut by the planes into convex pieces, each within one cell.
+std::vector<std::vector<Vec3>> cut_at_planes(const HeatedTriangle& t, const std::array<std::vector<double>, 3>& planes) {
+  std::vector<std::vector<Vec3>> pieces{{t.a, t.b, t.c}}, next;
+  for (int axis = 0; axis < 3; ++axis)
+    for (const double x : planes[std::size_t(axis)]) {
+      next.clear();
+      for (std::vector<Vec3>& p : pieces) {
+        double lo = p[0][axis], hi = lo;
+        for (const Vec3& v : p) lo = std::min(lo, v[axis]), hi = std::max(hi, v[axis]);
+        if (!(lo < x && x < hi)) {
+          next.push_back(std::move(p));
+          continue;
+        }
+        std::vector<Vec3> below, above;
+        for (std::size_t i = 0; i < p.size(); ++i) {
+          const Vec3 &u = p[i], &v = p[(i + 1) % p.size()];
+          if (u[axis] <= x) below.push_back(u);
+          if (u[axis] >= x) above.push_back(u);
+          if ((u[axis] < x && v[axis] > x) || (u[axis] > x && v[axis] < x)) {
+            const Vec3 w = u + (x - u[axis]) / (v[axis] - u[axis]) * (v - u);
+            below.push_back(w), above.push_back(w);
+          }
+        }
+        if (below.size() >= 3) next.push_back(std::move(below));
+        if (above.size() >= 3) next.push_back(std::move(above));
+      }
+      pieces.swap(next);
+    }
+  return pieces;
+}
 
 }  // namespace
 
@@ -42,16 +117,22 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
   for (const HeatedTriangle& t : wall) area += 0.5 * (t.b - t.a).cross(t.c - t.a).norm();
   panel = std::max(panel, std::sqrt(area / kMaxPanels));
   panel_ = panel;
-  // The wall's triangles cut into sub-triangles half a panel wide or less, gathered per cube of
-  // side `panel` and per direction of the steel's normal (a thin shell's two faces apart).
+  // The wall's triangles cut at the panel planes (panel_planes), the pieces into sub-triangles
+  // half a panel wide or less, gathered per cell of the planes and per direction of the steel's
+  // normal (a thin shell's two faces apart).
   struct Cut {
     std::vector<Sub> subs;
     Vec3 normal_sum = Vec3::Zero();
   };
-  std::map<std::tuple<long, long, long, int>, Cut> cubes;  // ordered: the same panels every time
+  std::map<std::tuple<long, long, long, int>, Cut> cells;  // ordered: the same panels every time
   Vec3 origin = Vec3::Constant(std::numeric_limits<double>::infinity());
   for (const HeatedTriangle& t : wall) origin = origin.cwiseMin(t.a).cwiseMin(t.b).cwiseMin(t.c);
   far_.origin = origin;
+  const std::array<std::vector<double>, 3> planes = panel_planes(wall, panel);
+  auto cell = [&](const Vec3& p, int axis) {
+    const std::vector<double>& at = planes[std::size_t(axis)];
+    return long(std::upper_bound(at.begin(), at.end(), p[axis]) - at.begin());
+  };
   for (const HeatedTriangle& t : wall) {
     const Vec3 twice = (t.b - t.a).cross(t.c - t.a);
     if (twice.norm() == 0) continue;
@@ -59,25 +140,29 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
     int axis = 0;
     steel.cwiseAbs().maxCoeff(&axis);
     const int direction = 2 * axis + (steel[axis] > 0);
-    const double longest = std::max({(t.b - t.a).norm(), (t.c - t.b).norm(), (t.a - t.c).norm()});
-    const int k = std::max(1, int(std::ceil(2 * longest / panel)));
-    auto at = [&](double u, double v) { return Vec3(t.a + (u / k) * (t.b - t.a) + (v / k) * (t.c - t.a)); };
     auto add = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
       const Vec3 centroid = (a + b + c) / 3;
-      const Vec3 q = (centroid - origin) / panel;
-      Cut& cut = cubes[{long(std::floor(q.x())), long(std::floor(q.y())), long(std::floor(q.z())), direction}];
+      Cut& cut = cells[{cell(centroid, 0), cell(centroid, 1), cell(centroid, 2), direction}];
       const TriangleSource source(a, b, c);
       cut.subs.push_back({source, centroid, source.area(), t.flux});
       cut.normal_sum += source.area() * steel;
     };
-    for (int i = 0; i < k; ++i)
-      for (int j = 0; j < k - i; ++j) {
-        add(at(i, j), at(i + 1, j), at(i, j + 1));
-        if (j + 1 < k - i) add(at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+    for (const std::vector<Vec3>& piece : cut_at_planes(t, planes))
+      for (std::size_t f = 1; f + 1 < piece.size(); ++f) {  // a convex piece, as a fan
+        const Vec3 &a = piece[0], &b = piece[f], &c = piece[f + 1];
+        if ((b - a).cross(c - a).norm() <= 1e-12 * twice.norm()) continue;
+        const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+        const int k = std::max(1, int(std::ceil(2 * longest / panel)));
+        auto at = [&](double u, double v) { return Vec3(a + (u / k) * (b - a) + (v / k) * (c - a)); };
+        for (int i = 0; i < k; ++i)
+          for (int j = 0; j < k - i; ++j) {
+            add(at(i, j), at(i + 1, j), at(i, j + 1));
+            if (j + 1 < k - i) add(at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+          }
       }
   }
-  if (cubes.empty()) throw std::invalid_argument("cavity void: the wall has no area");
-  for (auto& [key, cut] : cubes) {
+  if (cells.empty()) throw std::invalid_argument("cavity void: the wall has no area");
+  for (auto& [key, cut] : cells) {
     double area = 0, heat = 0;
     Vec3 weighted = Vec3::Zero();
     for (const Sub& s : cut.subs) area += s.area, heat += s.area * s.flux, weighted += s.area * s.centroid;

@@ -10,9 +10,10 @@
 // So each source field f gets a correction: a single layer tau on the wall whose steel-side
 // normal derivative cancels f's, (1/2 - K') tau = df/dn (n into the steel, K' the adjoint
 // double layer, the block's images included), on panels of constant tau about `panel` mm wide
-// (the wall's triangles cut finer, gathered per cube and per direction of the normal). Near
-// panels are integrated exactly (closed forms per sub-triangle), far ones as points; between
-// near panels the condition holds for the flux through the panel, not at one point (across a
+// (the wall's triangles cut finer, gathered per cell of a grid whose planes hold the faces of
+// walls thinner than a panel, so that a thin shell's two faces pair, and per direction of the
+// normal). Near panels are integrated exactly (closed forms per sub-triangle), far ones as
+// points; between near panels the condition holds for the flux through the panel, not at one point (across a
 // thin void the two faces see each other at nearly a half space: only the flux keeps the small
 // difference that matters), graded toward an edge where two panels meet (the flux is singular
 // there). The heat input's own correction joins its sheets (their fluxes
