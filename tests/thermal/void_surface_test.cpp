@@ -282,3 +282,22 @@ TEST_CASE("void surface: the field at a thin shell's outer edge follows the fini
   CHECK(worst < 10);
   CHECK(rms < 5);
 }
+
+TEST_CASE("void surface: the faces' planes cut the panels only up to a bound") {
+  // A 96 x 96 mm face (its normal along z) and, away from it, n pairs of small faces normal to
+  // x, 1 mm apart (thin walls): each pair's two planes cut the big face's panels, up to
+  // 64 planes on an axis; beyond, the plain grid (the panels' count stays bounded).
+  auto panels_with = [](int pairs) {
+    std::vector<HeatedTriangle> wall{{Vec3(0, 0, 0), Vec3(96, 96, 0), Vec3(96, 0, 0), 0.03},
+                                     {Vec3(0, 0, 0), Vec3(0, 96, 0), Vec3(96, 96, 0), 0.03}};
+    for (int i = 0; i < pairs; ++i)
+      for (const double x : {3.0 * i + 1, 3.0 * i + 2})
+        wall.push_back({Vec3(x, 10, 60), Vec3(x, 12, 60), Vec3(x, 10, 62), 0.03});
+    return VoidSurface(wall, std::vector<Image>{Image{}}, 12, 0.03).panels();
+  };
+  const std::size_t none = panels_with(0), some = panels_with(16), many = panels_with(40);
+  INFO("panels: no thin walls " << none << ", 16 pairs " << some << ", 40 pairs " << many);
+  CHECK(none == 64);                 // the big face in 8 x 8 cells of 12 mm
+  CHECK(some >= none + 8 * 30);      // 32 planes cut its 8 rows of cells into 8 + 31 columns or more
+  CHECK(many <= none + 2 * 40 + 8);  // 80 planes: none; the small faces' own panels only
+}
