@@ -199,6 +199,14 @@ Setting cup_void_setting(double w) {
   return s;
 }
 
+// Two bores under cup_void_setting's floor, two beside its walls at mid-height.
+std::vector<Channel> cup_bores() {
+  return {{mtcs::geometry::Segment{Vec3(0, 28, 4), Vec3(90, 28, 4)}, 3, 40},
+          {mtcs::geometry::Segment{Vec3(0, 42, 4), Vec3(90, 42, 4)}, 3, 40},
+          {mtcs::geometry::Segment{Vec3(0, 8, 25), Vec3(90, 8, 25)}, 3, 40},
+          {mtcs::geometry::Segment{Vec3(0, 62, 25), Vec3(90, 62, 25)}, 3, 40}};
+}
+
 }  // namespace
 
 TEST_CASE("void surface: a cup's core keeps the heat its thin walls hold in, as the finite volumes find") {
@@ -215,11 +223,7 @@ TEST_CASE("void surface: a cup's core keeps the heat its thin walls hold in, as 
       inner.points.emplace_back(x, y, 12.5), inner.weights.push_back(6.25);
       outer.points.emplace_back(x, y, 10), outer.weights.push_back(6.25);
     }
-  // Two bores under the floor, two beside the walls at mid-height.
-  const std::vector<Channel> bores{{mtcs::geometry::Segment{Vec3(0, 28, 4), Vec3(90, 28, 4)}, 3, 40},
-                                   {mtcs::geometry::Segment{Vec3(0, 42, 4), Vec3(90, 42, 4)}, 3, 40},
-                                   {mtcs::geometry::Segment{Vec3(0, 8, 25), Vec3(90, 8, 25)}, 3, 40},
-                                   {mtcs::geometry::Segment{Vec3(0, 62, 25), Vec3(90, 62, 25)}, 3, 40}};
+  const std::vector<Channel> bores = cup_bores();
   LineSinkOptions with_void;
   with_void.void_panel = 6;
   Samples both = inner;
@@ -257,10 +261,7 @@ TEST_CASE("void surface: the field at a thin shell's outer edge follows the fini
     edge.points.emplace_back(20 + d, 35, 10), edge.weights.push_back(1);
     if (d > 0) edge.points.emplace_back(20, 35, 10 + d), edge.weights.push_back(1);
   }
-  const std::vector<Channel> bores{{mtcs::geometry::Segment{Vec3(0, 28, 4), Vec3(90, 28, 4)}, 3, 40},
-                                   {mtcs::geometry::Segment{Vec3(0, 42, 4), Vec3(90, 42, 4)}, 3, 40},
-                                   {mtcs::geometry::Segment{Vec3(0, 8, 25), Vec3(90, 8, 25)}, 3, 40},
-                                   {mtcs::geometry::Segment{Vec3(0, 62, 25), Vec3(90, 62, 25)}, 3, 40}};
+  const std::vector<Channel> bores = cup_bores();
   LineSinkOptions with_void;
   with_void.void_panel = 8;
   const LineSinkModel voided(s, edge, with_void);
