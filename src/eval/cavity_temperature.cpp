@@ -87,13 +87,14 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
     // The samples in a model of their own, the extra points in another: the line sinks' float
     // coordinates (from the samples' centre) and far-expansion chunks (16 neighbouring targets)
     // depend on which points share the set, so the samples' values stay those of the thermal
-    // command bit for bit whatever else is asked. The system solved does not depend on them.
+    // command bit for bit whatever else is asked. The system solved does not depend on them,
+    // and the second model shares the first's void (its build).
     const thermal::LineSinkModel model(cut.setting, samples, options);
     thermal::LineSinkCache cache;
     const thermal::LineSinkSolution r = model.solve(folded, cache);
     t = r.temperature;
     if (extra.size()) {
-      const thermal::LineSinkModel at_extra(cut.setting, extra, options);
+      const thermal::LineSinkModel at_extra(model, extra);
       thermal::LineSinkCache extra_cache;
       const std::vector<double> te = at_extra.temperatures(folded, extra_cache);
       t.insert(t.end(), te.begin(), te.end());

@@ -125,7 +125,7 @@ struct LineSinkModel::Impl {
   // The part's void (options.void_panel): the response of the samples and of the faces' means
   // to a field's normal derivative at the panels, which the panels' points +- void_step along
   // their normals give by central differences.
-  std::optional<VoidSurface> void_surface;
+  std::shared_ptr<const VoidSurface> void_surface;  // shared by the models of one setting
   MatrixXd void_samples;          // samples x panels
   Eigen::MatrixXf void_samples_ft;  // its transpose in float, for the float columns (skinny_product.h)
   MatrixXd void_faces;            // convective faces x panels

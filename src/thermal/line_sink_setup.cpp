@@ -120,6 +120,13 @@ void keep_tables(std::vector<double> key, Tables tables) {
 }  // namespace
 
 LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, LineSinkOptions options)
+    : LineSinkModel(setting, samples, options, nullptr) {}
+
+LineSinkModel::LineSinkModel(const LineSinkModel& like, const Samples& samples)
+    : LineSinkModel(like.impl_->setting, samples, like.impl_->options, like.impl_->void_surface) {}
+
+LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, LineSinkOptions options,
+                             std::shared_ptr<const VoidSurface> void_surface)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   if (options.elements < 1 || options.elements > 64)
@@ -171,7 +178,9 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
   if (m.heat_sources.size() > Impl::kTreeAbove) m.heat_tree.emplace(setting.heat_in, kHeatTreeTheta);
   // The part's void (void_surface.h).
   if (options.void_panel > 0 && (setting.cavity_mesh || setting.cavity_box) && !setting.heat_in.empty())
-    m.void_surface.emplace(setting.heat_in, sample_images, options.void_panel, setting.conductivity);
+    m.void_surface = void_surface ? std::move(void_surface)
+                                  : std::make_shared<const VoidSurface>(setting.heat_in, sample_images,
+                                                                        options.void_panel, setting.conductivity);
 
   // Convective faces: one unknown uniform loss each, collocated on a grid of the face's part
   // that is not heated.

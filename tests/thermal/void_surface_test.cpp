@@ -302,3 +302,24 @@ TEST_CASE("void surface: the faces' planes cut the panels only up to a bound") {
   CHECK(some >= none + 8 * 30);      // 32 planes cut its 8 rows of cells into 8 + 31 columns or more
   CHECK(many <= none + 2 * 40 + 8);  // 80 planes: none; the small faces' own panels only
 }
+
+TEST_CASE("void surface: a model at other points shares the void and reads as one built afresh") {
+  const Setting s = cup_void_setting(2.5);
+  Samples floor, walls;
+  for (double x = 23.75; x < 68; x += 5) {
+    floor.points.emplace_back(x, 35, 12.5), floor.weights.push_back(1);
+    walls.points.emplace_back(x, 15, 20), walls.weights.push_back(1);
+    walls.points.emplace_back(x, 17.5, 30), walls.weights.push_back(1);
+  }
+  for (const double panel : {0.0, 8.0}) {
+    LineSinkOptions options;
+    options.void_panel = panel;
+    const LineSinkModel first(s, floor, options);
+    const LineSinkModel shared(first, walls), afresh(s, walls, options);
+    LineSinkCache a, b;
+    const std::vector<double> t_shared = shared.temperatures(cup_bores(), a), t_afresh = afresh.temperatures(cup_bores(), b);
+    INFO("panels " << panel << " mm");
+    REQUIRE(t_shared.size() == walls.size());
+    for (std::size_t i = 0; i < walls.size(); ++i) CHECK(t_shared[i] == t_afresh[i]);
+  }
+}

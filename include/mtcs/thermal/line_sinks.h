@@ -95,9 +95,15 @@ struct LineSinkSolution {
   double heat_in = 0;                 // W entering through the heated triangles
 };
 
+class VoidSurface;
+
 class LineSinkModel {
  public:
   LineSinkModel(const Setting& setting, const Samples& samples, LineSinkOptions options = {});
+  // The same model (setting and options) at other samples, sharing what does not depend on
+  // them: the part's void, most of a mesh mold's build. The same temperatures as a model built
+  // afresh at those samples, bit for bit.
+  LineSinkModel(const LineSinkModel& like, const Samples& samples);
   ~LineSinkModel();
   LineSinkModel(LineSinkModel&&) noexcept;
 
@@ -109,6 +115,8 @@ class LineSinkModel {
   const LineSinkOptions& options() const;
 
  private:
+  LineSinkModel(const Setting& setting, const Samples& samples, LineSinkOptions options,
+                std::shared_ptr<const VoidSurface> void_surface);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
