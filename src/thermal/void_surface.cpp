@@ -50,8 +50,9 @@ std::array<std::vector<double>, 3> panel_planes(std::span<const HeatedTriangle> 
   for (const HeatedTriangle& t : wall) {
     lo = lo.cwiseMin(t.a).cwiseMin(t.b).cwiseMin(t.c), hi = hi.cwiseMax(t.a).cwiseMax(t.b).cwiseMax(t.c);
     const Vec3 n = (t.b - t.a).cross(t.c - t.a);
+    const double length = n.norm();
     for (int axis = 0; axis < 3; ++axis)
-      if (n.norm() > 0 && std::abs(n[axis]) >= (1 - 1e-9) * n.norm()) faces[std::size_t(axis)].push_back(t.a[axis]);
+      if (length > 0 && std::abs(n[axis]) >= (1 - 1e-9) * length) faces[std::size_t(axis)].push_back(t.a[axis]);
   }
   for (int axis = 0; axis < 3; ++axis) {
     std::vector<double>& f = faces[std::size_t(axis)];

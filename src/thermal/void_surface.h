@@ -13,10 +13,10 @@
 // (the wall's triangles cut finer, gathered per cell of a grid whose planes hold the faces of
 // walls thinner than a panel, so that a thin shell's two faces pair, and per direction of the
 // normal). Near panels are integrated exactly (closed forms per sub-triangle), far ones as
-// points; between near panels the condition holds for the flux through the panel, not at one point (across a
-// thin void the two faces see each other at nearly a half space: only the flux keeps the small
-// difference that matters), graded toward an edge where two panels meet (the flux is singular
-// there). The heat input's own correction joins its sheets (their fluxes
+// points; between near panels the condition holds for the flux through the panel, not at one
+// point (across a thin void the two faces see each other at nearly a half space: only the flux
+// keeps the small difference that matters), graded toward an edge where two panels meet (the
+// flux is singular there). The heat input's own correction joins its sheets (their fluxes
 // change, nothing else does); a channel's columns get the layer answering their normal
 // derivatives at the panels, at the samples, the faces and every channel's wall. Left out:
 // the face losses' reflection at the channels' walls (the faces take a few % of the heat).
