@@ -200,9 +200,10 @@ std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(
     b->void_tau = void_surface->layer(d);
     b->face_means += void_faces * d.cast<double>();
     if (!b->sample_cols_f.empty())
-      add_skinny_product(void_samples_ft, d, Eigen::Map<Eigen::MatrixXf>(b->sample_cols_f.data(), Eigen::Index(n_samples), cols));
+      add_skinny_product(void_potentials_ft, b->void_tau, Eigen::Map<Eigen::MatrixXf>(b->sample_cols_f.data(), Eigen::Index(n_samples), cols));
     else
-      Eigen::Map<MatrixXd>(b->sample_cols_d.data(), Eigen::Index(n_samples), cols).noalias() += void_samples * d.cast<double>();
+      Eigen::Map<MatrixXd>(b->sample_cols_d.data(), Eigen::Index(n_samples), cols).noalias() +=
+          void_potentials * void_surface->solve(d.cast<double>());
   }
   // Own rows: the own columns, the heat input and the face losses.
   b->self = channel_at_rows(*b, a);

@@ -122,12 +122,14 @@ struct LineSinkModel::Impl {
   VectorXd heat_face_means;                  // per face: heat input's field, face mean
   MatrixXd face_face_means;                  // faces x faces
 
-  // The part's void (options.void_panel): the response of the samples and of the faces' means
-  // to a field's normal derivative at the panels, which the panels' points +- void_step along
-  // their normals give by central differences.
+  // The part's void (options.void_panel): the panels' potentials at the samples (a layer's
+  // field there is these times the layer), and the response of the faces' means to a field's
+  // normal derivative at the panels, which the panels' points +- void_step along their normals
+  // give by central differences. The samples keep potentials, not their response S A^-1: that
+  // costs a solve per sample (34 600 of them for a field on the gear), a layer one per column.
   std::shared_ptr<const VoidSurface> void_surface;  // shared by the models of one setting
-  MatrixXd void_samples;          // samples x panels
-  Eigen::MatrixXf void_samples_ft;  // its transpose in float, for the float columns (skinny_product.h)
+  MatrixXd void_potentials;       // samples x panels
+  Eigen::MatrixXf void_potentials_ft;  // its transpose in float, for the float columns (skinny_product.h)
   MatrixXd void_faces;            // convective faces x panels
   MatrixXd face_void;             // faces x faces: the face losses' correction at the faces
   PointSet void_pairs;  // per panel, its point + void_step n and - void_step n (one chunk)

@@ -371,18 +371,18 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
         m.void_pairs.close_target();
       }
     m.void_pairs.make_slots(), m.void_pairs.make_chunk_boxes();
-    m.void_samples = v.response(samples.points);
-    m.void_samples_ft = m.void_samples.transpose().cast<float>();
+    m.void_potentials = v.potentials(samples.points);
+    m.void_potentials_ft = m.void_potentials.transpose().cast<float>();
     std::vector<Vec3> face_points;
     for (const ConvectiveFace& f : m.faces) face_points.insert(face_points.end(), f.cool.begin(), f.cool.end());
-    m.void_faces = m.face_average * v.response(face_points);
+    m.void_faces = v.times_inverse(m.face_average * v.potentials(face_points));
     MatrixXd d(Eigen::Index(v.panels()), Eigen::Index(nf));
     for (std::size_t i = 0; i < v.panels(); ++i)
       for (std::size_t f = 0; f < nf; ++f)
         d(Eigen::Index(i), Eigen::Index(f)) = (m.face_field(m.faces[f], v.points()[i] + m.void_step * v.normals()[i]) -
                                                m.face_field(m.faces[f], v.points()[i] - m.void_step * v.normals()[i])) /
                                               (2 * m.void_step);
-    m.face_samples += m.void_samples * d;
+    m.face_samples += m.void_potentials * v.solve(d);
     m.face_void = m.void_faces * d;
   }
   m.heat_face_means.resize(nf);
@@ -400,7 +400,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
   }
   if (m.void_surface) {  // the void's correction of the face losses and of the heat input
     m.face_face_means += m.face_void;
-    m.heat_samples += m.void_samples * m.void_surface->heat_derivatives();
+    m.heat_samples += m.void_potentials * m.void_surface->heat_layer();
     m.heat_face_means += m.void_faces * m.void_surface->heat_derivatives();
   }
 }

@@ -394,10 +394,11 @@ Eigen::MatrixXf VoidSurface::layer(const Eigen::MatrixXf& d) const {
   return tau;
 }
 
-Eigen::MatrixXd VoidSurface::response(std::span<const Vec3> targets) const {
-  // (S A^-1)^T = A^-T S^T.
-  const Eigen::MatrixXd st = potentials(targets).transpose();
-  const Eigen::MatrixXd y = lu_.transpose().solve(st);
+Eigen::MatrixXd VoidSurface::response(std::span<const Vec3> targets) const { return times_inverse(potentials(targets)); }
+
+Eigen::MatrixXd VoidSurface::times_inverse(const Eigen::MatrixXd& r) const {
+  // (R A^-1)^T = A^-T R^T.
+  const Eigen::MatrixXd y = lu_.transpose().solve(r.transpose());
   return y.transpose();
 }
 

@@ -56,6 +56,11 @@ class VoidSurface {
   // for a unit d at each panel, (1/4 pi) S A^-1. A field whose steel-side normal derivative at
   // the panels is D (panels x columns) gets response D added at the targets.
   Eigen::MatrixXd response(std::span<const Vec3> targets) const;
+  // R A^-1 for rows R (x panels) by the LU, in double: the response of averages of targets
+  // (R = their weights times potentials) without one solve per target.
+  Eigen::MatrixXd times_inverse(const Eigen::MatrixXd& r) const;
+  // A^-1 D in double, by the LU.
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& d) const { return lu_.solve(d); }
   // The layer tau = A^-1 D of normal derivatives D (panels x columns), in single precision by
   // A^-1 kept explicit (a product, not two triangular solves), and its temperature at targets:
   // potentials(targets) tau, potentials (targets x panels) = (1/4 pi) S.
