@@ -6,7 +6,8 @@
 # Prints CSV: round,binary,seed,evaluations,run_seconds,evaluations_per_second,user_seconds,load1
 # usage: bash experiments/thermal/plate_es_rate.sh OLD_MTCS NEW_MTCS [rounds] [evaluations]
 # OLD_MOLD=, NEW_MOLD= give each binary its own spec (default molds/plate.yaml): one binary, two
-# settings. ALGORITHM=sms-emoa times the SMS-EMOA instead of the ES.
+# settings. OLD_CONFIG=, NEW_CONFIG= give each its own run config (`mtcs optimize --config`; default
+# none). ALGORITHM=sms-emoa times the SMS-EMOA instead of the ES.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 old=$1 new=$2 rounds=${3:-2} budget=${4:-20000}
@@ -15,10 +16,10 @@ echo "round,binary,seed,evaluations,run_seconds,evaluations_per_second,user_seco
 for r in $(seq 1 "$rounds"); do
   for s in 1 2 3; do
     for b in old new; do
-      bin=$old mold=${OLD_MOLD:-molds/plate.yaml}
-      [ "$b" = new ] && bin=$new mold=${NEW_MOLD:-molds/plate.yaml}
+      bin=$old mold=${OLD_MOLD:-molds/plate.yaml} config=${OLD_CONFIG:-}
+      [ "$b" = new ] && bin=$new mold=${NEW_MOLD:-molds/plate.yaml} config=${NEW_CONFIG:-}
       rm -rf "$out/run"
-      /usr/bin/time -f "%U" -o "$out/user" nice -n 5 "$bin" optimize "$mold" --out "$out/run" --seed "$s" \
+      /usr/bin/time -f "%U" -o "$out/user" nice -n 5 "$bin" optimize "$mold" --out "$out/run" --seed "$s" ${config:+--config "$config"} \
         --algorithm "${ALGORITHM:-es}" --threads 1 --evaluations "$budget" > "$out/log" 2>&1
       line=$(grep "feasible best\|best layout" "$out/log" | tail -1)
       evals=$(echo "$line" | sed -E 's/.* ([0-9]+) evaluations in ([0-9.]+) s.*/\1/')

@@ -40,8 +40,8 @@ Generation EvolutionStrategy::initial() const {
 }
 
 std::vector<Individual> EvolutionStrategy::screened(std::vector<Individual>& offspring,
-                                                    const std::vector<Genotype>& xs) const {
-  const auto rough = screen_all(problem_, xs);
+                                                    const std::vector<Genotype>& xs, const Score* bar) const {
+  const auto rough = bar ? screen_all(problem_, xs, *bar) : screen_all(problem_, xs);
   std::vector<std::size_t> order(offspring.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
   std::stable_sort(order.begin(), order.end(),
@@ -50,7 +50,7 @@ std::vector<Individual> EvolutionStrategy::screened(std::vector<Individual>& off
   std::sort(order.begin(), order.end());  // sampling order, so that ties keep it
   std::vector<Genotype> best;
   for (const std::size_t i : order) best.push_back(xs[i]);
-  const auto scores = evaluate_all(problem_, best);
+  const auto scores = bar ? evaluate_all(problem_, best, *bar) : evaluate_all(problem_, best);
   std::vector<Individual> kept;
   for (std::size_t k = 0; k < order.size(); ++k) {
     kept.push_back(std::move(offspring[order[k]]));
@@ -158,14 +158,14 @@ Generation EvolutionStrategy::step(const Generation& prev_generation) const {
     xs[std::size_t(i)] = child.x;
     offspring[std::size_t(i)] = std::move(child);
   }
+  // With mu parents in the pool, an offspring behind the worst of them is not kept: the
+  // problem may skip what would not change that (an infeasible child's objectives).
+  const bool has_bar = config_.plus && int(prev.population.size()) >= config_.mu && !prev.population.empty();
+  const Score bar = has_bar ? worst_of(problem_, prev.population).score : Score{};
   if (config_.survivors > 0 && config_.survivors < lambda) {
-    offspring = screened(offspring, xs);
+    offspring = screened(offspring, xs, has_bar ? &bar : nullptr);
   } else {
-    // With mu parents in the pool, an offspring behind the worst of them is not kept: the
-    // problem may skip what would not change that (an infeasible child's objectives).
-    const bool bar = config_.plus && int(prev.population.size()) >= config_.mu && !prev.population.empty();
-    const auto scores =
-        bar ? evaluate_all(problem_, xs, worst_of(problem_, prev.population).score) : evaluate_all(problem_, xs);
+    const auto scores = has_bar ? evaluate_all(problem_, xs, bar) : evaluate_all(problem_, xs);
     for (int i = 0; i < lambda; ++i) offspring[std::size_t(i)].score = scores[std::size_t(i)];
   }
 

@@ -27,6 +27,12 @@ std::vector<Score> screen_all(const Problem& problem, const std::vector<Genotype
   return scores;
 }
 
+std::vector<Score> screen_all(const Problem& problem, const std::vector<Genotype>& xs, const Score& bar) {
+  std::vector<Score> scores(xs.size());
+  tbb::parallel_for(std::size_t(0), xs.size(), [&](std::size_t i) { scores[i] = problem.screen_unless_behind(xs[i], bar); });
+  return scores;
+}
+
 Generation sample_population(const Problem& problem, std::uint64_t seed, int count,
                              const std::vector<Genotype>& given) {
   Generation g;

@@ -416,6 +416,13 @@ opt::Score MoldProblem::screen(const opt::Genotype& g) const {
   return score(*screen_, g);
 }
 
+opt::Score MoldProblem::screen_unless_behind(const opt::Genotype& g, const opt::Score& bar) const {
+  if (!screen_) return evaluate_unless_behind(g, bar);
+  if (ranking_.penalty.variant != mold::PenaltyVariant::ConstrainedDomination || !bar.feasible) return screen(g);
+  ++screened_;
+  return score(screen_->evaluate_if_feasible(genome(g)));
+}
+
 opt::Score MoldProblem::score(const eval::Pipeline& pipeline, const opt::Genotype& g) const {
   return score(pipeline.evaluate(genome(g)));
 }

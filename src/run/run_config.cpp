@@ -73,7 +73,7 @@ RunConfig parse_run_config(const std::string& text, const std::string& origin,
   }
   if (root["fidelity"]) {
     const YAML::Node& f = root["fidelity"];
-    r.expect_map(f, "fidelity", {"screen", "elements_per_bore", "survivors", "final_cell"});
+    r.expect_map(f, "fidelity", {"screen", "elements_per_bore", "wall_images", "sample_spacing", "survivors", "final_cell"});
     if (f["screen"]) {
       const std::string s = r.text(f["screen"], "fidelity.screen");
       if (s == "t1") c.screen_tier = mold::ThermalTier::T1;
@@ -82,6 +82,10 @@ RunConfig parse_run_config(const std::string& text, const std::string& origin,
       else r.fail(f["screen"], "fidelity.screen", "expected t1, t2 or t2d (a line-sink tier); got '" + s + "'");
     }
     if (f["elements_per_bore"]) c.screen_elements = r.integer(f["elements_per_bore"], "fidelity.elements_per_bore", 1, 1000);
+    if (f["wall_images"]) c.screen_wall_images = r.integer(f["wall_images"], "fidelity.wall_images", 1, 3);
+    if (f["sample_spacing"]) c.screen_sample_spacing = r.number(f["sample_spacing"], "fidelity.sample_spacing", 1e-3, 1e6);
+    for (const char* key : {"wall_images", "sample_spacing"})
+      if (f[key] && !f["screen"]) r.fail(f[key], std::string("fidelity.") + key, "needs fidelity.screen");
     c.es.survivors = c.screen_tier ? c.es.mu : 0;
     if (f["survivors"]) {
       if (!c.screen_tier) r.fail(f["survivors"], "fidelity.survivors", "needs fidelity.screen");
@@ -153,6 +157,8 @@ std::string RunConfig::to_yaml(const std::vector<std::string>& objective_names) 
       out << YAML::Key << "screen" << YAML::Value << mold::to_string(*screen_tier) << YAML::Key << "survivors"
           << YAML::Value << es.survivors;
     if (screen_elements > 0) out << YAML::Key << "elements_per_bore" << YAML::Value << screen_elements;
+    if (screen_wall_images > 0) out << YAML::Key << "wall_images" << YAML::Value << screen_wall_images;
+    if (screen_sample_spacing) out << YAML::Key << "sample_spacing" << YAML::Value << *screen_sample_spacing;
     if (final_cell > 0) out << YAML::Key << "final_cell" << YAML::Value << final_cell;
     out << YAML::EndMap;
   }

@@ -14,16 +14,28 @@ namespace {
 
 std::atomic<long> scenes{0};
 
-// The pipeline that screens offspring: the config's tier (and elements per bore) in place of
-// the spec's; the tier-0 stages are the same.
+// The scene a screen with samples of its own sees: the spec with the screen's
+// thermal.sample_spacing (never finer than the cavity's samples, as the spec's own); none when
+// the screen takes the spec's samples.
+std::unique_ptr<const mold::Scene> screening_scene(const mold::Scene& scene, const RunConfig& config) {
+  if (!config.screen_tier || !config.screen_sample_spacing) return nullptr;
+  mold::MoldSpec spec = scene.spec();
+  spec.thermal.sample_spacing =
+      spec.cavity ? std::max(*config.screen_sample_spacing, spec.cavity->sample_spacing) : *config.screen_sample_spacing;
+  return std::make_unique<const mold::Scene>(std::move(spec));
+}
+
+// The pipeline that screens offspring: the config's tier (elements per bore, wall images) in
+// place of the spec's; the tier-0 stages are the same.
 std::unique_ptr<const eval::Pipeline> screening_pipeline(const mold::Scene& scene, const RunConfig& config) {
   if (!config.screen_tier) return nullptr;
-  const int elements = config.screen_elements;
-  eval::TemperatureSolverFactory factory = [tier = eval::temperature_solver(*config.screen_tier), elements](
+  const int elements = config.screen_elements, images = config.screen_wall_images;
+  eval::TemperatureSolverFactory factory = [tier = eval::temperature_solver(*config.screen_tier), elements, images](
                                                const thermal::Setting& setting, const thermal::Samples& samples,
                                                const mold::ThermalSpec& spec) {
     mold::ThermalSpec screen = spec;
     if (elements > 0) screen.elements_per_bore = elements;
+    if (images > 0) screen.wall_images = images;
     return tier(setting, samples, screen);
   };
   return std::make_unique<const eval::Pipeline>(scene, factory);
@@ -54,7 +66,8 @@ Session::Session(mold::MoldSpec spec, const std::function<RunConfig(const std::v
       pipeline_(built_pipeline(*scene_, scope)),
       names_(pipeline_->objective_names()),
       config_(config_for(names_)),
-      screen_pipeline_(screening_pipeline(*scene_, config_)),
+      screen_scene_(screening_scene(*scene_, config_)),
+      screen_pipeline_(screening_pipeline(screen_scene_ ? *screen_scene_ : *scene_, config_)),
       problem_(std::make_unique<const MoldProblem>(*pipeline_, config_.weights, config_.mutation, config_.penalty,
                                                    screen_pipeline_.get())) {
   ++scenes;

@@ -124,6 +124,46 @@ TEST_CASE("SMS-EMOA on the mold: same seed, same populations, with 1 thread or 2
   CHECK(record(1) == record(2));
 }
 
+TEST_CASE("run config fidelity: a screen with its own wall images and samples scores as the spec that sets them",
+          "[run][session][fidelity]") {
+  const std::string plate = MTCS_SOURCE_DIR + "/molds/plate.yaml";
+  const run::Session multi(mold::load_mold_spec(plate),
+                           "fidelity: {screen: t2d, elements_per_bore: 2, wall_images: 1, sample_spacing: 22}\n", "test");
+  mold::MoldSpec cheap = mold::load_mold_spec(plate);
+  cheap.thermal.elements_per_bore = 2;
+  cheap.thermal.wall_images = 1;
+  cheap.thermal.sample_spacing = 22;
+  const run::Session same(std::move(cheap), run::RunOverrides{});
+  // Finer than the cavity's samples (5.5 mm) is the cavity's own, as in the spec.
+  const run::Session fine(mold::load_mold_spec(plate), "fidelity: {screen: t2d, sample_spacing: 1}\n", "test");
+  mold::MoldSpec cavity = mold::load_mold_spec(plate);
+  cavity.thermal.sample_spacing = 5.5;
+  const run::Session at_cavity(std::move(cavity), run::RunOverrides{});
+  opt::Rng rng(5);
+  int differ = 0;
+  for (int i = 0; i < 6; ++i) {
+    const opt::Genotype g = multi.problem().sample(rng);
+    const opt::Score rough = multi.problem().screen(g), full = multi.problem().evaluate(g);
+    CHECK(rough.objectives == same.problem().evaluate(g).objectives);
+    CHECK(fine.problem().screen(g).objectives == at_cavity.problem().evaluate(g).objectives);
+    differ += rough.objectives != full.objectives;
+  }
+  CHECK(differ == 6);
+  const auto& names = multi.objective_names();
+  const run::RunConfig again = run::parse_run_config(multi.config().to_yaml(names), "again", names);
+  CHECK(again.screen_elements == 2);
+  CHECK(again.screen_wall_images == 1);
+  CHECK(again.screen_sample_spacing == 22);
+  for (const std::string key : {"wall_images: 1", "sample_spacing: 22"}) {
+    try {
+      run::parse_run_config("fidelity: {" + key + "}\n", "cfg.yaml", names);
+      FAIL("no error");
+    } catch (const io::InputError& e) {
+      CHECK(std::string(e.what()).find("needs fidelity.screen") != std::string::npos);
+    }
+  }
+}
+
 TEST_CASE("run config fidelity: the screen scores by its tier, evaluate by the spec's", "[run][session][fidelity]") {
   const std::string block = MTCS_SOURCE_DIR + "/molds/thermal_block.yaml";
   const run::Session plain(mold::load_mold_spec(block), run::RunOverrides{});

@@ -2,7 +2,7 @@
 // infeasible and every parent feasible (constrained domination: such a child is never kept). The
 // run must be the run that scores every child: the same generations bit for bit, each skipped
 // child infeasible with the violations a full evaluation gives it, every other child's objectives
-// equal.
+// equal. The same for a multi-fidelity ES, whose screen skips them too.
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -29,13 +29,17 @@ class Scored final : public opt::ForwardingProblem {
   opt::Score evaluate_unless_behind(const opt::Genotype& g, const opt::Score& bar) const override {
     return lazy_ ? kept(g, inner_.evaluate_unless_behind(g, bar)) : evaluate(g);
   }
+  opt::Score screen(const opt::Genotype& g) const override { return kept(g, inner_.screen(g), true); }
+  opt::Score screen_unless_behind(const opt::Genotype& g, const opt::Score& bar) const override {
+    return lazy_ ? kept(g, inner_.screen_unless_behind(g, bar), true) : screen(g);
+  }
 
-  std::map<opt::Genotype, opt::Score> scores;
+  std::map<opt::Genotype, opt::Score> scores, screens;
 
  private:
-  opt::Score kept(const opt::Genotype& g, opt::Score s) const {
+  opt::Score kept(const opt::Genotype& g, opt::Score s, bool screen = false) const {
     const std::lock_guard<std::mutex> hold(lock_);
-    const_cast<Scored*>(this)->scores[g] = s;
+    (screen ? const_cast<Scored*>(this)->screens : const_cast<Scored*>(this)->scores)[g] = s;
     return s;
   }
   bool lazy_;
@@ -43,13 +47,14 @@ class Scored final : public opt::ForwardingProblem {
 };
 
 std::vector<opt::Generation> optimised(const std::string& algorithm, const opt::Problem& problem, long evaluations,
-                                       std::size_t objectives) {
+                                       std::size_t objectives, int survivors = 0) {
   std::vector<opt::Generation> seen;
   const auto keep = [&](const opt::Generation& g) { seen.push_back(g); };
   if (algorithm == "es") {
     opt::EsConfig c;
     c.seed = 3;
     c.evaluations = evaluations;
+    c.survivors = survivors;
     opt::run(opt::EvolutionStrategy(problem, c), nullptr, keep);
   } else {
     opt::SmsConfig c;
@@ -68,6 +73,45 @@ bool same(const opt::Score& a, const opt::Score& b) {
          a.detail == b.detail;
 }
 
+// Two runs, every child scored (a) and infeasible children skipped (b): the same generations,
+// and each of b's scores the full one or an infeasible child's without objectives; at least
+// so many of each kind, or the comparison proves nothing.
+void check_same_run(const std::vector<opt::Generation>& a, const std::vector<opt::Generation>& b,
+                    const std::map<opt::Genotype, opt::Score>& full, const std::map<opt::Genotype, opt::Score>& lazy,
+                    long least_skipped, long least_scored) {
+  REQUIRE(a.size() == b.size());
+  REQUIRE(a.size() > 20);
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    INFO("generation " << k);
+    REQUIRE(a[k].population.size() == b[k].population.size());
+    CHECK(a[k].evaluations == b[k].evaluations);
+    for (std::size_t i = 0; i < a[k].population.size(); ++i) {
+      CHECK(a[k].population[i].x == b[k].population[i].x);
+      CHECK(same(a[k].population[i].score, b[k].population[i].score));
+    }
+  }
+  long skipped = 0, scored = 0;
+  REQUIRE(lazy.size() == full.size());
+  for (const auto& [x, s] : lazy) {
+    const auto it = full.find(x);
+    REQUIRE(it != full.end());
+    const opt::Score& f = it->second;
+    if (!std::isinf(s.value)) {
+      ++scored;
+      CHECK(same(s, f));
+      continue;
+    }
+    ++skipped;
+    CHECK_FALSE(s.feasible);
+    CHECK_FALSE(f.feasible);
+    CHECK(s.violation == f.violation);
+    CHECK(s.detail == f.detail);
+    for (const double o : s.objectives) CHECK(std::isinf(o));
+  }
+  CHECK(skipped >= least_skipped);
+  CHECK(scored >= least_scored);
+}
+
 }  // namespace
 
 TEST_CASE("ES, SMS-EMOA: infeasible children of feasible parents skip their objectives, the run unchanged",
@@ -83,36 +127,23 @@ TEST_CASE("ES, SMS-EMOA: infeasible children of feasible parents skip their obje
   const std::size_t m = full_session.spec().objectives.use.size();
   const auto a = optimised(algorithm, full, evaluations, m), b = optimised(algorithm, lazy, evaluations, m);
 
-  REQUIRE(a.size() == b.size());
-  REQUIRE(a.size() > 20);
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    INFO("generation " << k);
-    REQUIRE(a[k].population.size() == b[k].population.size());
-    CHECK(a[k].evaluations == b[k].evaluations);
-    for (std::size_t i = 0; i < a[k].population.size(); ++i) {
-      CHECK(a[k].population[i].x == b[k].population[i].x);
-      CHECK(same(a[k].population[i].score, b[k].population[i].score));
-    }
-  }
-  long skipped = 0, scored = 0;
-  REQUIRE(lazy.scores.size() == full.scores.size());
-  for (const auto& [x, s] : lazy.scores) {
-    const auto it = full.scores.find(x);
-    REQUIRE(it != full.scores.end());
-    const opt::Score& f = it->second;
-    if (!std::isinf(s.value)) {
-      ++scored;
-      CHECK(same(s, f));
-      continue;
-    }
-    ++skipped;
-    CHECK_FALSE(s.feasible);
-    CHECK_FALSE(f.feasible);
-    CHECK(s.violation == f.violation);
-    CHECK(s.detail == f.detail);
-    for (const double o : s.objectives) CHECK(std::isinf(o));
-  }
-  // Both kinds occur, or the comparison proves nothing.
-  CHECK(skipped > 100);
-  CHECK(scored > 100);
+  check_same_run(a, b, full.scores, lazy.scores, 100, 100);
+}
+
+TEST_CASE("Multi-fidelity ES: infeasible children of feasible parents skip the screen's objectives too, the run unchanged",
+          "[run][es][fidelity][skip]") {
+  // A cheap screen (T2d, M = 2, one wall level, samples 22 mm apart), 10 of 40 re-scored.
+  const std::string config =
+      "fidelity: {screen: t2d, elements_per_bore: 2, wall_images: 1, sample_spacing: 22, survivors: 10}\n";
+  const std::string mold = MTCS_SOURCE_DIR + "/molds/plate.yaml";
+  const run::Session full_session(mold::load_mold_spec(mold), config, "test"),
+      lazy_session(mold::load_mold_spec(mold), config, "test");
+  REQUIRE(full_session.config().es.survivors == 10);
+  const Scored full(full_session.problem(), false), lazy(lazy_session.problem(), true);
+  const std::size_t m = full_session.spec().objectives.use.size();
+  const auto a = optimised("es", full, 1500, m, 10), b = optimised("es", lazy, 1500, m, 10);
+  check_same_run(a, b, full.screens, lazy.screens, 100, 100);
+  check_same_run(a, b, full.scores, lazy.scores, 0, 100);
+  // Only the survivors were scored by the spec's tier.
+  CHECK(full.scores.size() < full.screens.size() / 3);
 }

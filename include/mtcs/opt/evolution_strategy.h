@@ -84,13 +84,15 @@ class EvolutionStrategy {
   }
 
  private:
-  // The offspring that survive screening, with evaluate's scores.
   // The population the generation after `prev` starts from: prev's, or its restart (above);
   // adds the restart's evaluations to `evaluations`.
   std::vector<Individual> restarted(const Generation& prev, long& evaluations) const;
   // Whether `next` improved on `prev`'s best by more than the restart's tolerance.
   bool improved(const Generation& next, const Generation& prev) const;
-  std::vector<Individual> screened(std::vector<Individual>& offspring, const std::vector<Genotype>& xs) const;
+  // The offspring that survive screening, with evaluate's scores; with a `bar` (the worst parent
+  // of a plus strategy), screened and scored by the problem's *_unless_behind.
+  std::vector<Individual> screened(std::vector<Individual>& offspring, const std::vector<Genotype>& xs,
+                                   const Score* bar) const;
 
   const Problem& problem_;
   EsConfig config_;

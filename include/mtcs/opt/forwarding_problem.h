@@ -1,9 +1,9 @@
 #pragma once
 // A problem that passes every call to another: the base of wrappers that watch a problem (a
 // recorder of every evaluation, a test's log of scores) and override only what they watch.
-// evaluate_unless_behind and screen keep Problem's defaults, which call this->evaluate: a
-// wrapper that overrides evaluate sees every evaluation; one that wants the inner problem's skip
-// or screen overrides those too.
+// evaluate_unless_behind, screen and screen_unless_behind keep Problem's defaults, which call
+// this->evaluate: a wrapper that overrides evaluate sees every evaluation; one that wants the
+// inner problem's skip or screen overrides those too.
 
 #include "mtcs/opt/problem.h"
 

@@ -31,6 +31,8 @@ std::vector<Score> evaluate_all(const Problem& problem, const std::vector<Genoty
 std::vector<Score> evaluate_all(const Problem& problem, const std::vector<Genotype>& xs, const Score& bar);
 // The same with Problem::screen.
 std::vector<Score> screen_all(const Problem& problem, const std::vector<Genotype>& xs);
+// The same with Problem::screen_unless_behind(x, bar) for each.
+std::vector<Score> screen_all(const Problem& problem, const std::vector<Genotype>& xs, const Score& bar);
 // `count` members evaluated in parallel, in order (unsorted): first the `given` genotypes (a
 // user's designs to start from; at most count), then samples, member i drawn from generator i of
 // generation 0 (given members take the first generators' places: the samples after them are the

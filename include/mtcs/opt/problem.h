@@ -83,6 +83,12 @@ class Problem {
   // A cheaper, rougher score for screening offspring (multi-fidelity ES: EsConfig::survivors);
   // the default is evaluate itself. Thread-safe.
   virtual Score screen(const Genotype& g) const { return evaluate(g); }
+  // screen, or a score behind `bar` where the problem sees that g ranks behind it whatever its
+  // objectives (as evaluate_unless_behind). The default is screen itself. Thread-safe.
+  virtual Score screen_unless_behind(const Genotype& g, const Score& bar) const {
+    (void)bar;
+    return screen(g);
+  }
   // Strict weak order of scores; the default compares values.
   virtual bool better(const Score& a, const Score& b) const { return a.value < b.value; }
   // The score SMS-EMOA ranks by. The default is the score itself, ranked by constrained

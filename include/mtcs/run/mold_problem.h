@@ -69,6 +69,8 @@ class MoldProblem final : public opt::Problem {
   opt::Score evaluate_unless_behind(const opt::Genotype& g, const opt::Score& bar) const override;
   // The screening pipeline's score (the same as evaluate without one).
   opt::Score screen(const opt::Genotype& g) const override;
+  // The screen's skip, as evaluate_unless_behind's.
+  opt::Score screen_unless_behind(const opt::Genotype& g, const opt::Score& bar) const override;
   bool better(const opt::Score& a, const opt::Score& b) const override;
   // Constrained domination as it is; the penalty variants rank every layout as feasible, by each
   // objective plus the variant's penalty term (in scaled units: the same term on each).

@@ -28,6 +28,8 @@ struct RunConfig {
   // es.survivors of them re-scored by the spec's tier; unset: no screening.
   std::optional<mold::ThermalTier> screen_tier;
   int screen_elements = 0;  // M of the screening tier; 0: the spec's elements_per_bore
+  int screen_wall_images = 0;                  // the screen's thermal.wall_images; 0: the spec's
+  std::optional<double> screen_sample_spacing;  // mm, the screen's thermal.sample_spacing; unset: the spec's
   double final_cell = 0;    // mm: the best layout re-scored by finite volumes (T3); 0: not
 
   std::string to_yaml(const std::vector<std::string>& objective_names) const;

@@ -54,6 +54,7 @@ class Session {
   std::unique_ptr<const eval::Pipeline> pipeline_;
   std::vector<std::string> names_;
   RunConfig config_;
+  std::unique_ptr<const mold::Scene> screen_scene_;        // a screen with samples of its own only
   std::unique_ptr<const eval::Pipeline> screen_pipeline_;  // multi-fidelity runs only
   std::unique_ptr<const MoldProblem> problem_;
 };
