@@ -17,7 +17,7 @@
 # keeps the best layouts there instead of experiments/thermal/es_plate_layouts. WALL_IMAGES=n sets
 # thermal.wall_images: n in both arms' specs (the line sinks' exact reflection levels; T3 and
 # uniformity do not use it): experiments/thermal/plate_wall_images.md. CONFIG=FILE: the run config
-# (`mtcs optimize --config`) of every run.
+# (`mtcs optimize --config`) of every run. FIRST_SEED=k runs seeds k..SEEDS instead of 1..SEEDS.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 mtcs=${MTCS:-./build/mtcs}
@@ -25,6 +25,7 @@ budget=${1:-5000}
 cell=${2:-2}
 seeds=${3:-11}
 jobs=${4:-2}
+first=${FIRST_SEED:-1}
 objectives=${OBJECTIVES:-temperature_std uniformity}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -76,10 +77,10 @@ print('$objective,$seed,$budget,%.2f,%s,%.4f,$cell,%.2f,%.4f,%.4f,%.4f,%.4f,$bor
     fi
   done
   # The table so far, in seed order.
-  (echo "$header"; for s in $(seq 1 "$seeds"); do [ -f "$work/rows-$s.csv" ] && cat "$work/rows-$s.csv"; done; true) > "$out.tmp.$seed"
+  (echo "$header"; for s in $(seq "$first" "$seeds"); do [ -f "$work/rows-$s.csv" ] && cat "$work/rows-$s.csv"; done; true) > "$out.tmp.$seed"
   mv "$out.tmp.$seed" "$out"
 }
 export -f run_seed
-export mtcs budget cell seeds work out header objectives layouts
-seq 1 "$seeds" | xargs -P "$jobs" -I{} bash -c 'run_seed {}'
+export mtcs budget cell seeds first work out header objectives layouts
+seq "$first" "$seeds" | xargs -P "$jobs" -I{} bash -c 'run_seed {}'
 python3 experiments/thermal/rank_sum.py "$out" || echo "one arm only: no test"

@@ -164,6 +164,20 @@ TEST_CASE("run config fidelity: a screen with its own wall images and samples sc
   }
 }
 
+TEST_CASE("configs/es_screened.yaml: a T2 screen over 22 mm samples, 5 of 40 re-scored", "[run][session][fidelity]") {
+  // What experiments/thermal/es_screen.md measured (its t2s5c arm); the file must keep saying it.
+  const run::Session plate(MTCS_SOURCE_DIR + "/molds/plate.yaml");
+  const run::RunConfig c = run::load_run_config(MTCS_SOURCE_DIR + "/configs/es_screened.yaml", plate.objective_names());
+  CHECK(c.screen_tier == mold::ThermalTier::T2);
+  CHECK(c.screen_elements == 2);
+  CHECK(c.screen_wall_images == 0);
+  CHECK(c.screen_sample_spacing == 22);
+  CHECK(c.es.survivors == 5);
+  CHECK(c.es.mu == 10);
+  CHECK(c.es.lambda == 40);
+  CHECK(c.es.plus);
+}
+
 TEST_CASE("run config fidelity: the screen scores by its tier, evaluate by the spec's", "[run][session][fidelity]") {
   const std::string block = MTCS_SOURCE_DIR + "/molds/thermal_block.yaml";
   const run::Session plain(mold::load_mold_spec(block), run::RunOverrides{});
