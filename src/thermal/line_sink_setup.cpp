@@ -88,9 +88,10 @@ struct Tables {
   std::vector<Image> near_heat_images, far_heat_images;
 };
 
-// Every number the tables depend on, in order: equal keys, equal tables.
-std::vector<double> tables_key(const Setting& setting, const LineSinkOptions& options) {
-  std::vector<double> key{double(options.images), double(options.far_images), options.heat_grid, setting.conductivity};
+// `key` followed by every number of the setting a kept build depends on: the block, its faces'
+// conditions, the heated triangles.
+std::vector<double> setting_key(const Setting& setting, std::vector<double> key) {
+  key.push_back(setting.conductivity);
   for (const Vec3& v : {setting.block.min, setting.block.max}) key.insert(key.end(), v.data(), v.data() + 3);
   for (const FaceCondition& f : setting.faces) key.push_back(f.film), key.push_back(f.ambient);
   for (const HeatedTriangle& t : setting.heat_in) {
@@ -98,6 +99,11 @@ std::vector<double> tables_key(const Setting& setting, const LineSinkOptions& op
     key.push_back(t.flux);
   }
   return key;
+}
+
+// Every number the tables depend on, in order: equal keys, equal tables.
+std::vector<double> tables_key(const Setting& setting, const LineSinkOptions& options) {
+  return setting_key(setting, {double(options.images), double(options.far_images), options.heat_grid});
 }
 
 std::mutex tables_mutex;
@@ -115,6 +121,26 @@ void keep_tables(std::vector<double> key, Tables tables) {
   const std::lock_guard lock(tables_mutex);
   tables_kept.emplace_front(std::move(key), std::move(t));
   if (tables_kept.size() > 4) tables_kept.pop_back();
+}
+
+// The part's void likewise (seconds on a mesh cavity): a run's screening pipeline, with samples of
+// its own, solves the same void as the run's. Kept by every number it depends on; the newest two.
+std::mutex voids_mutex;
+std::deque<std::pair<std::vector<double>, std::shared_ptr<const VoidSurface>>> voids_kept;  // newest first
+
+std::shared_ptr<const VoidSurface> kept_void(const Setting& setting, const std::vector<Image>& images, int sample_levels,
+                                             double panel) {
+  std::vector<double> key = setting_key(setting, {double(sample_levels), panel});
+  {
+    const std::lock_guard lock(voids_mutex);
+    for (const auto& [k, v] : voids_kept)
+      if (k == key) return v;
+  }
+  auto v = std::make_shared<const VoidSurface>(setting.heat_in, images, panel, setting.conductivity);
+  const std::lock_guard lock(voids_mutex);
+  voids_kept.emplace_front(std::move(key), v);
+  if (voids_kept.size() > 2) voids_kept.pop_back();
+  return v;
 }
 
 }  // namespace
@@ -178,9 +204,8 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
   if (m.heat_sources.size() > Impl::kTreeAbove) m.heat_tree.emplace(setting.heat_in, kHeatTreeTheta);
   // The part's void (void_surface.h).
   if (options.void_panel > 0 && (setting.cavity_mesh || setting.cavity_box) && !setting.heat_in.empty())
-    m.void_surface = void_surface ? std::move(void_surface)
-                                  : std::make_shared<const VoidSurface>(setting.heat_in, sample_images,
-                                                                        options.void_panel, setting.conductivity);
+    m.void_surface =
+        void_surface ? std::move(void_surface) : kept_void(setting, sample_images, sample_levels, options.void_panel);
 
   // Convective faces: one unknown uniform loss each, collocated on a grid of the face's part
   // that is not heated.
