@@ -399,8 +399,12 @@ opt::Genotype MoldProblem::recombine(const opt::Genotype& a, const opt::Genotype
 
 opt::Score MoldProblem::evaluate(const opt::Genotype& g) const { return counted(score(pipeline_, g)); }
 
+bool MoldProblem::skips_behind(const opt::Score& bar) const {
+  return ranking_.penalty.variant == mold::PenaltyVariant::ConstrainedDomination && bar.feasible;
+}
+
 opt::Score MoldProblem::evaluate_unless_behind(const opt::Genotype& g, const opt::Score& bar) const {
-  if (ranking_.penalty.variant != mold::PenaltyVariant::ConstrainedDomination || !bar.feasible) return evaluate(g);
+  if (!skips_behind(bar)) return evaluate(g);
   return counted(score(pipeline_.evaluate_if_feasible(genome(g))));
 }
 
@@ -418,7 +422,7 @@ opt::Score MoldProblem::screen(const opt::Genotype& g) const {
 
 opt::Score MoldProblem::screen_unless_behind(const opt::Genotype& g, const opt::Score& bar) const {
   if (!screen_) return evaluate_unless_behind(g, bar);
-  if (ranking_.penalty.variant != mold::PenaltyVariant::ConstrainedDomination || !bar.feasible) return screen(g);
+  if (!skips_behind(bar)) return screen(g);
   ++screened_;
   return score(screen_->evaluate_if_feasible(genome(g)));
 }

@@ -123,8 +123,9 @@ void keep_tables(std::vector<double> key, Tables tables) {
   if (tables_kept.size() > 4) tables_kept.pop_back();
 }
 
-// The part's void likewise (seconds on a mesh cavity): a run's screening pipeline, with samples of
-// its own, solves the same void as the run's. Kept by every number it depends on; the newest two.
+// The part's void likewise (seconds on a mesh cavity): a run's screening pipeline with samples of
+// its own, or `mtcs thermal --out`'s field, solves the same void as the model before it. Kept by
+// every number it depends on; the newest two.
 std::mutex voids_mutex;
 std::deque<std::pair<std::vector<double>, std::shared_ptr<const VoidSurface>>> voids_kept;  // newest first
 
@@ -145,14 +146,10 @@ std::shared_ptr<const VoidSurface> kept_void(const Setting& setting, const std::
 
 }  // namespace
 
-LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, LineSinkOptions options)
-    : LineSinkModel(setting, samples, options, nullptr) {}
-
 LineSinkModel::LineSinkModel(const LineSinkModel& like, const Samples& samples)
-    : LineSinkModel(like.impl_->setting, samples, like.impl_->options, like.impl_->void_surface) {}
+    : LineSinkModel(like.impl_->setting, samples, like.impl_->options) {}
 
-LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, LineSinkOptions options,
-                             std::shared_ptr<const VoidSurface> void_surface)
+LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, LineSinkOptions options)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   if (options.elements < 1 || options.elements > 64)
@@ -204,8 +201,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
   if (m.heat_sources.size() > Impl::kTreeAbove) m.heat_tree.emplace(setting.heat_in, kHeatTreeTheta);
   // The part's void (void_surface.h).
   if (options.void_panel > 0 && (setting.cavity_mesh || setting.cavity_box) && !setting.heat_in.empty())
-    m.void_surface =
-        void_surface ? std::move(void_surface) : kept_void(setting, sample_images, sample_levels, options.void_panel);
+    m.void_surface = kept_void(setting, sample_images, sample_levels, options.void_panel);
 
   // Convective faces: one unknown uniform loss each, collocated on a grid of the face's part
   // that is not heated.

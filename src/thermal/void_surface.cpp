@@ -44,11 +44,11 @@ constexpr std::size_t kMaxFacePlanes = 64;
 // T3 along the part's outer edges (experiments/thermal/void_surface.md, section 7). Ending the
 // panels at the faces' planes pairs them, and the corner's strip is a panel of its own. More
 // than kMaxFacePlanes such planes on an axis: none on it (the panels' count stays bounded).
-std::array<std::vector<double>, 3> panel_planes(std::span<const HeatedTriangle> wall, double panel) {
+// `lo`, `hi`: the wall's bounding box.
+std::array<std::vector<double>, 3> panel_planes(std::span<const HeatedTriangle> wall, double panel, const Vec3& lo,
+                                                const Vec3& hi) {
   std::array<std::vector<double>, 3> faces, planes;
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const HeatedTriangle& t : wall) {
-    lo = lo.cwiseMin(t.a).cwiseMin(t.b).cwiseMin(t.c), hi = hi.cwiseMax(t.a).cwiseMax(t.b).cwiseMax(t.c);
     const Vec3 n = (t.b - t.a).cross(t.c - t.a);
     const double length = n.norm();
     for (int axis = 0; axis < 3; ++axis)
@@ -126,10 +126,11 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
     Vec3 normal_sum = Vec3::Zero();
   };
   std::map<std::tuple<long, long, long, int>, Cut> cells;  // ordered: the same panels every time
-  Vec3 origin = Vec3::Constant(std::numeric_limits<double>::infinity());
-  for (const HeatedTriangle& t : wall) origin = origin.cwiseMin(t.a).cwiseMin(t.b).cwiseMin(t.c);
+  Vec3 origin = Vec3::Constant(std::numeric_limits<double>::infinity()), top = -origin;
+  for (const HeatedTriangle& t : wall)
+    origin = origin.cwiseMin(t.a).cwiseMin(t.b).cwiseMin(t.c), top = top.cwiseMax(t.a).cwiseMax(t.b).cwiseMax(t.c);
   far_.origin = origin;
-  const std::array<std::vector<double>, 3> planes = panel_planes(wall, panel);
+  const std::array<std::vector<double>, 3> planes = panel_planes(wall, panel, origin, top);
   auto cell = [&](const Vec3& p, int axis) {
     const std::vector<double>& at = planes[std::size_t(axis)];
     return long(std::upper_bound(at.begin(), at.end(), p[axis]) - at.begin());

@@ -102,6 +102,9 @@ class MoldProblem final : public opt::Problem {
   opt::Score score(const eval::Pipeline& pipeline, const opt::Genotype& g) const;
   opt::Score score(const eval::Evaluation& e) const;
   opt::Score counted(opt::Score s) const;  // evaluated_ and feasible_ counted
+  // Whether an infeasible layout ranks behind `bar` whatever its objectives (constrained
+  // domination, a feasible bar): then its thermal stages need not run.
+  bool skips_behind(const opt::Score& bar) const;
   // The reach move on g: true when it laid a circuit (added, or in place of one); `evaluations`
   // grows by the pipeline evaluations it spent.
   bool reach_worst(mold::Genome& g, opt::Rng& rng, long& evaluations) const;

@@ -95,14 +95,12 @@ struct LineSinkSolution {
   double heat_in = 0;                 // W entering through the heated triangles
 };
 
-class VoidSurface;
-
 class LineSinkModel {
  public:
   LineSinkModel(const Setting& setting, const Samples& samples, LineSinkOptions options = {});
-  // The same model (setting and options) at other samples, sharing what does not depend on
-  // them: the part's void, most of a mesh mold's build. The same temperatures as a model built
-  // afresh at those samples, bit for bit.
+  // The same model (setting and options) at other samples. What does not depend on them is
+  // shared, as between any models of one setting in a process (the part's void: most of a mesh
+  // mold's build); the temperatures are a fresh build's, bit for bit.
   LineSinkModel(const LineSinkModel& like, const Samples& samples);
   ~LineSinkModel();
   LineSinkModel(LineSinkModel&&) noexcept;
@@ -115,8 +113,6 @@ class LineSinkModel {
   const LineSinkOptions& options() const;
 
  private:
-  LineSinkModel(const Setting& setting, const Samples& samples, LineSinkOptions options,
-                std::shared_ptr<const VoidSurface> void_surface);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
