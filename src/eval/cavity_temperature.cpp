@@ -4,6 +4,7 @@
 #include <map>
 #include <sstream>
 
+#include "mtcs/eval/part_coupling.h"
 #include "mtcs/eval/thermal_model.h"
 #include "mtcs/geometry/segment_distance.h"
 #include "mtcs/io/input_error.h"
@@ -44,6 +45,20 @@ thermal::Tier line_sink_tier(mold::ThermalTier t) {
 
 }  // namespace
 
+CavityConditionUsed cavity_condition_used(const mold::MoldSpec& spec) {
+  CavityConditionUsed c;
+  c.model = mold::to_string(spec.thermal.cavity_condition);
+  if (spec.thermal.cavity_condition == mold::CavityCondition::Coupled) {
+    const PartCoupling p = cavity_coupling(spec);
+    const CycleTimes times = nominal_cycle(spec);
+    c.part_film = p.film * 1e6, c.part_temperature = p.temperature;
+    c.in_mold = times.in_mold, c.cycle = times.cycle;
+  } else {
+    c.heat_flux = cavity_heat_flux(spec) * 1e6;
+  }
+  return c;
+}
+
 ThermalQuery thermal_query(const mold::MoldSpec& spec) {
   return {spec.thermal.tier, spec.thermal.elements_per_bore, spec.thermal.wall_images, spec.thermal.cell_size};
 }
@@ -56,6 +71,7 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
   const std::vector<thermal::Channel> channels = thermal_channels(layout, scene.spec());
   CavityTemperature out;
   out.tier = mold::to_string(query.tier);
+  out.condition = cavity_condition_used(scene.spec());
   out.surface = mold::to_string(scene.spec().thermal.objective_surface);
   if (field_edge > 0) out.field = {mesh::refine(heated_surface(setting), field_edge), {}, "temperature", "degC"};
 

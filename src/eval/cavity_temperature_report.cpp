@@ -4,10 +4,33 @@
 #include <charconv>
 #include <iomanip>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "mtcs/mesh/surface_field.h"
 
 namespace mtcs::eval {
+
+namespace {
+
+std::string condition_text(const CavityConditionUsed& c) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(1);
+  if (c.model == "coupled")
+    s << "coupled, q = " << c.part_film << " W/(m^2 K) x (" << c.part_temperature << " degC - wall) (cycle "
+      << c.cycle << " s, " << c.in_mold << " s in the mold)";
+  else
+    s << "fixed flux " << c.heat_flux << " W/m^2";
+  return s.str();
+}
+
+nlohmann::ordered_json condition_json(const CavityConditionUsed& c) {
+  if (c.model == "coupled")
+    return {{"model", c.model}, {"part_film", c.part_film}, {"part_temperature", c.part_temperature},
+            {"in_mold", c.in_mold}, {"cycle", c.cycle}};
+  return {{"model", c.model}, {"heat_flux", c.heat_flux}};
+}
+
+}  // namespace
 
 void write_cavity_temperature_text(std::ostream& out, const CavityTemperature& r) {
   const std::size_t samples = r.at_samples.size();
@@ -16,6 +39,7 @@ void write_cavity_temperature_text(std::ostream& out, const CavityTemperature& r
       << " samples of the " << r.surface << " surface, area-weighted)\n"
       << "  mean " << s.mean << " degC, std " << s.std << " K, max " << s.max << " degC at ("
       << std::setprecision(1) << r.hottest.x() << ", " << r.hottest.y() << ", " << r.hottest.z() << ") mm\n"
+      << std::setprecision(1) << "cavity condition: " << condition_text(r.condition) << "\n"
       << std::setprecision(3) << "heat balance\n  in " << r.balance.in << " W = bores "
       << r.balance.to_channels << " W + outer faces " << r.balance.to_faces << " W (residual "
       << std::scientific << std::setprecision(1) << r.balance.residual() << " W)\n"
@@ -31,6 +55,7 @@ void write_cavity_temperature_field(std::ostream& out, const CavityTemperature& 
 
 void write_cavity_temperature_json(std::ostream& out, const CavityTemperature& r) {
   const nlohmann::ordered_json j{{"tier", r.tier},
+                                 {"cavity_condition", condition_json(r.condition)},
                                  {"mean", r.summary.mean},
                                  {"std", r.summary.std},
                                  {"max", r.summary.max},

@@ -18,7 +18,11 @@ TemperatureObjectives temperature_objectives(const std::vector<double>& temperat
                                              const mold::MoldSpec& spec) {
   const thermal::Summary s = thermal::summarize(temperature, samples);
   const double thickness = spec.cavity ? spec.cavity->wall_thickness : mold::Cavity{}.wall_thickness;
-  return {s.mean, s.std, s.max, cooling_time(thickness, spec.thermal.polymer, s.max)};
+  double cycle = cooling_time(thickness, spec.thermal.polymer, s.max);
+  // Coupled: the whole cycle, the slowest place (the hottest wall) deciding when to eject.
+  if (spec.thermal.cavity_condition == mold::CavityCondition::Coupled)
+    cycle += spec.thermal.cycle.fill + spec.thermal.cycle.pack + spec.thermal.cycle.open;
+  return {s.mean, s.std, s.max, cycle};
 }
 
 namespace {

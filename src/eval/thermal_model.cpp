@@ -5,6 +5,7 @@
 
 #include "mtcs/eval/coolant.h"
 #include "mtcs/eval/cycle_time.h"
+#include "mtcs/eval/part_coupling.h"
 #include "surface_samples.h"
 
 namespace mtcs::eval {
@@ -26,16 +27,40 @@ thermal::BlockFace block_face(mold::Face f) {
   return thermal::BlockFace::PosZ;
 }
 
-double flux_at(const Vec3& p, double flux, const std::vector<mold::HeatRegion>& regions) {
+// The last region holding p, or none.
+const mold::HeatRegion* region_at(const Vec3& p, const std::vector<mold::HeatRegion>& regions) {
+  const mold::HeatRegion* found = nullptr;
   for (const mold::HeatRegion& r : regions)
-    if (r.box.contains(p)) flux = r.flux;
-  return flux;
+    if (r.box.contains(p)) found = &r;
+  return found;
 }
+
+// The cavity's condition per point: a region's fixed flux where one holds the point; elsewhere
+// the spec's condition (the flux model's flux, or the part's coupling).
+class CavityCondition {
+ public:
+  explicit CavityCondition(const mold::MoldSpec& spec) : regions_(spec.thermal.regions) {
+    if (spec.thermal.cavity_condition == mold::CavityCondition::Coupled) {
+      const PartCoupling c = cavity_coupling(spec);
+      film_ = c.film, part_ = c.temperature;
+    } else {
+      flux_ = cavity_heat_flux(spec);
+    }
+  }
+  thermal::HeatedTriangle at(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& where) const {
+    if (const mold::HeatRegion* r = region_at(where, regions_)) return {a, b, c, r->flux};
+    return {a, b, c, flux_, film_, part_};
+  }
+
+ private:
+  const std::vector<mold::HeatRegion>& regions_;
+  double flux_ = 0, film_ = 0, part_ = 0;
+};
 
 // A flat rectangle (zero extent along one axis) as triangles facing `melt`, cut wherever a
 // region's bound crosses it, each piece with its own flux.
-void add_rectangle(const Box& rect, const Vec3& melt, double flux, const std::vector<mold::HeatRegion>& regions,
-                   std::vector<thermal::HeatedTriangle>& out) {
+void add_rectangle(const Box& rect, const Vec3& melt, const CavityCondition& condition,
+                   const std::vector<mold::HeatRegion>& regions, std::vector<thermal::HeatedTriangle>& out) {
   const auto [i, j, k] = patch_axes(rect);
   auto cuts = [&, &rect = rect](int a) {
     std::vector<double> c{rect.min[a], rect.max[a]};
@@ -55,13 +80,13 @@ void add_rectangle(const Box& rect, const Vec3& melt, double flux, const std::ve
         return p;
       };
       const Vec3 p00 = corner(0, 0), p10 = corner(1, 0), p11 = corner(1, 1), p01 = corner(0, 1);
-      const double q = flux_at((p00 + p11) / 2, flux, regions);
+      const Vec3 mid = (p00 + p11) / 2;
       if ((p10 - p00).cross(p01 - p00).dot(melt) > 0) {
-        out.push_back({p00, p10, p11, q});
-        out.push_back({p00, p11, p01, q});
+        out.push_back(condition.at(p00, p10, p11, mid));
+        out.push_back(condition.at(p00, p11, p01, mid));
       } else {
-        out.push_back({p00, p11, p10, q});
-        out.push_back({p00, p01, p11, q});
+        out.push_back(condition.at(p00, p11, p10, mid));
+        out.push_back(condition.at(p00, p01, p11, mid));
       }
     }
   }
@@ -84,10 +109,10 @@ thermal::Setting thermal_setting(const mold::Scene& scene) {
   for (const mold::Face f : t.adiabatic_faces) s.faces[std::size_t(block_face(f))].film = 0;
 
   const mold::Cavity& cavity = *spec.cavity;
-  const double flux = cavity_heat_flux(spec);
+  const CavityCondition condition(spec);
   if (cavity.is_patch()) {
     // The melt lies outside the block, beyond the patch's face.
-    add_rectangle(*cavity.box, mold::normal_of(*cavity.patch_face), flux, t.regions, s.heat_in);
+    add_rectangle(*cavity.box, mold::normal_of(*cavity.patch_face), condition, t.regions, s.heat_in);
   } else if (cavity.box) {
     s.cavity_box = *cavity.box;
     const Box& b = *cavity.box;
@@ -97,7 +122,7 @@ thermal::Setting thermal_setting(const mold::Scene& scene) {
         (upper ? face.min : face.max)[k] = upper ? b.max[k] : b.min[k];
         Vec3 inward = Vec3::Zero();
         inward[k] = upper ? -1 : 1;  // the melt is inside the box
-        add_rectangle(face, inward, flux, t.regions, s.heat_in);
+        add_rectangle(face, inward, condition, t.regions, s.heat_in);
       }
     }
   } else {
@@ -106,7 +131,7 @@ thermal::Setting thermal_setting(const mold::Scene& scene) {
     for (std::size_t i = 0; i < m.triangles.size(); ++i) {
       const Vec3 a = m.corner(i, 0), b = m.corner(i, 1), c = m.corner(i, 2);
       // Outward-oriented mesh: reversed, the triangle faces the melt inside the part.
-      s.heat_in.push_back({a, c, b, flux_at((a + b + c) / 3, flux, t.regions)});
+      s.heat_in.push_back(condition.at(a, c, b, (a + b + c) / 3));
     }
   }
   return s;
@@ -128,7 +153,13 @@ std::vector<thermal::Channel> thermal_channels(const mold::Layout& layout, const
 }
 
 double cavity_flux_at(const mold::MoldSpec& spec, const Vec3& p) {
-  return flux_at(p, cavity_heat_flux(spec), spec.thermal.regions);
+  if (const mold::HeatRegion* r = region_at(p, spec.thermal.regions)) return r->flux;
+  return spec.thermal.cavity_condition == mold::CavityCondition::Coupled ? 0.0 : cavity_heat_flux(spec);
+}
+
+bool cavity_heated_at(const mold::MoldSpec& spec, const Vec3& p) {
+  if (const mold::HeatRegion* r = region_at(p, spec.thermal.regions)) return r->flux > 0;
+  return spec.thermal.cavity_condition == mold::CavityCondition::Coupled || cavity_heat_flux(spec) > 0;
 }
 
 thermal::Samples thermal_samples(const mold::Scene& scene) {
@@ -140,7 +171,7 @@ thermal::Samples thermal_samples(const mold::Scene& scene) {
   for (std::size_t i = 0; i < s.size(); ++i) {
     const Vec3 p(s.x[i], s.y[i], s.z[i]);
     all.points.push_back(p), all.weights.push_back(s.weight[i]);
-    if (cavity_flux_at(spec, p) > 0) heated.points.push_back(p), heated.weights.push_back(s.weight[i]);
+    if (cavity_heated_at(spec, p)) heated.points.push_back(p), heated.weights.push_back(s.weight[i]);
   }
   const bool use_heated = spec.thermal.objective_surface == mold::ObjectiveSurface::Heated && heated.size() > 0;
   return use_heated ? heated : all;

@@ -357,11 +357,46 @@ Objectives parse_objectives(const YamlReader& r, const YAML::Node& n) {
   return o;
 }
 
+// thermal.cavity_condition and what it reads: part_film, part_temperature, cycle. Either key of
+// the part's condition asks for the coupled condition; heat_flux belongs to the flux model.
+void parse_cavity_condition(const YamlReader& r, const YAML::Node& n, ThermalSpec& t) {
+  constexpr double kPerM2 = 1e-6;  // W/(m^2 K) -> W/(mm^2 K)
+  if (n["part_film"]) t.part_film = kPerM2 * r.number(n["part_film"], "thermal.part_film", 1e-6, 1e9);
+  if (n["part_temperature"])
+    t.part_temperature = r.number(n["part_temperature"], "thermal.part_temperature", -273.15, 5000);
+  if (t.part_film || t.part_temperature) t.cavity_condition = CavityCondition::Coupled;
+  if (n["cavity_condition"]) {
+    const std::string s = r.text(n["cavity_condition"], "thermal.cavity_condition");
+    if (s == "coupled") t.cavity_condition = CavityCondition::Coupled;
+    else if (s == "flux") t.cavity_condition = CavityCondition::Flux;
+    else r.fail(n["cavity_condition"], "thermal.cavity_condition", "expected coupled or flux; got '" + s + "'");
+  }
+  const bool coupled = t.cavity_condition == CavityCondition::Coupled;
+  if (!coupled && (n["part_film"] || n["part_temperature"]))
+    r.fail(n["part_film"] ? n["part_film"] : n["part_temperature"], n["part_film"] ? "thermal.part_film" : "thermal.part_temperature",
+           "belongs to cavity_condition: coupled, not flux");
+  if (coupled && n["heat_flux"])
+    r.fail(n["heat_flux"], "thermal.heat_flux",
+           "is the flux model's (cavity_condition: flux); the coupled condition takes part_film and part_temperature");
+  if (n["cycle"]) {
+    const YAML::Node& c = n["cycle"];
+    r.expect_map(c, "thermal.cycle", {"fill", "pack", "open", "cooling"});
+    MoldingCycle& m = t.cycle;
+    if (c["fill"]) m.fill = r.number(c["fill"], "thermal.cycle.fill", 0, 1e5);
+    if (c["pack"]) m.pack = r.number(c["pack"], "thermal.cycle.pack", 0, 1e5);
+    if (c["open"]) m.open = r.number(c["open"], "thermal.cycle.open", 0, 1e5);
+    if (c["cooling"]) m.cooling = r.number(c["cooling"], "thermal.cycle.cooling", 1e-3, 1e5);
+  }
+  if (t.part_temperature && coupled && *t.part_temperature <= t.coolant_temperature)
+    r.fail(n["part_temperature"], "thermal.part_temperature", "the part must be hotter than the coolant");
+}
+
 // thermal: SI in the file, the thermal module's units (mm, W, degrees C) in the spec.
 ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
   r.expect_map(n, "thermal", {"steel_conductivity", "coolant", "ambient", "adiabatic_faces", "heat_flux", "regions",
                               "polymer", "tier", "elements_per_bore", "wall_images", "cell_size",
-                              "objective_surface", "cavity_void", "void_panel", "sample_spacing"});
+                              "objective_surface", "cavity_void", "void_panel", "sample_spacing",
+                              "cavity_condition", "part_film", "part_temperature", "cycle"});
   constexpr double kPerM = 1e-3, kPerM2 = 1e-6;  // W/(m K) -> W/(mm K); W/m^2 -> W/mm^2
   constexpr double kCold = -273.15, kHot = 5000;  // degrees C
   ThermalSpec t;
@@ -416,6 +451,7 @@ ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
       r.fail(p["eject_temperature"] ? p["eject_temperature"] : p, "thermal.polymer.eject_temperature",
              "the eject temperature must be below the melt temperature");
   }
+  parse_cavity_condition(r, n, t);
   // The cycle-time proxy cools the part towards the coolant: it must be colder than ejection.
   if (!(t.coolant_temperature < t.polymer.eject_temperature)) {
     const YAML::Node& c = n["coolant"] && n["coolant"]["temperature"] ? n["coolant"]["temperature"] : n;
@@ -593,6 +629,8 @@ bool is_temperature_objective(Objective o) {
 }
 
 std::string to_string(ObjectiveSurface s) { return s == ObjectiveSurface::Heated ? "heated" : "all"; }
+
+std::string to_string(CavityCondition c) { return c == CavityCondition::Coupled ? "coupled" : "flux"; }
 
 std::string to_string(ThermalTier t) {
   switch (t) {

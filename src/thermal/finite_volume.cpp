@@ -28,8 +28,9 @@ struct Sink {
   int row;
   double conductance;  // W/K
   double temperature;
-  int channel;  // -1 for an outer face
+  int channel;  // -1 for an outer face, kPartFilm for the part's film (heat in)
 };
+constexpr int kPartFilm = -2;
 
 template <class Preconditioner>
 Eigen::VectorXd conjugate_gradient(const Eigen::SparseMatrix<double>& matrix, const Eigen::VectorXd& rhs,
@@ -76,8 +77,8 @@ struct System {
   std::vector<Sink> sinks;
 };
 
-System assemble(const Model& model, const fv::Grid& grid, const FvField& field,
-                const std::vector<double>& source) {
+System assemble(const Model& model, const fv::Grid& grid, const FvField& field, const std::vector<double>& source,
+                const std::vector<fv::PartFilm>& films) {
   const Setting& setting = model.setting;
   const double k = setting.conductivity;
   const std::size_t n_cells = source.size();
@@ -97,6 +98,14 @@ System assemble(const Model& model, const fv::Grid& grid, const FvField& field,
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(std::size_t(n) * 7);
   heat = Eigen::VectorXd::Zero(n);
+  // The part's films: diagonal entries, kept as sinks (their heat flows the other way).
+  std::vector<double> film_diagonal(std::size_t(n), 0.0);
+  for (const fv::PartFilm& f : films) {
+    const int r = row[f.cell];
+    if (r < 0) throw std::logic_error("finite volume: a part film on a cell that is not steel");
+    film_diagonal[std::size_t(r)] += f.conductance;
+    sinks.push_back({r, f.conductance, f.temperature, kPartFilm});
+  }
   for (int kk = 0; kk < field.cells[2]; ++kk)
     for (int j = 0; j < field.cells[1]; ++j)
       for (int i = 0; i < field.cells[0]; ++i) {
@@ -104,7 +113,7 @@ System assemble(const Model& model, const fv::Grid& grid, const FvField& field,
         const int r = row[cell];
         if (r < 0) continue;
         const std::array<int, 3> ijk{i, j, kk};
-        double diagonal = 0;
+        double diagonal = film_diagonal[std::size_t(r)];
         heat[r] += source[cell];
         for (int dir = 0; dir < 6; ++dir) {
           const int a = dir / 2, step = dir % 2 ? 1 : -1;
@@ -182,8 +191,7 @@ FvResult solve_finite_volume(const Model& model, const Samples& samples, const F
   const std::size_t n_cells = std::size_t(field.cells[0]) * field.cells[1] * field.cells[2];
   std::vector<double> source(n_cells, 0.0);
   const fv::HeatInput heat(model, grid, field, source);
-  record_wall_flux(grid, source, field);
-  System system = assemble(model, grid, field, source);
+  System system = assemble(model, grid, field, source, heat.films());
   const std::vector<int>& row = system.row;
   const int n = int(system.heat.size());
 
@@ -249,9 +257,20 @@ FvResult solve_finite_volume(const Model& model, const Samples& samples, const F
     const double q = s.conductance * ((base[s.row] - s.temperature) + offset[s.row]);
     if (s.channel >= 0)
       result.heat_to_channel[std::size_t(s.channel)] += q;
-    else
+    else if (s.channel == -1)
       result.heat_to_faces += q;
   }
+  // What the part's films let in, where the samples' extrapolation to the wall reads it: the
+  // patches' face cells, the cavity's cells.
+  for (const fv::PartFilm& f : heat.films()) {
+    const double q = f.conductance * (f.temperature - field.temperature[f.cell]);
+    result.heat_in += q;
+    if (f.face >= 0)
+      field.face_heat[std::size_t(f.face)][f.face_cell] += q;
+    else
+      source[f.cell] += q;
+  }
+  record_wall_flux(grid, source, field);
   for (double q : result.heat_to_channel) result.heat_to_channels += q;
 
   result.temperature.reserve(samples.size());

@@ -14,17 +14,24 @@ HeatInput::HeatInput(const Model& model, const Grid& grid, FvField& field, std::
   const Box& block = model.setting.block;
   const double scale = std::max(block.min.cwiseAbs().maxCoeff(), block.max.cwiseAbs().maxCoeff());
   tolerance_ = 1e-9 * (1 + scale) + 1e-9 * block.size().maxCoeff();
+  conductivity_ = model.setting.conductivity;
   for (const HeatedTriangle& t : model.setting.heat_in) {
-    if (!std::isfinite(t.flux) || !t.a.allFinite() || !t.b.allFinite() || !t.c.allFinite())
-      throw std::invalid_argument("finite volume: a heat_in triangle is not finite");
+    if (!std::isfinite(t.flux) || !std::isfinite(t.film) || !(t.film >= 0) || !std::isfinite(t.part_temperature) ||
+        !t.a.allFinite() || !t.b.allFinite() || !t.c.allFinite())
+      throw std::invalid_argument("finite volume: a heat_in triangle is not finite (or its film is negative)");
     const double area = 0.5 * (t.b - t.a).cross(t.c - t.a).norm();
-    if (area == 0 || t.flux == 0) continue;
+    if (area == 0 || !t.heats()) continue;
     const int face = block_face_of(t, block);
     if (face >= 0)
       spread_on_face(t, face);
     else
-      spread_in_volume(t.a, t.b, t.c, t.flux);
+      spread_in_volume(t);
   }
+}
+
+void HeatInput::add_film(std::size_t cell, double area, double distance, const HeatedTriangle& t) {
+  if (!(t.film > 0) || !(area > 0)) return;
+  films_.push_back({cell, area / (1 / t.film + distance / conductivity_), t.part_temperature});
 }
 
 int HeatInput::block_face_of(const HeatedTriangle& t, const Box& block) const {
@@ -58,19 +65,27 @@ void HeatInput::spread_on_face(const HeatedTriangle& t, int face) {
       ijk[ab] = b;
       ijk[ac] = c;
       if (grid_.kind(ijk[0], ijk[1], ijk[2]) != kSteel) {  // a bore breaks through here
-        deposit(field_.centre(ijk[0], ijk[1], ijk[2]), overlap * t.flux);
+        Vec3 inward = Vec3::Zero();
+        inward[a] = face_is_max(face) ? -1 : 1;
+        deposit(field_.centre(ijk[0], ijk[1], ijk[2]), overlap * t.flux, overlap, t, inward);
         continue;
       }
       const std::size_t f = std::size_t(b) + std::size_t(field_.cells[ab]) * std::size_t(c);
       field_.face_heat[face][f] += overlap * t.flux;
       field_.face_covered[face][f] += overlap;
+      if (t.film > 0) {
+        add_film(field_.index(ijk[0], ijk[1], ijk[2]), overlap, 0.5 * field_.spacing[a], t);
+        films_.back().face = face, films_.back().face_cell = f;
+      }
     }
 }
 
 // Each cell takes the heat of the part of the triangle inside it (the triangle moved a hair
 // into the steel, so that one on a cell face goes to the steel side). A part in a cavity or
 // channel cell goes to the nearest steel cell, looked for a quarter cell behind the normal.
-void HeatInput::spread_in_volume(const Vec3& a, const Vec3& b, const Vec3& c, double flux) {
+void HeatInput::spread_in_volume(const HeatedTriangle& t) {
+  const Vec3 &a = t.a, &b = t.b, &c = t.c;
+  const double flux = t.flux;
   const double h = field_.spacing.minCoeff();
   const Vec3 normal = (b - a).cross(c - a).normalized();
   const Vec3 shift = -1e-6 * h * normal - field_.origin;  // relative to the grid: no cancellation
@@ -81,14 +96,19 @@ void HeatInput::spread_in_volume(const Vec3& a, const Vec3& b, const Vec3& c, do
     const Piece piece = clip_triangle_to_box(ra, rb, rc, cell_lo, cell_lo + field_.spacing);
     if (piece.area <= 0) return;
     total_ += piece.area * flux;
-    if (grid_.kind(i, j, k) == kSteel)
+    if (grid_.kind(i, j, k) == kSteel) {
       source_[field_.index(i, j, k)] += piece.area * flux;
-    else
-      deposit(piece.centroid + field_.origin - 0.25 * h * normal, piece.area * flux);
+      // The film in series with the steel from the wall to the cell's centre.
+      add_film(field_.index(i, j, k), piece.area,
+               std::abs(normal.dot(field_.centre(i, j, k) - (piece.centroid + field_.origin))), t);
+    } else {
+      deposit(piece.centroid + field_.origin - 0.25 * h * normal, piece.area * flux, piece.area, t, -normal);
+    }
   });
 }
 
-void HeatInput::deposit(const Vec3& p, double heat) {
+// `steel`: the wall's normal into the steel, for the film's distance to the cell's centre.
+void HeatInput::deposit(const Vec3& p, double heat, double area, const HeatedTriangle& t, const Vec3& steel) {
   std::array<int, 3> home{};
   for (int a = 0; a < 3; ++a)
     home[a] = std::clamp(clamped_floor((p[a] - field_.origin[a]) / field_.spacing[a], field_.cells[a]), 0,
@@ -106,6 +126,10 @@ void HeatInput::deposit(const Vec3& p, double heat) {
         }
     if (best < std::numeric_limits<double>::infinity()) {
       source_[cell] += heat;
+      const Vec3 centre = field_.centre(int(cell % std::size_t(field_.cells[0])),
+                                        int(cell / std::size_t(field_.cells[0]) % std::size_t(field_.cells[1])),
+                                        int(cell / (std::size_t(field_.cells[0]) * std::size_t(field_.cells[1]))));
+      add_film(cell, area, std::abs(steel.dot(centre - p)), t);
       return;
     }
   }

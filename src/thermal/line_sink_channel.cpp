@@ -147,6 +147,24 @@ Eigen::MatrixXf LineSinkModel::Impl::void_derivatives(const ChannelAxis& source)
   return d;
 }
 
+Eigen::MatrixXf LineSinkModel::Impl::void_robin_rhs(const ChannelAxis& source, const MatrixXd& moments) const {
+  thread_local std::vector<float> acc;
+  float_columns_into(source, void_pairs, sample_origin, options.far_expansion, acc);
+  const std::size_t T = void_pairs.targets(), n = T / 2;
+  const int cols = source.elements * kinds;
+  const VectorXd& H = void_surface->film_over_k();
+  const MatrixXd far = far_panels * moments;  // panels x cols
+  Eigen::MatrixXf rhs(Eigen::Index(n), cols);
+  const double scale = 1 / (2 * void_step);
+  for (int c = 0; c < cols; ++c)
+    for (std::size_t i = 0; i < n; ++i) {
+      const double plus = acc[std::size_t(c) * T + 2 * i], minus = acc[std::size_t(c) * T + 2 * i + 1];
+      const auto r = Eigen::Index(i);
+      rhs(r, c) = float(scale * (plus - minus) - H[r] * (0.5 * (plus + minus) + far(r, c)));
+    }
+  return rhs;
+}
+
 std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(const Channel& ch) const {
   auto b = std::make_shared<LineSinkCache::ChannelBlock>();
   b->axis = channel_axis(ch, options.elements);
@@ -195,7 +213,28 @@ std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(
     void_rows = rows_from(a, kinds, w.cols(), [&](int i, Eigen::Index c) { return w(i, c); });
     b->void_rows = void_rows.transpose().cast<float>();
   }
-  if (void_surface && !void_surface->reaches(ch.axis.p0, ch.axis.p1, ch.radius)) {
+  b->moments = MatrixXd::Zero(4, cols);
+  for (int e = 0; e < a.elements; ++e) {
+    const Vec3 mid = a.p0 + ((e + 0.5) * a.element_length) * a.u;
+    const double L = a.element_length;
+    b->moments(0, e * kinds) = -L;  // a sink: charge -L per unit strength
+    b->moments.block<3, 1>(1, e * kinds) = -L * (mid - center);
+    if (kinds == 3) {
+      b->moments.block<3, 1>(1, e * kinds + 1) = L * a.n1;
+      b->moments.block<3, 1>(1, e * kinds + 2) = L * a.n2;
+    }
+  }
+  if (robin) b->layer_moments = MatrixXd::Zero(4, cols);
+  if (void_surface && !void_surface->reaches(ch.axis.p0, ch.axis.p1, ch.radius) && robin) {
+    b->void_tau = void_surface->layer(void_robin_rhs(a, b->moments));
+    b->layer_moments = void_surface->moments() * b->void_tau.cast<double>();
+    b->face_means += void_face_potentials * b->void_tau.cast<double>();  // its far lattice: in the solve
+    if (!b->sample_cols_f.empty())
+      add_skinny_product(void_potentials_ft, b->void_tau, Eigen::Map<Eigen::MatrixXf>(b->sample_cols_f.data(), Eigen::Index(n_samples), cols));
+    else
+      Eigen::Map<MatrixXd>(b->sample_cols_d.data(), Eigen::Index(n_samples), cols).noalias() +=
+          void_potentials * b->void_tau.cast<double>();
+  } else if (void_surface && !void_surface->reaches(ch.axis.p0, ch.axis.p1, ch.radius)) {
     const Eigen::MatrixXf d = void_derivatives(a);
     b->void_tau = void_surface->layer(d);
     b->face_means += void_faces * d.cast<double>();
@@ -219,22 +258,21 @@ std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(
   b->heat_rows.resize(cols);
   row_functionals(a, [&](const Vec3& p, double* v) { v[0] = heat_at(p); }, 1,
                   b->heat_rows.data(), cols);
-  if (void_surface) b->heat_rows += void_rows * void_surface->heat_layer();  // the heat input's correction
+  if (void_surface) b->heat_rows += void_rows * heat_tau;  // the heat input's correction
   b->far_rows.resize(cols, 4);
   row_functionals(a, [&](const Vec3& p, double* v) {
     const Eigen::Vector4d k = far_at(p);
     for (int i = 0; i < 4; ++i) v[i] = k[i];
   }, 4, b->far_rows.data(), cols);
-  b->moments = MatrixXd::Zero(4, cols);
-  for (int e = 0; e < a.elements; ++e) {
-    const Vec3 mid = a.p0 + ((e + 0.5) * a.element_length) * a.u;
-    const double L = a.element_length;
-    b->moments(0, e * kinds) = -L;  // a sink: charge -L per unit strength
-    b->moments.block<3, 1>(1, e * kinds) = -L * (mid - center);
-    if (kinds == 3) {
-      b->moments.block<3, 1>(1, e * kinds + 1) = L * a.n1;
-      b->moments.block<3, 1>(1, e * kinds + 2) = L * a.n2;
-    }
+  if (robin) {  // the layers' far lattice at the rows, and the fixed ones' fields there
+    b->far_rows_layer.resize(cols, 4);
+    row_functionals(a, [&](const Vec3& p, double* v) {
+      const Eigen::Vector4d k = far_kernel(p, sample_far);
+      for (int i = 0; i < 4; ++i) v[i] = k[i];
+    }, 4, b->far_rows_layer.data(), cols);
+    b->heat_rows += b->far_rows_layer * heat_layer_moments;
+    b->t0_rows = void_rows * t0_tau + b->far_rows_layer * t0_moments;
+    b->face_layer_rows = void_rows * face_tau + b->far_rows_layer * face_layer_moments;
   }
   b->face_rows.resize(cols, faces.size());
   if (!faces.empty())
@@ -243,6 +281,7 @@ std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(
       for (std::size_t f = 0; f < faces.size(); ++f) v[f] = face_field(faces[f], p);  // no extrapolation
     },
                     int(faces.size()), b->face_rows.data(), cols);
+  if (robin && !faces.empty()) b->face_rows += b->face_layer_rows;
   return b;
 }
 

@@ -47,6 +47,11 @@ struct LineSinkCache::ChannelBlock {
   // columns (panels x cols; empty for a bore reaching the void), and the panels' potentials at
   // the rows (panels x rows: transposed, for skinny_product.h).
   Eigen::MatrixXf void_tau, void_rows;
+  // A coupled cavity (Impl::robin): the layer's charge and first moment (4 x cols), the far
+  // lattice of a layer at the rows (rows x 4, the void's far images), and the layers of the
+  // free constant, the face losses and the fixed sources at the rows.
+  MatrixXd layer_moments, far_rows_layer, face_layer_rows;
+  VectorXd t0_rows;
 };
 
 struct LineSinkCache::PairBlock {
@@ -137,6 +142,28 @@ struct LineSinkModel::Impl {
   // The normal derivatives at the panels of `source`'s columns (panels x cols), by the float
   // kernel: relative error ~1e-4 at a step of 1 % of the panel.
   Eigen::MatrixXf void_derivatives(const ChannelAxis& source) const;
+  // With a film: d - H f for the columns (f their temperature at the panels' points, the mean
+  // of the two points of each pair, plus their far lattice by `moments`, the columns' own).
+  Eigen::MatrixXf void_robin_rhs(const ChannelAxis& source, const MatrixXd& moments) const;
+
+  // A coupled cavity (void_surface.h: a wall with a film). Each source's layer answers the
+  // film too, so the layers carry heat: their charge and first moment join the far lattice
+  // (with the void's far images, `sample_far`) and the energy balance. Per source: the
+  // free constant (t0_*: its field is 1 plus its layer's), the face losses (face_tau), the fixed
+  // sources (heat_tau: the sheets and the part's temperature).
+  bool robin = false;
+  std::vector<Image> sample_far;
+  MatrixXd void_face_potentials;  // convective faces x panels: the faces' means of the potentials
+  MatrixXd far_panels;            // panels x 4: the far lattice (sample_far) at the panels' points
+  VectorXd heat_tau;              // the fixed sources' layer (also without a film: the heat's)
+  Eigen::Vector4d heat_layer_moments = Eigen::Vector4d::Zero();
+  VectorXd t0_tau, t0_samples, t0_face_means;
+  Eigen::Vector4d t0_moments = Eigen::Vector4d::Zero();
+  MatrixXd face_tau, face_layer_moments;  // panels x faces, 4 x faces
+  // The above, once the void, the faces, the samples and their far lattices are built; `d`: the
+  // face losses' normal derivatives at the panels (panels x faces), `face_points`: the faces'
+  // grid points.
+  void build_robin_fields(const std::vector<Vec3>& face_points, const MatrixXd& d);
 
   // The heated triangles with a flux (a region without flux, molds/plate.yaml's top face and
   // rim, adds +-0 to the sum: left out, the same bits at half the potentials on the plate).

@@ -96,7 +96,7 @@ std::vector<double> setting_key(const Setting& setting, std::vector<double> key)
   for (const FaceCondition& f : setting.faces) key.push_back(f.film), key.push_back(f.ambient);
   for (const HeatedTriangle& t : setting.heat_in) {
     for (const Vec3& v : {t.a, t.b, t.c}) key.insert(key.end(), v.data(), v.data() + 3);
-    key.push_back(t.flux);
+    key.push_back(t.flux), key.push_back(t.film), key.push_back(t.part_temperature);
   }
   return key;
 }
@@ -130,14 +130,14 @@ std::mutex voids_mutex;
 std::deque<std::pair<std::vector<double>, std::shared_ptr<const VoidSurface>>> voids_kept;  // newest first
 
 std::shared_ptr<const VoidSurface> kept_void(const Setting& setting, const std::vector<Image>& images, int sample_levels,
-                                             double panel) {
-  std::vector<double> key = setting_key(setting, {double(sample_levels), panel});
+                                             double panel, int far_levels, const FarLattice& far) {
+  std::vector<double> key = setting_key(setting, {double(sample_levels), panel, double(far_levels)});
   {
     const std::lock_guard lock(voids_mutex);
     for (const auto& [k, v] : voids_kept)
       if (k == key) return v;
   }
-  auto v = std::make_shared<const VoidSurface>(setting.heat_in, images, panel, setting.conductivity);
+  auto v = std::make_shared<const VoidSurface>(setting.heat_in, images, panel, setting.conductivity, far);
   const std::lock_guard lock(voids_mutex);
   voids_kept.emplace_front(std::move(key), v);
   if (voids_kept.size() > 2) voids_kept.pop_back();
@@ -145,6 +145,42 @@ std::shared_ptr<const VoidSurface> kept_void(const Setting& setting, const std::
 }
 
 }  // namespace
+
+void LineSinkModel::Impl::build_robin_fields(const std::vector<Vec3>& face_points, const MatrixXd& d) {
+  Impl& m = *this;
+  const VoidSurface& v = *void_surface;
+  const std::size_t n = v.panels(), nf = m.faces.size();
+  const auto N = Eigen::Index(n);
+  const VectorXd& H = v.film_over_k();
+  m.void_face_potentials = m.face_average * v.potentials(face_points);
+  m.far_panels.resize(N, 4);
+  MatrixXd far_fixed(N, 4);  // the far lattice of the sources summed to `images` levels
+  VectorXd heat(N);
+  MatrixXd face(N, Eigen::Index(nf));
+  for_each_index(n, [&](std::size_t i) {
+    const Vec3& p = v.points()[i];
+    const auto r = Eigen::Index(i);
+    m.far_panels.row(r) = m.far_kernel(p, m.sample_far).transpose();
+    far_fixed.row(r) = m.far_kernel(p).transpose();
+    heat[r] = m.heat_field(p);
+    for (std::size_t f = 0; f < nf; ++f) face(r, Eigen::Index(f)) = m.face_field(m.faces[f], p);
+  });
+  // The fixed sources: the sheets' derivative and the film's answer to their field, and the
+  // part's temperature driving the film.
+  const VectorXd heat_f = heat + far_fixed * m.heat_moments;
+  m.heat_tau = v.solve(v.heat_derivatives() + H.cwiseProduct(v.part_temperatures() - heat_f));
+  m.heat_layer_moments = v.moments() * m.heat_tau;
+  // The free constant: a unit field everywhere, so the film takes -H from it.
+  m.t0_tau = v.solve(-H);
+  m.t0_moments = v.moments() * m.t0_tau;
+  m.t0_samples = m.void_potentials * m.t0_tau + m.far_samples * m.t0_moments;
+  m.t0_face_means = m.void_face_potentials * m.t0_tau + m.far_face_means * m.t0_moments;
+  // The face losses.
+  m.face_tau = v.solve(d - H.asDiagonal() * (face + far_fixed * m.face_moments));
+  m.face_layer_moments = v.moments() * m.face_tau;
+  m.face_samples += m.void_potentials * m.face_tau + m.far_samples * m.face_layer_moments;
+  m.face_void = m.void_face_potentials * m.face_tau + m.far_face_means * m.face_layer_moments;
+}
 
 LineSinkModel::LineSinkModel(const LineSinkModel& like, const Samples& samples)
     : LineSinkModel(like.impl_->setting, samples, like.impl_->options) {}
@@ -200,8 +236,17 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
   }
   if (m.heat_sources.size() > Impl::kTreeAbove) m.heat_tree.emplace(setting.heat_in, kHeatTreeTheta);
   // The part's void (void_surface.h).
-  if (options.void_panel > 0 && (setting.cavity_mesh || setting.cavity_box) && !setting.heat_in.empty())
-    m.void_surface = kept_void(setting, sample_images, sample_levels, options.void_panel);
+  m.sample_far = sample_far;
+  if (options.void_panel > 0 && (setting.cavity_mesh || setting.cavity_box) && !setting.heat_in.empty()) {
+    const FarLattice far{[&m](const Vec3& p) { return m.far_kernel(p, m.sample_far); }, m.center};
+    m.void_surface = kept_void(setting, sample_images, sample_levels, options.void_panel, options.far_images, far);
+    m.robin = m.void_surface->robin();
+  }
+  for (const HeatedTriangle& t : setting.heat_in)
+    if (t.film > 0 && !m.robin)
+      throw std::invalid_argument(
+          "line sinks: the part's coupling (a film on the cavity) needs the part's void as a surface "
+          "(thermal.cavity_void: surface, a mesh cavity); use thermal.tier: fd or cavity_condition: flux");
 
   // Convective faces: one unknown uniform loss each, collocated on a grid of the face's part
   // that is not heated.
@@ -403,8 +448,13 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
         d(Eigen::Index(i), Eigen::Index(f)) = (m.face_field(m.faces[f], v.points()[i] + m.void_step * v.normals()[i]) -
                                                m.face_field(m.faces[f], v.points()[i] - m.void_step * v.normals()[i])) /
                                               (2 * m.void_step);
-    m.face_samples += m.void_potentials * v.solve(d);
-    m.face_void = m.void_faces * d;
+    if (m.robin) {
+      m.build_robin_fields(face_points, d);
+    } else {
+      m.face_samples += m.void_potentials * v.solve(d);
+      m.face_void = m.void_faces * d;
+      m.heat_tau = v.heat_layer();
+    }
   }
   m.heat_face_means.resize(nf);
   m.face_face_means.resize(nf, nf);
@@ -419,7 +469,11 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
       m.face_face_means(f, f2) = s / double(plain.size());
     }
   }
-  if (m.void_surface) {  // the void's correction of the face losses and of the heat input
+  if (m.void_surface && m.robin) {  // the layers' fields (robin_fixed_fields)
+    m.face_face_means += m.face_void;
+    m.heat_samples += m.void_potentials * m.heat_tau + m.far_samples * m.heat_layer_moments;
+    m.heat_face_means += m.void_face_potentials * m.heat_tau + m.far_face_means * m.heat_layer_moments;
+  } else if (m.void_surface) {  // the void's correction of the face losses and of the heat input
     m.face_face_means += m.face_void;
     m.heat_samples += m.void_potentials * m.void_surface->heat_layer();
     m.heat_face_means += m.void_faces * m.void_surface->heat_derivatives();

@@ -238,6 +238,7 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
       auto to = A.block(offset[c], offset[d], b.cols, blocks[d]->cols);
       to = b.far_rows.lazyProduct(blocks[d]->moments);  // coefficient-wise: 4 terms, no GEMM set-up
       to += d == c ? b.self : pairs[c * nc + d]->block;
+      if (m.robin) to += b.far_rows_layer.lazyProduct(blocks[d]->layer_moments);
     }
     if (nf) {
       auto to = A.block(offset[c], n_ch, b.cols, nf);
@@ -248,14 +249,17 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
     for (int r = 0; r < b.cols; ++r) {
       const int row = offset[c] + r;
       const bool mean_row = r % m.kinds == 0;
+      // The free constant's field at the row: 1, and with a film its layer's.
+      const double constant = (mean_row ? 1.0 : 0.0) + (m.robin ? b.t0_rows[r] : 0.0);
       A.row(row).head(n_ch + nf) *= mean_row ? w1 : -beta;  // the weight of the field in this row
       if (mean_row) {
         A(row, row) -= w2;  // the film's drop: q' / (2 pi R h)
-        if (free_constant) A(row, t0) = w1;
-        rhs[row] = w1 * (ch.coolant - heat_rows[r] - fixed);
+        if (free_constant) A(row, t0) = w1 * constant;
+        rhs[row] = w1 * (ch.coolant - heat_rows[r] - fixed * constant);
       } else {
         A(row, row) += b.self_dipole[r];
-        rhs[row] = beta * heat_rows[r];
+        if (free_constant && m.robin) A(row, t0) = -beta * constant;
+        rhs[row] = beta * (heat_rows[r] + fixed * constant);
       }
     }
   }
@@ -264,14 +268,23 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
     const int row = n_ch + f;
     // loss / (h A_conv) - face mean temperature = - ambient
     const Eigen::RowVector4d far_ch = m.far_face_means.row(f), far = m.far_face_means_fixed.row(f);
-    for (std::size_t c = 0; c < nc; ++c)
+    for (std::size_t c = 0; c < nc; ++c) {
       A.block(row, offset[c], 1, blocks[c]->cols) = -(blocks[c]->face_means.row(f) + far_ch * blocks[c]->moments);
+      if (m.robin) A.block(row, offset[c], 1, blocks[c]->cols) -= far_ch * blocks[c]->layer_moments;
+    }
     for (int f2 = 0; f2 < nf; ++f2) A(row, n_ch + f2) = -(m.face_face_means(f, f2) + far.dot(m.face_moments.col(f2)));
     A(row, row) += cf.area / (cf.film * cf.convective_area);
-    if (free_constant) A(row, t0) = -1;
-    rhs[row] = m.heat_face_means[f] + far.dot(m.heat_moments) + fixed - cf.ambient;
+    const double t0_mean = 1 + (m.robin ? m.t0_face_means[f] : 0.0);
+    if (free_constant) A(row, t0) = -t0_mean;
+    rhs[row] = m.heat_face_means[f] + far.dot(m.heat_moments) + fixed * t0_mean - cf.ambient;
   }
-  if (free_constant) {  // the energy balance fixes the constant
+  if (free_constant && m.robin) {  // the energy balance: every charge sums to 0, the layers' too
+    for (std::size_t c = 0; c < nc; ++c)
+      A.block(t0, offset[c], 1, blocks[c]->cols) = -(blocks[c]->moments.row(0) + blocks[c]->layer_moments.row(0));
+    for (int f = 0; f < nf; ++f) A(t0, n_ch + f) = -(m.face_moments(0, f) + m.face_layer_moments(0, f));
+    A(t0, t0) = -m.t0_moments[0];
+    rhs[t0] = m.heat_in + m.heat_layer_moments[0];
+  } else if (free_constant) {  // the energy balance fixes the constant
     for (std::size_t c = 0; c < nc; ++c) {
       const auto& b = *blocks[c];
       for (int e = 0; e < b.axis.elements; ++e) A(t0, offset[c] + e * m.kinds) = b.axis.element_length;
@@ -306,12 +319,23 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
   out.temperature.resize(m.n_samples);
   Eigen::Map<VectorXd> T(out.temperature.data(), Eigen::Index(m.n_samples));
   T = m.heat_samples + VectorXd::Constant(m.n_samples, T0);
+  if (m.robin) T += T0 * m.t0_samples;
   if (nf) T += m.face_samples * x.segment(n_ch, nf);
-  // The far lattice: the moments of everything in the block.
+  // The far lattice: the moments of everything in the block (the layers' with the channels'
+  // lattice; the fixed and face layers' are in heat_samples and face_samples already).
   Eigen::Vector4d fixed_moments = m.heat_moments, channel_moments = Eigen::Vector4d::Zero();
   for (int f = 0; f < nf; ++f) fixed_moments += x[n_ch + f] * m.face_moments.col(f);
-  for (std::size_t c = 0; c < nc; ++c) channel_moments += blocks[c]->moments * x.segment(offset[c], blocks[c]->cols);
+  for (std::size_t c = 0; c < nc; ++c) {
+    channel_moments += blocks[c]->moments * x.segment(offset[c], blocks[c]->cols);
+    if (m.robin) channel_moments += blocks[c]->layer_moments * x.segment(offset[c], blocks[c]->cols);
+  }
   T += m.far_samples_fixed * fixed_moments + m.far_samples * channel_moments;
+  if (m.robin) {  // the heat the part gives: the layers' charges
+    out.heat_in += m.heat_layer_moments[0] + T0 * m.t0_moments[0];
+    for (int f = 0; f < nf; ++f) out.heat_in += x[n_ch + f] * m.face_layer_moments(0, f);
+    for (std::size_t c = 0; c < nc; ++c)
+      out.heat_in += blocks[c]->layer_moments.row(0).dot(x.segment(offset[c], blocks[c]->cols));
+  }
   const std::size_t ns = m.n_samples;
   out.channel_heat.reserve(nc);
   for (std::size_t c = 0; c < nc; ++c) {

@@ -110,7 +110,7 @@ std::vector<std::vector<Vec3>> cut_at_planes(const HeatedTriangle& t, const std:
 }  // namespace
 
 VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const Image> images, double panel,
-                         double conductivity)
+                         double conductivity, const FarLattice& far)
     : images_(images.begin(), images.end()), conductivity_(conductivity) {
   if (!(panel > 0)) throw std::invalid_argument("cavity void: the panel size must be > 0");
   // At most kMaxPanels panels: the dense solve costs panels^3 once and panels^2 per new bore.
@@ -146,7 +146,7 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
       const Vec3 centroid = (a + b + c) / 3;
       Cut& cut = cells[{cell(centroid, 0), cell(centroid, 1), cell(centroid, 2), direction}];
       const TriangleSource source(a, b, c);
-      cut.subs.push_back({source, centroid, source.area(), t.flux});
+      cut.subs.push_back({source, centroid, source.area(), t.flux, t.film, t.part_temperature});
       cut.normal_sum += source.area() * steel;
     };
     for (const std::vector<Vec3>& piece : cut_at_planes(t, planes))
@@ -164,10 +164,16 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
       }
   }
   if (cells.empty()) throw std::invalid_argument("cavity void: the wall has no area");
+  std::vector<double> film, part;
   for (auto& [key, cut] : cells) {
-    double area = 0, heat = 0;
+    double area = 0, heat = 0, conductance = 0, drive = 0;
     Vec3 weighted = Vec3::Zero();
-    for (const Sub& s : cut.subs) area += s.area, heat += s.area * s.flux, weighted += s.area * s.centroid;
+    for (const Sub& s : cut.subs) {
+      area += s.area, heat += s.area * s.flux, weighted += s.area * s.centroid;
+      conductance += s.area * s.film, drive += s.area * s.film * s.part;
+    }
+    film.push_back(conductance / area);
+    part.push_back(conductance > 0 ? drive / conductance : 0.0);
     const Vec3 centroid = weighted / area;
     // Collocated at the sub-triangle nearest the centroid: a point on the wall, its normal.
     const Sub* best = &cut.subs.front();
@@ -230,6 +236,19 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
   Eigen::VectorXd q(N);
   for (std::size_t j = 0; j < n; ++j) q[Eigen::Index(j)] = flux_[j] / conductivity;
   heat_d_ = q - A * q;
+  film_over_k_ = Eigen::Map<const Eigen::VectorXd>(film.data(), N) / conductivity;
+  part_ = Eigen::Map<const Eigen::VectorXd>(part.data(), N);
+  robin_ = film_over_k_.maxCoeff() > 0;
+  if (robin_) {
+    if (!far.kernel) throw std::invalid_argument("cavity void: a wall with a film needs the far lattice");
+    moments_.resize(4, N);
+    Eigen::MatrixXd F(N, 4);
+    for (std::size_t j = 0; j < n; ++j) {
+      moments_.col(Eigen::Index(j)) << conductivity * area_[j], conductivity * area_[j] * (centroid_[j] - far.center);
+      F.row(Eigen::Index(j)) = far.kernel(point_[j]).transpose();
+    }
+    A += film_over_k_.asDiagonal() * (potentials(point_) + F * moments_);
+  }
   lu_.compute(A);
   heat_tau_ = lu_.solve(heat_d_);
   inverse_transposed_ = lu_.inverse().transpose().cast<float>();

@@ -23,6 +23,7 @@
 // Private to src/thermal.
 
 #include <Eigen/Dense>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -31,13 +32,36 @@
 
 namespace mtcs::thermal {
 
+// The far lattice of the images not summed exactly: a charge and first moment about `center`
+// (4 numbers) times kernel(p) is their field at p (LineSinkModel::Impl::far_kernel).
+struct FarLattice {
+  std::function<Eigen::Vector4d(const Vec3&)> kernel;
+  Vec3 center = Vec3::Zero();
+};
+
 class VoidSurface {
  public:
   // wall: the cavity's triangles as in Setting::heat_in (counter-clockwise from the void),
-  // with their fluxes; images: the reflections summed exactly. Throws std::invalid_argument
-  // on a panel size <= 0 or a wall without area.
+  // with their fluxes and films; images: the reflections summed exactly. Throws
+  // std::invalid_argument on a panel size <= 0 or a wall without area.
+  //
+  // A wall with a film (the part's coupling, HeatedTriangle::film) takes heat h (T_p - T) on
+  // top of its flux: a layer whose temperature at the panels is T_L = P tau + F L tau (P the
+  // panels' potentials at their points, L tau its charge and first moment, F their far
+  // lattice at the points) answers d - H f with (A + H P + H F L) tau = d - H f, H = film / k
+  // per panel, f the field's temperature at the points (docs/thermal-model.md, "The coupled
+  // cavity in the line sinks"). `far` gives F; without a film it is not used.
   VoidSurface(std::span<const HeatedTriangle> wall, std::span<const Image> images, double panel,
-              double conductivity);
+              double conductivity, const FarLattice& far = {});
+
+  // Whether a film acts on the wall: then solve and layer answer the Robin condition.
+  bool robin() const { return robin_; }
+  // Per panel: film / k (1/mm), the part's temperature (degrees C, where the film acts).
+  const Eigen::VectorXd& film_over_k() const { return film_over_k_; }
+  const Eigen::VectorXd& part_temperatures() const { return part_; }
+  // 4 x panels: a layer's charge (W, heat into the steel) and its first moment about the far
+  // lattice's centre, per unit tau.
+  const Eigen::MatrixXd& moments() const { return moments_; }
 
   std::size_t panels() const { return point_.size(); }
   // The panels' width: `panel`, or wider on a wall too large for 3000 panels of that width.
@@ -48,7 +72,8 @@ class VoidSurface {
 
   // The heat input's own correction, a source like any other: its sheets (q / k per panel)
   // seen from the void's side, (1/2 + K') q / k, stand for its normal derivative D (the heat
-  // the model without the void sends into it, sent back into the steel); and its layer.
+  // the model without the void sends into it, sent back into the steel); and its layer, on a
+  // wall with a film without the film's answer to the sheets' field (the caller adds it).
   const Eigen::VectorXd& heat_derivatives() const { return heat_d_; }
   const Eigen::VectorXd& heat_layer() const { return heat_tau_; }
 
@@ -75,7 +100,7 @@ class VoidSurface {
   struct Sub {
     TriangleSource source;
     Vec3 centroid;
-    double area, flux;
+    double area, flux, film, part;
   };
   // The gradient's component along `normal` of panel j's unit layer at p, images summed, free
   // of 1/(4 pi) (the potential: potential_row).
@@ -106,7 +131,10 @@ class VoidSurface {
     Vec3 origin = Vec3::Zero();
     std::vector<float> cx, cy, cz, area, far2, xx, yy, zz, xy, xz, yz, trace;
   } far_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;   // of A = 1/2 - K' (its transpose solves by it too)
+  bool robin_ = false;
+  Eigen::VectorXd film_over_k_, part_;
+  Eigen::MatrixXd moments_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;   // of A = 1/2 - K' (with a film, A + H P + H F L)
   Eigen::MatrixXf inverse_transposed_;         // A^-T: A^-1 by rows (skinny_product.h)
   Eigen::VectorXd heat_d_, heat_tau_;          // the heat input's own correction
 };

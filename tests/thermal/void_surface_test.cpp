@@ -5,10 +5,12 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <vector>
 
 #include "thermal/line_sink_fields.h"
 #include "thermal/void_surface.h"
+#include "thermal/cup_void.h"
 #include "mtcs/thermal/finite_volume.h"
 #include "mtcs/thermal/line_sinks.h"
 #include "mtcs/mesh/triangle_mesh.h"
@@ -16,6 +18,8 @@
 #include <random>
 
 using namespace mtcs::thermal;
+using mtcs_test::cup_bores;
+using mtcs_test::cup_void_setting;
 
 namespace {
 
@@ -81,6 +85,35 @@ TEST_CASE("void surface: an insulated sphere in a uniform gradient, and a unifor
   // A uniform flux on a sphere leaves through the steel as it does from a sheet in solid steel
   // (the field outside is the same): no correction, to the panels' error.
   CHECK(k * v.heat_layer().cwiseAbs().maxCoeff() <= 0.05 * 0.035);
+}
+
+TEST_CASE("void surface: a sphere's void with the part's film takes the heat of a film in series with the steel") {
+  // A spherical cavity of radius a whose wall takes h (T_p - T) in an unbounded body at T_inf:
+  // T = T_inf + (T_s - T_inf) a / r outside, and h (T_p - T_s) = k (T_s - T_inf) / a.
+  const Vec3 c(10, -5, 3);
+  const double a = 20, k = 0.03, T_inf = 40, T_p = 230;
+  const std::vector<Image> unbounded{Image{}};
+  for (const double film : {1.2e-4, 2e-3}) {  // Biot h a / k 0.08 and 1.3
+    std::vector<HeatedTriangle> wall = sphere_wall(c, a, 3, 0);
+    for (HeatedTriangle& t : wall) t.film = film, t.part_temperature = T_p;
+    const FarLattice none{[](const Vec3&) { return Eigen::Vector4d::Zero().eval(); }, c};
+    const VoidSurface v(wall, unbounded, 6, k, none);
+    REQUIRE(v.robin());
+    // The field T_inf everywhere: the layer answers H (T_p - T_inf).
+    const Eigen::VectorXd tau = v.solve(v.film_over_k() * (T_p - T_inf));
+    const double T_s = (film * T_p + k / a * T_inf) / (film + k / a);
+    std::vector<Vec3> targets;
+    for (const double r : {a, 1.5 * a, 3 * a})
+      for (const Vec3& u : {Vec3(0, 0, 1), Vec3(0.6, 0, 0.8), Vec3(0, -0.8, -0.6)}) targets.push_back(c + r * u);
+    const Eigen::VectorXd T = v.potentials(targets) * tau;
+    for (std::size_t i = 0; i < targets.size(); ++i) {
+      const double r = (targets[i] - c).norm(), exact = (T_s - T_inf) * a / r;
+      INFO("film " << film * 1e6 << " W/(m^2 K), r = " << r << ": " << T[Eigen::Index(i)] << " K above T_inf against " << exact);
+      CHECK(std::abs(T[Eigen::Index(i)] - exact) <= 0.02 * exact);
+    }
+    // The heat the layer carries is the film's: 4 pi a^2 h (T_p - T_s).
+    CHECK((v.moments().row(0) * tau)(0) == Approx(4 * std::numbers::pi * a * a * film * (T_p - T_s)).epsilon(0.02));
+  }
 }
 
 namespace {
@@ -172,42 +205,6 @@ TEST_CASE("void surface: a bore through the part keeps no reflection and stays f
     CHECK(summarize(r.temperature, samples).mean > 40);
   }
 }
-
-namespace {
-
-// A cup-shaped void (walls `w` thick, open at the top) in a 90 x 70 x 60 mm block: the steel
-// core inside it meets the rest of the block only above the rim. Heated on every face.
-Setting cup_void_setting(double w) {
-  const double x0 = 20, x1 = 70, y0 = 15, y1 = 55, z0 = 10, z1 = 40;
-  auto mesh = std::make_shared<mtcs::mesh::TriangleMesh>();
-  for (const double z : {z0, z1}) mesh->vertices.insert(mesh->vertices.end(), {Vec3(x0, y0, z), Vec3(x1, y0, z), Vec3(x1, y1, z), Vec3(x0, y1, z)});
-  for (const double z : {z0 + w, z1})
-    mesh->vertices.insert(mesh->vertices.end(), {Vec3(x0 + w, y0 + w, z), Vec3(x1 - w, y0 + w, z), Vec3(x1 - w, y1 - w, z), Vec3(x0 + w, y1 - w, z)});
-  // Outward from the part: the outer bottom and sides, the inner bottom and sides (facing the
-  // core), the rim.
-  mesh->triangles = {{0, 2, 1},   {0, 3, 2},   {0, 1, 5},   {0, 5, 4},   {1, 2, 6},   {1, 6, 5},   {2, 3, 7},
-                     {2, 7, 6},   {3, 0, 4},   {3, 4, 7},   {8, 9, 10},  {8, 10, 11}, {8, 13, 9},  {8, 12, 13},
-                     {9, 14, 10}, {9, 13, 14}, {10, 15, 11}, {10, 14, 15}, {11, 12, 8}, {11, 15, 12}, {4, 5, 13},
-                     {4, 13, 12}, {5, 6, 14}, {5, 14, 13}, {6, 7, 15}, {6, 15, 14}, {7, 4, 12}, {7, 12, 15}};
-  Setting s;
-  s.block = {Vec3(0, 0, 0), Vec3(90, 70, 60)};
-  s.conductivity = 0.03;
-  for (auto& f : s.faces) f = {1e-5, 25};
-  for (std::size_t t = 0; t < mesh->triangles.size(); ++t)  // seen from the void: reversed
-    s.heat_in.push_back({mesh->corner(t, 0), mesh->corner(t, 2), mesh->corner(t, 1), 0.03});
-  s.cavity_mesh = mesh;
-  return s;
-}
-
-// Two bores under cup_void_setting's floor, two beside its walls at mid-height.
-std::vector<Channel> cup_bores() {
-  return {{mtcs::geometry::Segment{Vec3(0, 28, 4), Vec3(90, 28, 4)}, 3, 40},
-          {mtcs::geometry::Segment{Vec3(0, 42, 4), Vec3(90, 42, 4)}, 3, 40},
-          {mtcs::geometry::Segment{Vec3(0, 8, 25), Vec3(90, 8, 25)}, 3, 40},
-          {mtcs::geometry::Segment{Vec3(0, 62, 25), Vec3(90, 62, 25)}, 3, 40}};
-}
-
-}  // namespace
 
 TEST_CASE("void surface: a cup's core keeps the heat its thin walls hold in, as the finite volumes find") {
   // The core's heat must go up past the rim to the bores outside. Where the wall's panels meet

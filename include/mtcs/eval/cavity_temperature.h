@@ -28,8 +28,19 @@ struct HeatBalance {
   double residual() const { return in - to_channels - to_faces; }
 };
 
+// The cavity condition a solve used (thermal.cavity_condition), in the spec's SI units.
+struct CavityConditionUsed {
+  std::string model;              // coupled or flux
+  double heat_flux = 0;           // W/m^2 (flux)
+  double part_film = 0;           // W/(m^2 K) (coupled)
+  double part_temperature = 0;    // degrees C (coupled)
+  double in_mold = 0, cycle = 0;  // s, the nominal cycle the film is derived for (coupled)
+};
+CavityConditionUsed cavity_condition_used(const mold::MoldSpec& spec);
+
 struct CavityTemperature {
   std::string tier;                  // t1, t2, t2d, fd
+  CavityConditionUsed condition;
   std::string surface;               // thermal.objective_surface: heated or all
   thermal::Summary summary;          // area-weighted over the cavity samples (of that surface)
   geometry::Vec3 hottest;            // where the maximum is

@@ -22,7 +22,8 @@ using TemperatureSolverFactory =
 
 struct TemperatureObjectives {
   double mean = 0, std = 0, max = 0;  // degrees C, K, degrees C; area-weighted over the samples
-  double cycle_time = 0;              // s: cooling_time at the hottest sample
+  double cycle_time = 0;              // s: cooling_time at the hottest sample (coupled: plus
+                                      // fill, pack and open, the whole cycle)
 };
 
 TemperatureObjectives temperature_objectives(const std::vector<double>& temperature, const thermal::Samples& samples,

@@ -17,7 +17,8 @@ namespace mtcs::eval {
 double cavity_heat_flux(const mold::MoldSpec& spec);
 
 // The block (a mesh block by its bounding box), the faces' films (adiabatic ones 0), the heat
-// input and the cavity void. The heat input: a box cavity's six faces (a void: heat enters from
+// input (thermal.cavity_condition: a fixed flux, or the part's coupling, eval/part_coupling.h;
+// a region's flux wins inside it) and the cavity void. The heat input: a box cavity's six faces (a void: heat enters from
 // inside it), a patch's rectangle (from outside the block), each split where thermal.regions
 // begin and end so every piece has one flux; a mesh cavity's triangles, each with the flux of
 // the region holding its centroid. Triangles face the melt. Needs a cavity (else
@@ -29,14 +30,18 @@ thermal::Setting thermal_setting(const mold::Scene& scene);
 // of the spec's flow rate through that bore's diameter (Gnielinski).
 std::vector<thermal::Channel> thermal_channels(const mold::Layout& layout, const mold::MoldSpec& spec);
 
-// The heat flux (W/mm^2) into the steel at a point of the cavity surface: thermal.heat_flux (or
-// the default), or that of the last region holding the point.
+// The fixed heat flux (W/mm^2) into the steel at a point of the cavity surface: that of the
+// last region holding the point, else thermal.heat_flux (or the default) under the flux model,
+// 0 under the coupled one (its heat follows the wall's temperature).
 double cavity_flux_at(const mold::MoldSpec& spec, const geometry::Vec3& p);
+// Whether heat enters there: a region's flux > 0, or outside the regions the coupled condition
+// or a flux > 0.
+bool cavity_heated_at(const mold::MoldSpec& spec, const geometry::Vec3& p);
 
 // The cavity-surface samples with their areas over which the temperature objectives are taken,
 // at thermal.sample_spacing (default: the cavity's): those of the tier-0 objectives (every
 // sample) when thermal.objective_surface is `all`; with `heated` (the default) only those where
-// heat enters (cavity_flux_at > 0), or every one when no sample is heated.
+// heat enters (cavity_heated_at), or every one when no sample is heated.
 thermal::Samples thermal_samples(const mold::Scene& scene);
 
 }  // namespace mtcs::eval

@@ -165,6 +165,21 @@ struct Polymer {
   double specific_heat = 2000;      // J/(kg K)
 };
 
+// How the part heats the steel through the cavity (docs/mold-spec.md, thermal.cavity_condition):
+// Coupled, the part's cycle-averaged response to the wall, q = h_p (T_p - T_wall), so that no
+// steel runs hotter than T_p (eval/part_coupling.h); Flux, the older model: a fixed flux
+// (thermal.heat_flux or eval::default_heat_flux), whatever the wall's temperature.
+enum class CavityCondition { Flux, Coupled };
+std::string to_string(CavityCondition c);
+
+// The molding cycle (s): fill, pack and cooling in the mold, then open (the part ejected, the
+// cavity takes no heat). cooling: none, the cooling time with the wall at the coolant's
+// temperature (eval::nominal_cycle).
+struct MoldingCycle {
+  double fill = 1, pack = 3, open = 5;
+  std::optional<double> cooling;
+};
+
 struct ThermalSpec {
   double conductivity = 0.03;              // W/(mm K) (30 W/(m K): tool steel)
   double coolant_temperature = 40;         // degrees C
@@ -178,6 +193,10 @@ struct ThermalSpec {
   std::optional<double> heat_flux;         // W/mm^2 into the steel; none: eval::default_heat_flux
   std::vector<HeatRegion> regions;
   Polymer polymer;
+  CavityCondition cavity_condition = CavityCondition::Flux;
+  std::optional<double> part_film;         // W/(mm^2 K): h_p for the whole cavity (coupled)
+  std::optional<double> part_temperature;  // degrees C: T_p (coupled; default the melt's)
+  MoldingCycle cycle;
   ThermalTier tier = ThermalTier::T2d;
   int elements_per_bore = 4;               // M of T2/T2d
   // Reflection levels of the block's faces summed exactly at the bores' walls by T1/T2/T2d (the

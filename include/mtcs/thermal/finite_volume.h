@@ -16,6 +16,9 @@
 // - heat_in triangles that do not lie on a block face (the walls of a cavity void) heat the
 //   steel cells they cross by the exact area inside each; a part inside a cavity cell goes to
 //   the nearest steel cell. The void itself is a staircase of cells: first order there.
+// - A triangle's film (the part's coupling) links the same cells to its part temperature: the
+//   area in the cell over 1 / film + d / k, d the distance from the cell's centre to the wall
+//   (half a cell on a block face). Still symmetric positive definite.
 // - Symmetric positive definite system; Eigen's conjugate gradient with an incomplete Cholesky
 //   preconditioner. Deterministic.
 
@@ -83,7 +86,7 @@ class FvField {
 
 struct FvResult {
   std::vector<double> temperature;      // at the samples
-  double heat_in = 0;                   // W, from heat_in (the part inside the block)
+  double heat_in = 0;                   // W, from heat_in (the part inside the block; films included)
   double heat_to_channels = 0;          // W, through the bore walls
   double heat_to_faces = 0;             // W, convected from the outer faces
   std::vector<double> heat_to_channel;  // W, per channel

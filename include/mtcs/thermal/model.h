@@ -30,10 +30,16 @@ struct FaceCondition {
   double ambient = 25;  // degrees C
 };
 
-// Heat entering the steel through a planar triangle of the cavity surface (cycle-averaged).
+// Heat entering the steel through a planar triangle of the cavity surface (cycle-averaged):
+// flux + film (part_temperature - T_wall), a fixed flux and the part's response to the wall
+// (eval/part_coupling.h). With film > 0 no steel can run hotter than the hottest
+// part_temperature (the maximum principle), whatever the layout.
 struct HeatedTriangle {
-  Vec3 a, b, c;     // counter-clockwise seen from the heat's side (the melt)
-  double flux = 0;  // W/mm^2 into the steel
+  Vec3 a, b, c;                 // counter-clockwise seen from the heat's side (the melt)
+  double flux = 0;              // W/mm^2 into the steel
+  double film = 0;              // W/(mm^2 K)
+  double part_temperature = 0;  // degrees C
+  bool heats() const { return flux != 0 || film > 0; }
 };
 
 // The flowed part of a bore: a wall at the coolant temperature (film infinite: the Dirichlet

@@ -1,0 +1,76 @@
+#include "mtcs/eval/part_coupling.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "mtcs/eval/cycle_time.h"
+
+namespace mtcs::eval {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+// Terms of the series: at Fo = 1e-4 the last kept term is below 1e-12 of the first.
+constexpr int kTerms = 400;
+}  // namespace
+
+double slab_mean_fraction(double fourier) {
+  if (!(fourier > 0)) return 1;
+  double sum = 0;
+  for (int k = 0; k < kTerms; ++k) {
+    const double n = 2 * k + 1;
+    sum += 8 / (n * n * kPi * kPi) * std::exp(-n * n * kPi * kPi * fourier);
+  }
+  return sum;
+}
+
+double slab_odd_buildup(double fourier) {
+  if (!(fourier > 0)) return 0;
+  double sum = 0;
+  for (int m = 1; m <= kTerms; ++m) sum += -std::expm1(-4.0 * m * m * kPi * kPi * fourier) / (double(m) * m);
+  // The tail, m > kTerms, as the integral from kTerms + 1/2 of (1 - exp(-a x^2)) / x^2:
+  // (1 - exp(-a X^2)) / X + sqrt(pi a) erfc(sqrt(a) X).
+  const double a = 4 * kPi * kPi * fourier, X = kTerms + 0.5;
+  sum += -std::expm1(-a * X * X) / X + std::sqrt(kPi * a) * std::erfc(std::sqrt(a) * X);
+  return 6 / (kPi * kPi) * sum;
+}
+
+PartCoupling part_coupling(const mold::Polymer& polymer, double thickness, double in_mold, double cycle) {
+  if (!(thickness > 0) || !(in_mold > 0) || !(in_mold <= cycle))
+    throw std::invalid_argument("part coupling: needs a wall thickness > 0 and 0 < time in the mold <= cycle");
+  const double s = thickness;
+  const double rho_cp = polymer.density * polymer.specific_heat * 1e-9;  // J/(mm^3 K)
+  const double k_p = polymer.diffusivity * rho_cp;                       // W/(mm K)
+  const double fourier = polymer.diffusivity * in_mold / (s * s);
+  PartCoupling c;
+  c.temperature = polymer.melt_temperature;
+  c.film = rho_cp * s * (1 - slab_mean_fraction(fourier)) / (2 * cycle);
+  // The odd part's heat into the colder wall, less the half of h_p's that the even part, taken
+  // at the walls' mean, gives to the other wall: 0 for short contacts (each wall then sees a
+  // half-space of melt), floored there against the series' rounding.
+  c.cross_film = std::max(0.0, (k_p * in_mold / s + rho_cp * s * slab_odd_buildup(fourier) / 12) / cycle - c.film / 2);
+  return c;
+}
+
+CycleTimes nominal_cycle(const mold::MoldSpec& spec) {
+  const mold::ThermalSpec& t = spec.thermal;
+  const double s = spec.cavity ? spec.cavity->wall_thickness : mold::Cavity{}.wall_thickness;
+  CycleTimes c;
+  c.cooling = t.cycle.cooling ? *t.cycle.cooling : cooling_time(s, t.polymer, t.coolant_temperature);
+  c.in_mold = t.cycle.fill + t.cycle.pack + c.cooling;
+  c.cycle = c.in_mold + t.cycle.open;
+  return c;
+}
+
+PartCoupling cavity_coupling(const mold::MoldSpec& spec) {
+  const mold::ThermalSpec& t = spec.thermal;
+  const double s = spec.cavity ? spec.cavity->wall_thickness : mold::Cavity{}.wall_thickness;
+  const CycleTimes times = nominal_cycle(spec);
+  PartCoupling c = part_coupling(t.polymer, s, times.in_mold, times.cycle);
+  if (t.part_film) c.film = *t.part_film;
+  if (t.part_temperature) c.temperature = *t.part_temperature;
+  return c;
+}
+
+}  // namespace mtcs::eval
