@@ -125,3 +125,31 @@ TEST_CASE("mtcs optimize with temperature objectives: the same run on 1 and 2 th
   CHECK(summary[0] == summary[1]);
   CHECK(run_mtcs("replay " + scratch("thermal", "run2").string() + " --verify --no-plots --quiet >/dev/null") == 0);
 }
+
+TEST_CASE("mtcs thermal --problem: the conduction problem for another solver, as the model holds it", "[cli][thermal]") {
+  const fs::path problem = scratch("thermal", "problem.json"), summary = scratch("thermal", "problem_summary.json");
+  REQUIRE(run_mtcs("thermal " + kMold + " --layout " + kLayout + " --problem " + problem.string() + " --json >" +
+                   summary.string()) == 0);
+  const auto j = nlohmann::json::parse(read_text(problem));
+  // The reference block (shared/cases/thermal/README.md): 120 x 80 x 60 mm, k 30 W/(m K), three
+  // Dirichlet bores of 10, 8 and 10 mm (molds/thermal_block.layout.yaml), a patch taking 144 W,
+  // 720 samples on it.
+  CHECK(j["block"]["max"][0] == 120.0);
+  CHECK(j["conductivity"].get<double>() == Approx(30));
+  REQUIRE(j["channels"].size() == 3);
+  const double radii[] = {5, 4, 5};
+  for (std::size_t i = 0; i < 3; ++i) {
+    CHECK(j["channels"][i]["radius"] == radii[i]);
+    CHECK(j["channels"][i]["film"].is_null());  // Dirichlet
+  }
+  double heat = 0;
+  for (const auto& t : j["cavity"]) {
+    const auto& c = t["corners"];
+    const double ux = c[1][0].get<double>() - c[0][0].get<double>(), uy = c[1][1].get<double>() - c[0][1].get<double>(),
+                 vx = c[2][0].get<double>() - c[0][0].get<double>(), vy = c[2][1].get<double>() - c[0][1].get<double>();
+    heat += 0.5 * std::abs(ux * vy - uy * vx) * 1e-6 * t["flux"].get<double>();
+  }
+  CHECK(heat == Approx(nlohmann::json::parse(read_text(summary))["heat_in"].get<double>()).epsilon(1e-9));
+  CHECK(j["samples"].size() == 720);
+  CHECK(nlohmann::json::parse(read_text(summary))["cavity_condition"]["model"] == "flux");
+}

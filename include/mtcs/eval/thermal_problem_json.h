@@ -1,0 +1,17 @@
+#pragma once
+// The conduction problem of one layout as plain JSON, for a solver outside mtcs (FreeFem++, a
+// commercial tool) to solve the same physics: the block, its faces' films, the cavity's
+// triangles with their condition, the bores' flowed parts with their films, the samples.
+// Units in the file: mm, degrees C, W/(m K), W/(m^2 K), W/m^2 (the spec's SI, lengths in mm);
+// "film": null is the Dirichlet limit (an infinite film). Written by `mtcs thermal --problem`;
+// read by experiments/thermal/freefem_coupled.
+
+#include <ostream>
+
+#include "mtcs/thermal/model.h"
+
+namespace mtcs::eval {
+
+void write_thermal_problem_json(std::ostream& out, const thermal::Model& model, const thermal::Samples& samples);
+
+}  // namespace mtcs::eval
