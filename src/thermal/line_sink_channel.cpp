@@ -156,11 +156,13 @@ Eigen::MatrixXf LineSinkModel::Impl::void_robin_rhs(const ChannelAxis& source, c
   const MatrixXd far = far_panels * moments;  // panels x cols
   Eigen::MatrixXf rhs(Eigen::Index(n), cols);
   const double scale = 1 / (2 * void_step);
+  const bool patch = void_surface->on_block_face();  // d = 0: the face's image keeps the flux
   for (int c = 0; c < cols; ++c)
     for (std::size_t i = 0; i < n; ++i) {
       const double plus = acc[std::size_t(c) * T + 2 * i], minus = acc[std::size_t(c) * T + 2 * i + 1];
       const auto r = Eigen::Index(i);
-      rhs(r, c) = float(scale * (plus - minus) - H[r] * (0.5 * (plus + minus) + far(r, c)));
+      const double derivative = patch ? 0.0 : scale * (plus - minus);
+      rhs(r, c) = float(derivative - H[r] * (0.5 * (plus + minus) + far(r, c)));
     }
   return rhs;
 }

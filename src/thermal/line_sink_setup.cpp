@@ -123,6 +123,23 @@ void keep_tables(std::vector<double> key, Tables tables) {
   if (tables_kept.size() > 4) tables_kept.pop_back();
 }
 
+// A patch's panels (mm) when thermal.void_panel does not say: ~200 on the reference block's.
+constexpr double kPatchPanel = 4;
+
+// Whether every heated triangle lies on a face of the block (a patch: the melt outside).
+bool on_block_faces(const Setting& setting) {
+  const Box& b = setting.block;
+  const double tol = 1e-9 * (1 + b.size().norm() + b.max.cwiseAbs().maxCoeff());
+  auto on = [&](const HeatedTriangle& t, int axis, double plane) {
+    return std::abs(t.a[axis] - plane) <= tol && std::abs(t.b[axis] - plane) <= tol && std::abs(t.c[axis] - plane) <= tol;
+  };
+  return std::all_of(setting.heat_in.begin(), setting.heat_in.end(), [&](const HeatedTriangle& t) {
+    for (int axis = 0; axis < 3; ++axis)
+      if (on(t, axis, b.min[axis]) || on(t, axis, b.max[axis])) return true;
+    return false;
+  });
+}
+
 // The part's void likewise (seconds on a mesh cavity): a run's screening pipeline with samples of
 // its own, or `mtcs thermal --out`'s field, solves the same void as the model before it. Kept by
 // every number it depends on; the newest two.
@@ -130,14 +147,14 @@ std::mutex voids_mutex;
 std::deque<std::pair<std::vector<double>, std::shared_ptr<const VoidSurface>>> voids_kept;  // newest first
 
 std::shared_ptr<const VoidSurface> kept_void(const Setting& setting, const std::vector<Image>& images, int sample_levels,
-                                             double panel, int far_levels, const FarLattice& far) {
-  std::vector<double> key = setting_key(setting, {double(sample_levels), panel, double(far_levels)});
+                                             double panel, int far_levels, const FarLattice& far, bool on_block_face) {
+  std::vector<double> key = setting_key(setting, {double(sample_levels), panel, double(far_levels), double(on_block_face)});
   {
     const std::lock_guard lock(voids_mutex);
     for (const auto& [k, v] : voids_kept)
       if (k == key) return v;
   }
-  auto v = std::make_shared<const VoidSurface>(setting.heat_in, images, panel, setting.conductivity, far);
+  auto v = std::make_shared<const VoidSurface>(setting.heat_in, images, panel, setting.conductivity, far, on_block_face);
   const std::lock_guard lock(voids_mutex);
   voids_kept.emplace_front(std::move(key), v);
   if (voids_kept.size() > 2) voids_kept.pop_back();
@@ -237,16 +254,22 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
   if (m.heat_sources.size() > Impl::kTreeAbove) m.heat_tree.emplace(setting.heat_in, kHeatTreeTheta);
   // The part's void (void_surface.h).
   m.sample_far = sample_far;
+  const FarLattice far{[&m](const Vec3& p) { return m.far_kernel(p, m.sample_far); }, m.center};
+  const bool films = std::any_of(setting.heat_in.begin(), setting.heat_in.end(), [](const HeatedTriangle& t) { return t.film > 0; });
   if (options.void_panel > 0 && (setting.cavity_mesh || setting.cavity_box) && !setting.heat_in.empty()) {
-    const FarLattice far{[&m](const Vec3& p) { return m.far_kernel(p, m.sample_far); }, m.center};
-    m.void_surface = kept_void(setting, sample_images, sample_levels, options.void_panel, options.far_images, far);
+    m.void_surface = kept_void(setting, sample_images, sample_levels, options.void_panel, options.far_images, far, false);
     m.robin = m.void_surface->robin();
+  } else if (films && !setting.cavity_mesh && !setting.cavity_box && on_block_faces(setting)) {
+    // A patch with the part's film: its panels carry the film's flux.
+    const double panel = options.void_panel > 0 ? options.void_panel : kPatchPanel;
+    m.void_surface = kept_void(setting, sample_images, sample_levels, panel, options.far_images, far, true);
+    m.robin = true;
   }
   for (const HeatedTriangle& t : setting.heat_in)
     if (t.film > 0 && !m.robin)
       throw std::invalid_argument(
           "line sinks: the part's coupling (a film on the cavity) needs the part's void as a surface "
-          "(thermal.cavity_void: surface, a mesh cavity); use thermal.tier: fd or cavity_condition: flux");
+          "(thermal.cavity_void: surface) or a patch on a block face; use thermal.tier: fd or cavity_condition: flux");
 
   // Convective faces: one unknown uniform loss each, collocated on a grid of the face's part
   // that is not heated.
@@ -448,6 +471,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
         d(Eigen::Index(i), Eigen::Index(f)) = (m.face_field(m.faces[f], v.points()[i] + m.void_step * v.normals()[i]) -
                                                m.face_field(m.faces[f], v.points()[i] - m.void_step * v.normals()[i])) /
                                               (2 * m.void_step);
+    if (v.on_block_face()) d.setZero();  // the face's image keeps every flux there
     if (m.robin) {
       m.build_robin_fields(face_points, d);
     } else {

@@ -110,8 +110,8 @@ std::vector<std::vector<Vec3>> cut_at_planes(const HeatedTriangle& t, const std:
 }  // namespace
 
 VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const Image> images, double panel,
-                         double conductivity, const FarLattice& far)
-    : images_(images.begin(), images.end()), conductivity_(conductivity) {
+                         double conductivity, const FarLattice& far, bool on_block_face)
+    : images_(images.begin(), images.end()), conductivity_(conductivity), on_block_face_(on_block_face) {
   if (!(panel > 0)) throw std::invalid_argument("cavity void: the panel size must be > 0");
   // At most kMaxPanels panels: the dense solve costs panels^3 once and panels^2 per new bore.
   double area = 0;
@@ -209,7 +209,8 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
   // toward a panel across an edge of the wall), not the normal derivative at one point: across
   // a thin shell's void, the two faces' panels see each other at nearly a half space, and only
   // the flux keeps the small difference that matters.
-  tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+  if (on_block_face) A.setIdentity();
+  else tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
     for (std::size_t j = 0; j < n; ++j) {
       const double reach = kExact * radius_[j] + radius_[i];
       double v;
@@ -235,7 +236,7 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
   // The heat input's sheets (q / k per panel) seen from the void side: (1/2 + K') q / k = (I - A) q / k.
   Eigen::VectorXd q(N);
   for (std::size_t j = 0; j < n; ++j) q[Eigen::Index(j)] = flux_[j] / conductivity;
-  heat_d_ = q - A * q;
+  heat_d_ = on_block_face ? Eigen::VectorXd::Zero(N) : Eigen::VectorXd(q - A * q);
   film_over_k_ = Eigen::Map<const Eigen::VectorXd>(film.data(), N) / conductivity;
   part_ = Eigen::Map<const Eigen::VectorXd>(part.data(), N);
   robin_ = film_over_k_.maxCoeff() > 0;

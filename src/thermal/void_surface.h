@@ -51,8 +51,13 @@ class VoidSurface {
   // lattice at the points) answers d - H f with (A + H P + H F L) tau = d - H f, H = film / k
   // per panel, f the field's temperature at the points (docs/thermal-model.md, "The coupled
   // cavity in the line sinks"). `far` gives F; without a film it is not used.
+  //
+  // A wall on a block face (a patch: the melt outside the block) is no void: the face's image
+  // already keeps every source's flux there, so A = I (the layer is the film's extra flux / k)
+  // and d = 0 for every source.
   VoidSurface(std::span<const HeatedTriangle> wall, std::span<const Image> images, double panel,
-              double conductivity, const FarLattice& far = {});
+              double conductivity, const FarLattice& far = {}, bool on_block_face = false);
+  bool on_block_face() const { return on_block_face_; }
 
   // Whether a film acts on the wall: then solve and layer answer the Robin condition.
   bool robin() const { return robin_; }
@@ -131,7 +136,7 @@ class VoidSurface {
     Vec3 origin = Vec3::Zero();
     std::vector<float> cx, cy, cz, area, far2, xx, yy, zz, xy, xz, yz, trace;
   } far_;
-  bool robin_ = false;
+  bool robin_ = false, on_block_face_ = false;
   Eigen::VectorXd film_over_k_, part_;
   Eigen::MatrixXd moments_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;   // of A = 1/2 - K' (with a film, A + H P + H F L)

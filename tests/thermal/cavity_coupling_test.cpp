@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -137,4 +138,5 @@ TEST_CASE("cavity coupling: a film without a void surface is refused by the line
   const Setting s = coupled_cup();
   CHECK_THROWS_WITH(LineSinkModel(s, cup_samples()), Catch::Contains("void as a surface"));
 }
+
 
