@@ -332,3 +332,40 @@ TEST_CASE("thermal spec: the reader survives mutated thermal sections and patche
   CHECK(loaded > 0);
   CHECK(rejected > 0);
 }
+
+TEST_CASE("thermal spec: the cavity condition, flux by default, coupled with its film, temperature and cycle",
+          "[mold][thermal]") {
+  CHECK(load(kBlock).thermal.cavity_condition == mold::CavityCondition::Flux);
+  const auto t = load(kBlock + "thermal:\n  cavity_condition: coupled\n  cycle: {fill: 0.5, pack: 2, open: 4, cooling: 9}\n").thermal;
+  CHECK(t.cavity_condition == mold::CavityCondition::Coupled);
+  CHECK(t.cycle.fill == 0.5);
+  CHECK(t.cycle.pack == 2);
+  CHECK(t.cycle.open == 4);
+  CHECK(t.cycle.cooling == 9.0);
+  CHECK_FALSE(t.part_film);
+  // Either of the part's keys asks for the coupled condition; SI in the file.
+  const auto given = load(kBlock + "thermal: {part_film: 150, part_temperature: 220}\n").thermal;
+  CHECK(given.cavity_condition == mold::CavityCondition::Coupled);
+  CHECK(*given.part_film == Approx(150e-6).epsilon(1e-12));
+  CHECK(*given.part_temperature == 220);
+  CHECK(mold::to_string(given.cavity_condition) == "coupled");
+}
+
+TEST_CASE("thermal spec: a cavity condition's keys that contradict it are errors at their line", "[mold][thermal]") {
+  const auto flux = error_of(kBlock + "thermal:\n  cavity_condition: coupled\n  heat_flux: 30000\n");
+  CHECK(flux.field() == "thermal.heat_flux");
+  CHECK(flux.line() == 4);
+  CHECK(mentions(flux, "part_film"));
+  const auto film = error_of(kBlock + "thermal:\n  part_film: 120\n  cavity_condition: flux\n");
+  CHECK(film.field() == "thermal.part_film");
+  CHECK(film.line() == 3);
+  const auto name = error_of(kBlock + "thermal:\n  cavity_condition: robin\n");
+  CHECK(name.field() == "thermal.cavity_condition");
+  CHECK(mentions(name, "coupled or flux"));
+  const auto cold = error_of(kBlock + "thermal:\n  part_temperature: 30\n");
+  CHECK(cold.field() == "thermal.part_temperature");
+  const auto cycle = error_of(kBlock + "thermal:\n  cycle: {fill: 1, dwell: 3}\n");
+  CHECK(cycle.field() == "thermal.cycle.dwell");
+  const auto negative = error_of(kBlock + "thermal:\n  cycle: {open: -1}\n");
+  CHECK(negative.field() == "thermal.cycle.open");
+}

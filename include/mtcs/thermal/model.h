@@ -3,6 +3,8 @@
 // solves (T1/T2/T2d line sinks, T3 finite volumes). Plain data, built by eval from a scene and
 // a layout, or by hand in tests.
 //
+// The equations, the cavity condition and how each tier is checked: docs/thermal-model.md.
+//
 // Units everywhere in this module: mm, W, degrees C. Conductivity W/(mm K), film coefficients
 // W/(mm^2 K), heat fluxes W/mm^2 (the SI values divided by 1e3, 1e6 and 1e6).
 
