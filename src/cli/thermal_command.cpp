@@ -54,7 +54,7 @@ Command add_thermal_command(CLI::App& app) {
   sub->add_option("--problem", opt->problem,
                   "also write the conduction problem as JSON (block, faces, cavity triangles with their condition, "
                   "bores, samples; SI films, mm) for a solver outside mtcs");
-  sub->add_flag("--json", opt->json, "one JSON object on stdout: {tier, mean, std, max, hottest, surface, samples, heat_in, heat_to_bores, heat_to_faces, seconds}");
+  sub->add_flag("--json", opt->json, "one JSON object on stdout: {tier, cavity_condition, mean, std, max, hottest, surface, samples, heat_in, heat_to_bores, heat_to_faces, cooling_time, cycle_time (s), ejectable, seconds}");
   return {sub, [opt] {
             const std::string ext = extension(opt->out);
             if (!opt->out.empty() && opt->samples.empty() && ext != ".vtp" && ext != ".ply" && ext != ".png") {

@@ -1,10 +1,12 @@
 #include "mtcs/eval/cavity_temperature.h"
 
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <sstream>
 
 #include "mtcs/eval/part_coupling.h"
+#include "mtcs/eval/temperature_objectives.h"
 #include "mtcs/eval/thermal_model.h"
 #include "mtcs/geometry/segment_distance.h"
 #include "mtcs/io/input_error.h"
@@ -45,6 +47,9 @@ thermal::Tier line_sink_tier(mold::ThermalTier t) {
 
 }  // namespace
 
+// Solves of the coupled cycle's fixed point (mtcs thermal), at most.
+constexpr int kCycleIterations = 6;
+
 CavityConditionUsed cavity_condition_used(const mold::MoldSpec& spec) {
   CavityConditionUsed c;
   c.model = mold::to_string(spec.thermal.cavity_condition);
@@ -63,16 +68,19 @@ ThermalQuery thermal_query(const mold::MoldSpec& spec) {
   return {spec.thermal.tier, spec.thermal.elements_per_bore, spec.thermal.wall_images, spec.thermal.cell_size};
 }
 
-CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layout& layout, const ThermalQuery& query,
-                                     const std::vector<Vec3>& points, double field_edge) {
+namespace {
+
+// One solve with `spec`'s thermal section (the scene's, or another cycle's).
+CavityTemperature solve_once(const mold::Scene& scene, const mold::MoldSpec& spec, const mold::Layout& layout,
+                             const ThermalQuery& query, const std::vector<Vec3>& points, double field_edge) {
   const auto t0 = std::chrono::steady_clock::now();
-  const thermal::Setting setting = thermal_setting(scene);
+  const thermal::Setting setting = thermal_setting(scene, spec);
   const thermal::Samples samples = thermal_samples(scene);
-  const std::vector<thermal::Channel> channels = thermal_channels(layout, scene.spec());
+  const std::vector<thermal::Channel> channels = thermal_channels(layout, spec);
   CavityTemperature out;
   out.tier = mold::to_string(query.tier);
-  out.condition = cavity_condition_used(scene.spec());
-  out.surface = mold::to_string(scene.spec().thermal.objective_surface);
+  out.condition = cavity_condition_used(spec);
+  out.surface = mold::to_string(spec.thermal.objective_surface);
   if (field_edge > 0) out.field = {mesh::refine(heated_surface(setting), field_edge), {}, "temperature", "degC"};
 
   // The extra points and the field's vertices after the samples (weights matter only for the
@@ -96,9 +104,9 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
     options.tier = line_sink_tier(query.tier);
     options.elements = query.elements;
     options.images = query.wall_images;
-    options.void_panel = scene.spec().thermal.void_panel;
+    options.void_panel = spec.thermal.void_panel;
     const thermal::CavityCut cut =
-        scene.spec().thermal.void_plane ? thermal::cut_at_cavity_void(setting) : thermal::CavityCut{setting};
+        spec.thermal.void_plane ? thermal::cut_at_cavity_void(setting) : thermal::CavityCut{setting};
     const std::vector<thermal::Channel> folded = cut.fold(channels);
     // The samples in a model of their own, the extra points in another: the line sinks' float
     // coordinates (from the samples' centre) and far-expansion chunks (16 neighbouring targets)
@@ -125,8 +133,38 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
   out.field.values.assign(t.begin() + std::ptrdiff_t(n + m), t.end());
   out.summary = thermal::summarize(out.at_samples, samples);
   if (n > 0) out.hottest = samples.points[out.summary.hottest];
+  const TemperatureObjectives objectives = temperature_objectives(out.at_samples, samples, spec);
+  const mold::ThermalSpec& thermal = spec.thermal;
+  out.cycle_time = objectives.cycle_time;
+  out.cooling_time = thermal.cavity_condition == mold::CavityCondition::Coupled
+                         ? out.cycle_time - thermal.cycle.fill - thermal.cycle.pack - thermal.cycle.open
+                         : out.cycle_time;
+  out.ejectable = out.summary.max < thermal.polymer.eject_temperature;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
+}
+
+}  // namespace
+
+CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layout& layout, const ThermalQuery& query,
+                                     const std::vector<Vec3>& points, double field_edge) {
+  const auto start = std::chrono::steady_clock::now();
+  CavityTemperature r = solve_once(scene, scene.spec(), layout, query, points, field_edge);
+  const mold::ThermalSpec& t = scene.spec().thermal;
+  if (t.cavity_condition != mold::CavityCondition::Coupled || t.cycle.cooling || t.part_film) return r;
+  // The film was derived for the nominal cycle; the solution needs its own. Fed back until the
+  // cooling time moves by less than 1 % (a hotter mold takes longer: a longer cycle, a weaker
+  // film, a cooler mold), unless the part cannot be ejected at all.
+  mold::MoldSpec spec = scene.spec();
+  for (int i = 1; i < kCycleIterations && r.ejectable; ++i) {
+    const double nominal = nominal_cycle(spec).cooling;
+    if (std::abs(r.cooling_time - nominal) <= 0.01 * nominal) break;
+    spec.thermal.cycle.cooling = r.cooling_time;
+    r = solve_once(scene, spec, layout, query, points, field_edge);
+    r.cycle_iterations = i + 1;
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
 }
 
 std::string not_in_steel(const mold::Scene& scene, const mold::Layout& layout, const Vec3& p) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -23,6 +24,25 @@ std::string condition_text(const CavityConditionUsed& c) {
   return s.str();
 }
 
+std::string cycle_text(const CavityTemperature& r) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(1);
+  if (!r.ejectable) {
+    s << "not ejectable: the wall reaches " << r.summary.max << " degC at (" << r.hottest.x() << ", " << r.hottest.y()
+      << ", " << r.hottest.z() << ") mm, at or above the eject temperature: the part never sets there\n";
+  } else if (r.condition.model == "coupled") {
+    s << "cycle " << r.cycle_time << " s: cooling " << r.cooling_time << " s at the hottest sample";
+    if (r.cycle_iterations > 1) s << " (the film's cycle, consistent after " << r.cycle_iterations << " solves)";
+    if (std::abs(r.cycle_time - r.condition.cycle) > 0.05 * r.condition.cycle)
+      s << " (the film assumed a " << r.condition.cycle << " s cycle: set thermal.cycle.cooling to " << r.cooling_time
+        << " for a consistent one)";
+    s << "\n";
+  } else {
+    s << "cooling time " << r.cooling_time << " s at the hottest sample\n";
+  }
+  return s.str();
+}
+
 nlohmann::ordered_json condition_json(const CavityConditionUsed& c) {
   if (c.model == "coupled")
     return {{"model", c.model}, {"part_film", c.part_film}, {"part_temperature", c.part_temperature},
@@ -40,6 +60,7 @@ void write_cavity_temperature_text(std::ostream& out, const CavityTemperature& r
       << "  mean " << s.mean << " degC, std " << s.std << " K, max " << s.max << " degC at ("
       << std::setprecision(1) << r.hottest.x() << ", " << r.hottest.y() << ", " << r.hottest.z() << ") mm\n"
       << std::setprecision(1) << "cavity condition: " << condition_text(r.condition) << "\n"
+      << cycle_text(r)
       << std::setprecision(3) << "heat balance\n  in " << r.balance.in << " W = bores "
       << r.balance.to_channels << " W + outer faces " << r.balance.to_faces << " W (residual "
       << std::scientific << std::setprecision(1) << r.balance.residual() << " W)\n"
@@ -65,6 +86,10 @@ void write_cavity_temperature_json(std::ostream& out, const CavityTemperature& r
                                  {"heat_in", r.balance.in},
                                  {"heat_to_bores", r.balance.to_channels},
                                  {"heat_to_faces", r.balance.to_faces},
+                                 {"cooling_time", r.cooling_time},
+                                 {"cycle_time", r.cycle_time},
+                                 {"ejectable", r.ejectable},
+                                 {"cycle_iterations", r.cycle_iterations},
                                  {"seconds", r.seconds}};
   out << j.dump(2) << "\n";
 }

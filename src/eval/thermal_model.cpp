@@ -98,8 +98,9 @@ double cavity_heat_flux(const mold::MoldSpec& spec) {
   return spec.thermal.heat_flux ? *spec.thermal.heat_flux : default_heat_flux(spec);
 }
 
-thermal::Setting thermal_setting(const mold::Scene& scene) {
-  const mold::MoldSpec& spec = scene.spec();
+thermal::Setting thermal_setting(const mold::Scene& scene) { return thermal_setting(scene, scene.spec()); }
+
+thermal::Setting thermal_setting(const mold::Scene& scene, const mold::MoldSpec& spec) {
   if (!spec.cavity) throw std::invalid_argument("the thermal model needs a cavity");
   const mold::ThermalSpec& t = spec.thermal;
   thermal::Setting s;

@@ -24,6 +24,8 @@ double cavity_heat_flux(const mold::MoldSpec& spec);
 // the region holding its centroid. Triangles face the melt. Needs a cavity (else
 // std::invalid_argument).
 thermal::Setting thermal_setting(const mold::Scene& scene);
+// The same with another version of the scene's spec (its thermal section, e.g. another cycle).
+thermal::Setting thermal_setting(const mold::Scene& scene, const mold::MoldSpec& spec);
 
 // One channel per bore: its flowed part (flow_start -> flow_end; no plugged dead end, no drill
 // point), at the coolant temperature, with the Dirichlet limit, the spec's film, or the film
