@@ -39,6 +39,19 @@ Samples cup_samples() {
   return s;
 }
 
+// The line sinks with the void as 6 mm panels (the test cup's walls resolved).
+LineSinkModel six_mm_panels(const Setting& s, const Samples& samples) {
+  LineSinkOptions options;
+  options.void_panel = 6;
+  return LineSinkModel(s, samples, options);
+}
+
+double rms_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  double sq = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) sq += (a[i] - b[i]) * (a[i] - b[i]);
+  return std::sqrt(sq / double(a.size()));
+}
+
 }  // namespace
 
 TEST_CASE("cavity coupling: T3's film in series with the steel is the 1-D closed form") {
@@ -68,9 +81,7 @@ TEST_CASE("cavity coupling: T3's film in series with the steel is the 1-D closed
 TEST_CASE("cavity coupling: the line sinks read a coupled cup as the finite volumes do") {
   const Setting s = coupled_cup();
   const Samples samples = cup_samples();
-  LineSinkOptions options;
-  options.void_panel = 6;
-  const LineSinkModel model(s, samples, options);
+  const LineSinkModel model = six_mm_panels(s, samples);
   LineSinkCache cache;
   const std::vector<Channel> bores = cup_bores();
   const LineSinkSolution ls = model.solve(bores, cache);
@@ -78,17 +89,12 @@ TEST_CASE("cavity coupling: the line sinks read a coupled cup as the finite volu
   // The same cup under the fixed flux: the void surface's own error on this thin shell (its core
   // runs ~10 K cold at 6 mm panels: void_surface_test), which the coupling must not grow.
   const Setting flux = cup_void_setting(2.5);
-  const LineSinkModel flux_model(flux, samples, options);
   LineSinkCache flux_cache;
-  const std::vector<double> flux_ls = flux_model.temperatures(bores, flux_cache);
-  const FvResult flux_fv = solve_finite_volume({flux, bores}, samples, {1.0});
-  double flux_sq = 0;
-  for (std::size_t i = 0; i < samples.size(); ++i) flux_sq += std::pow(flux_ls[i] - flux_fv.temperature[i], 2);
-  const double flux_rms = std::sqrt(flux_sq / double(samples.size()));
-  double sq = 0, heat = 0;
-  for (std::size_t i = 0; i < samples.size(); ++i) sq += std::pow(ls.temperature[i] - fv.temperature[i], 2);
+  const double flux_rms = rms_difference(six_mm_panels(flux, samples).temperatures(bores, flux_cache),
+                                         solve_finite_volume({flux, bores}, samples, {1.0}).temperature);
+  const double rms = rms_difference(ls.temperature, fv.temperature);
+  double heat = 0;
   for (const double q : ls.channel_heat) heat += q;
-  const double rms = std::sqrt(sq / double(samples.size()));
   const Summary a = summarize(ls.temperature, samples), b = summarize(fv.temperature, samples);
   INFO("line sinks: mean " << a.mean << ", max " << a.max << ", heat in " << ls.heat_in << " W (to the bores " << heat
                            << " W, faces " << ls.face_heat << " W); T3 at 1 mm: mean " << b.mean << ", max " << b.max
@@ -109,9 +115,7 @@ TEST_CASE("cavity coupling: the line sinks read a coupled cup as the finite volu
 TEST_CASE("cavity coupling: no steel runs hotter than the part, whatever the bores") {
   const Setting s = coupled_cup();
   const Samples samples = cup_samples();
-  LineSinkOptions options;
-  options.void_panel = 6;
-  const LineSinkModel model(s, samples, options);
+  const LineSinkModel model = six_mm_panels(s, samples);
   LineSinkCache cache;
   std::mt19937 rng(20261206);
   std::uniform_real_distribution<double> y(3, 67), z(3, 57);
