@@ -560,8 +560,15 @@ MoldSpec load_mold_spec(const std::string& path) {
   if (root["thermal"]) s.thermal = parse_thermal(r, root["thermal"]);
   // A mesh cavity (a part) is a void the line sinks must see: without it they rank its layouts
   // no better than the wall distances do (experiments/thermal/void_surface.md).
-  if (!(root["thermal"] && root["thermal"]["cavity_void"]) && s.cavity && s.cavity->mesh)
+  // Under the coupled condition a box cavity's wall takes the part's film through the void's
+  // panels too (the plane cut moves a fixed flux only).
+  const bool coupled = s.thermal.cavity_condition == CavityCondition::Coupled;
+  const bool box_void = s.cavity && s.cavity->box && !s.cavity->is_patch();
+  if (!(root["thermal"] && root["thermal"]["cavity_void"]) && s.cavity && (s.cavity->mesh || (coupled && box_void)))
     s.thermal.void_panel = kDefaultVoidPanel;
+  if (coupled && s.cavity && !s.cavity->is_patch() && s.thermal.void_panel == 0 && root["thermal"]["cavity_void"])
+    r.fail(root["thermal"]["cavity_void"], "thermal.cavity_void",
+           "the coupled cavity condition needs the void as a surface for the line sinks: cavity_void: surface");
   // Coarser samples only: the cavity's count check then bounds the thermal set too.
   if (s.thermal.sample_spacing && s.cavity && *s.thermal.sample_spacing < s.cavity->sample_spacing)
     r.fail(root["thermal"]["sample_spacing"], "thermal.sample_spacing",

@@ -369,3 +369,14 @@ TEST_CASE("thermal spec: a cavity condition's keys that contradict it are errors
   const auto negative = error_of(kBlock + "thermal:\n  cycle: {open: -1}\n");
   CHECK(negative.field() == "thermal.cycle.open");
 }
+
+TEST_CASE("thermal spec: a coupled box cavity takes the void as a surface, the plane cut is refused", "[mold][thermal]") {
+  const auto box = load(kBlock + kCavity + "thermal: {cavity_condition: coupled}\n").thermal;
+  CHECK(box.void_panel == 8);
+  CHECK_FALSE(box.void_plane);
+  CHECK(load(kBlock + kCavity).thermal.void_panel == 0);  // the flux model: ignored, as before
+  const auto plane = error_of(kBlock + kCavity + "thermal:\n  cavity_condition: coupled\n  cavity_void: plane\n");
+  CHECK(plane.field() == "thermal.cavity_void");
+  CHECK(plane.line() == 5);
+  CHECK(mentions(plane, "cavity_void: surface"));
+}
