@@ -5,6 +5,7 @@
 #include <map>
 #include <sstream>
 
+#include "mtcs/eval/across_part.h"
 #include "mtcs/eval/part_coupling.h"
 #include "mtcs/eval/temperature_objectives.h"
 #include "mtcs/eval/thermal_model.h"
@@ -146,12 +147,38 @@ CavityTemperature solve_once(const mold::Scene& scene, const mold::MoldSpec& spe
 
 }  // namespace
 
+// Splits the points asked for from those across the part (after them), and finds the difference.
+void split_across(CavityTemperature& r, std::size_t asked, const thermal::Samples& samples,
+                  const std::vector<std::optional<Vec3>>& across) {
+  std::vector<double> at_across(r.at_points.begin() + std::ptrdiff_t(asked), r.at_points.end());
+  r.at_points.resize(asked);
+  WallDifference& d = r.across;
+  double sum = 0;
+  for (std::size_t i = 0, k = 0; i < across.size(); ++i) {
+    if (!across[i]) continue;
+    const double diff = std::abs(r.at_samples[i] - at_across[k++]);
+    d.pairs += 1, d.paired_area += samples.weights[i], sum += samples.weights[i] * diff;
+    if (diff > d.max) d.max = diff, d.where = samples.points[i];
+  }
+  if (d.paired_area > 0) d.mean = sum / d.paired_area;
+}
+
 CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layout& layout, const ThermalQuery& query,
-                                     const std::vector<Vec3>& points, double field_edge) {
+                                     const std::vector<Vec3>& asked, double field_edge) {
   const auto start = std::chrono::steady_clock::now();
+  // The points across the part join the points asked for.
+  const thermal::Samples samples = thermal_samples(scene);
+  const double reach = 3 * (scene.spec().cavity ? scene.spec().cavity->wall_thickness : 0.0);
+  const std::vector<std::optional<Vec3>> across = across_part(scene, samples, reach);
+  std::vector<Vec3> points = asked;
+  for (const auto& q : across)
+    if (q) points.push_back(*q);
   CavityTemperature r = solve_once(scene, scene.spec(), layout, query, points, field_edge);
   const mold::ThermalSpec& t = scene.spec().thermal;
-  if (t.cavity_condition != mold::CavityCondition::Coupled || t.cycle.cooling || t.part_film) return r;
+  if (t.cavity_condition != mold::CavityCondition::Coupled || t.cycle.cooling || t.part_film) {
+    split_across(r, asked.size(), samples, across);
+    return r;
+  }
   // The film was derived for the nominal cycle; the solution needs its own. Fed back until the
   // cooling time moves by less than 1 % (a hotter mold takes longer: a longer cycle, a weaker
   // film, a cooler mold), unless the part cannot be ejected at all.
@@ -163,6 +190,7 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
     r = solve_once(scene, spec, layout, query, points, field_edge);
     r.cycle_iterations = i + 1;
   }
+  split_across(r, asked.size(), samples, across);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

@@ -43,6 +43,16 @@ std::string cycle_text(const CavityTemperature& r) {
   return s.str();
 }
 
+std::string across_text(const CavityTemperature& r) {
+  if (r.across.pairs == 0) return "";
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(1) << "core/cavity difference across the wall: mean " << r.across.mean
+    << " K, max " << r.across.max << " K at (" << r.across.where.x() << ", " << r.across.where.y() << ", "
+    << r.across.where.z() << ") mm (" << r.across.pairs << " samples, " << std::setprecision(0)
+    << r.across.paired_area << " mm^2, with the part's other face within 3 walls)\n";
+  return s.str();
+}
+
 nlohmann::ordered_json condition_json(const CavityConditionUsed& c) {
   if (c.model == "coupled")
     return {{"model", c.model}, {"part_film", c.part_film}, {"part_temperature", c.part_temperature},
@@ -60,7 +70,7 @@ void write_cavity_temperature_text(std::ostream& out, const CavityTemperature& r
       << "  mean " << s.mean << " degC, std " << s.std << " K, max " << s.max << " degC at ("
       << std::setprecision(1) << r.hottest.x() << ", " << r.hottest.y() << ", " << r.hottest.z() << ") mm\n"
       << std::setprecision(1) << "cavity condition: " << condition_text(r.condition) << "\n"
-      << cycle_text(r)
+      << cycle_text(r) << across_text(r)
       << std::setprecision(3) << "heat balance\n  in " << r.balance.in << " W = bores "
       << r.balance.to_channels << " W + outer faces " << r.balance.to_faces << " W (residual "
       << std::scientific << std::setprecision(1) << r.balance.residual() << " W)\n"
@@ -90,6 +100,9 @@ void write_cavity_temperature_json(std::ostream& out, const CavityTemperature& r
                                  {"cycle_time", r.cycle_time},
                                  {"ejectable", r.ejectable},
                                  {"cycle_iterations", r.cycle_iterations},
+                                 {"temperature_difference",
+                                  {{"pairs", r.across.pairs}, {"paired_area", r.across.paired_area},
+                                   {"mean", r.across.mean}, {"max", r.across.max}}},
                                  {"seconds", r.seconds}};
   out << j.dump(2) << "\n";
 }

@@ -12,8 +12,9 @@ using geometry::Vec3;
 double SurfaceSamples::total_weight() const { return std::accumulate(weight.begin(), weight.end(), 0.0); }
 
 namespace {
-void push(SurfaceSamples& s, const Vec3& p, double w) {
+void push(SurfaceSamples& s, const Vec3& p, double w, const Vec3& normal) {
   s.x.push_back(p.x()), s.y.push_back(p.y()), s.z.push_back(p.z()), s.weight.push_back(w);
+  s.normal.push_back(normal);
 }
 }  // namespace
 
@@ -25,11 +26,13 @@ SurfaceSamples sample_box(const geometry::Box& box, double spacing) {
     const int ni = std::max(1, int(std::ceil(size[i] / spacing))), nj = std::max(1, int(std::ceil(size[j] / spacing)));
     const double di = size[i] / ni, dj = size[j] / nj;
     for (const double plane : {box.min[k], box.max[k]}) {
+      Vec3 normal = Vec3::Zero();
+      normal[k] = plane == box.max[k] && box.max[k] > box.min[k] ? 1 : -1;
       for (int a = 0; a < ni; ++a) {
         for (int b = 0; b < nj; ++b) {
           Vec3 p;
           p[k] = plane, p[i] = box.min[i] + (a + 0.5) * di, p[j] = box.min[j] + (b + 0.5) * dj;
-          push(s, p, di * dj);
+          push(s, p, di * dj, normal);
         }
       }
     }
@@ -42,6 +45,7 @@ SurfaceSamples sample_mesh(const mesh::TriangleMesh& mesh, double spacing) {
     Vec3 sum = Vec3::Zero();
     double weight = 0;
     std::vector<Vec3> pieces;
+    std::vector<std::size_t> triangle;  // of each piece
   };
   std::map<std::tuple<long, long, long>, Cell> cells;  // ordered: deterministic output
   const Vec3 origin = mesh.bounds().min;
@@ -63,6 +67,7 @@ SurfaceSamples sample_mesh(const mesh::TriangleMesh& mesh, double spacing) {
           cell.sum += area * cs[m];
           cell.weight += area;
           cell.pieces.push_back(cs[m]);
+          cell.triangle.push_back(t);
         }
       }
     }
@@ -70,10 +75,12 @@ SurfaceSamples sample_mesh(const mesh::TriangleMesh& mesh, double spacing) {
   SurfaceSamples s;
   for (const auto& [key, cell] : cells) {
     const Vec3 mean = cell.sum / cell.weight;
-    Vec3 best = cell.pieces.front();
-    for (const Vec3& p : cell.pieces)
-      if ((p - mean).squaredNorm() < (best - mean).squaredNorm()) best = p;
-    push(s, best, cell.weight);
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < cell.pieces.size(); ++i)
+      if ((cell.pieces[i] - mean).squaredNorm() < (cell.pieces[best] - mean).squaredNorm()) best = i;
+    const std::size_t t = cell.triangle[best];
+    const Vec3 normal = (mesh.corner(t, 1) - mesh.corner(t, 0)).cross(mesh.corner(t, 2) - mesh.corner(t, 0)).normalized();
+    push(s, cell.pieces[best], cell.weight, normal);
   }
   return s;
 }
@@ -90,11 +97,12 @@ SurfaceSamples sample_patch(const geometry::Box& patch, double spacing) {
   const int ni = std::max(1, int(std::ceil(size[i] / spacing))), nj = std::max(1, int(std::ceil(size[j] / spacing)));
   const double di = size[i] / ni, dj = size[j] / nj;
   SurfaceSamples s;
+  const Vec3 normal = Vec3::Zero();  // which side the melt is on is the patch's face's: not known here
   for (int b = 0; b < nj; ++b) {
     for (int a = 0; a < ni; ++a) {
       Vec3 p;
       p[k] = patch.min[k], p[i] = patch.min[i] + (a + 0.5) * di, p[j] = patch.min[j] + (b + 0.5) * dj;
-      push(s, p, di * dj);
+      push(s, p, di * dj, normal);
     }
   }
   return s;

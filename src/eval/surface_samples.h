@@ -12,6 +12,7 @@ namespace mtcs::eval {
 
 struct SurfaceSamples {
   std::vector<double> x, y, z, weight;
+  std::vector<geometry::Vec3> normal;  // unit, out of the part (into the steel); 0 on a patch
   std::size_t size() const { return x.size(); }
   double total_weight() const;
 };

@@ -171,8 +171,9 @@ thermal::Samples thermal_samples(const mold::Scene& scene) {
   thermal::Samples all, heated;
   for (std::size_t i = 0; i < s.size(); ++i) {
     const Vec3 p(s.x[i], s.y[i], s.z[i]);
-    all.points.push_back(p), all.weights.push_back(s.weight[i]);
-    if (cavity_heated_at(spec, p)) heated.points.push_back(p), heated.weights.push_back(s.weight[i]);
+    all.points.push_back(p), all.weights.push_back(s.weight[i]), all.normals.push_back(s.normal[i]);
+    if (cavity_heated_at(spec, p))
+      heated.points.push_back(p), heated.weights.push_back(s.weight[i]), heated.normals.push_back(s.normal[i]);
   }
   const bool use_heated = spec.thermal.objective_surface == mold::ObjectiveSurface::Heated && heated.size() > 0;
   return use_heated ? heated : all;

@@ -25,15 +25,16 @@ struct CoupledMold {
   double mean_within;     // K: the line sinks' mean against T3 at 2 mm on the bundled layout
 };
 
-// The plate's box cavity needs the void as a surface under the coupled condition (the plane cut
-// carries a fixed flux only).
+// The plate's box cavity takes the void as a surface under the coupled condition (the plane cut
+// carries a fixed flux only). One nominal cycle (cooling 12 s): the tiers compared on one film,
+// not each at its own cycle's fixed point.
 const CoupledMold kMolds[] = {
-    {"thermal_block", "heat_flux: 50000", "cavity_condition: coupled", 0.3},
-    {"plate", "heat_flux: 29000", "cavity_condition: coupled\n  cavity_void: surface\n  void_panel: 12", 2.0},
-    {"cup", "heat_flux: 35000", "cavity_condition: coupled", 2.0},
-    {"ribbed_box", "heat_flux: 35000", "cavity_condition: coupled", 3.0},
-    {"l_bracket", "heat_flux: 15000", "cavity_condition: coupled", 1.0},
-    {"gear", "heat_flux: 17000", "cavity_condition: coupled", 1.0},
+    {"thermal_block", "heat_flux: 50000", "cavity_condition: coupled\n  cycle: {cooling: 12}", 0.3},
+    {"plate", "heat_flux: 29000", "cavity_condition: coupled\n  cycle: {cooling: 12}\n  cavity_void: surface\n  void_panel: 12", 2.0},
+    {"cup", "heat_flux: 35000", "cavity_condition: coupled\n  cycle: {cooling: 12}", 2.0},
+    {"ribbed_box", "heat_flux: 35000", "cavity_condition: coupled\n  cycle: {cooling: 12}", 3.0},
+    {"l_bracket", "heat_flux: 15000", "cavity_condition: coupled\n  cycle: {cooling: 12}", 1.0},
+    {"gear", "heat_flux: 17000", "cavity_condition: coupled\n  cycle: {cooling: 12}", 1.0},
 };
 
 // Every temperature within [coldest, T_p]: the maximum principle of a conduction problem whose
@@ -88,7 +89,7 @@ TEST_CASE("coupled cavity: every bundled mold, the line sinks as T3 finds, no st
 TEST_CASE("coupled cavity: the cycle mtcs thermal reports is the one its film was derived for", "[eval][coupling]") {
   // The plate's layout needs 17.6 s of cooling at its hottest sample, not the nominal 15.1 s (the
   // wall at the coolant): the film follows, and the two agree within 1 % after a few solves.
-  const run::Session session(mtcs_test::bundled_variant(kMolds[1].name, kMolds[1].flux_line, kMolds[1].coupled),
+  const run::Session session(mtcs_test::bundled_variant("plate", "heat_flux: 29000", "cavity_condition: coupled"),
                              run::RunOverrides{});
   const mold::Scene& scene = session.scene();
   const mold::Layout layout = mold::decode(scene, session.read_layout(MTCS_SOURCE_DIR + "/molds/plate.layout.yaml"));
@@ -99,9 +100,7 @@ TEST_CASE("coupled cavity: the cycle mtcs thermal reports is the one its film wa
   CHECK(r.cycle_time == Approx(r.condition.cycle).epsilon(0.01));
   CHECK(r.cycle_time == Approx(r.cooling_time + 1 + 3 + 5).epsilon(1e-12));
   // A cycle the spec fixes is kept: one solve.
-  const run::Session fixed(mtcs_test::bundled_variant("plate", "heat_flux: 29000",
-                                                      "cavity_condition: coupled\n  cavity_void: surface\n  void_panel: 12\n"
-                                                      "  cycle: {cooling: 15}"),
+  const run::Session fixed(mtcs_test::bundled_variant("plate", "heat_flux: 29000", "cavity_condition: coupled\n  cycle: {cooling: 15}"),
                            run::RunOverrides{});
   const eval::CavityTemperature once = eval::cavity_temperature(fixed.scene(), layout, eval::thermal_query(fixed.spec()));
   CHECK(once.cycle_iterations == 1);

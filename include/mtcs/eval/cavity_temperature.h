@@ -38,6 +38,15 @@ struct CavityConditionUsed {
 };
 CavityConditionUsed cavity_condition_used(const mold::MoldSpec& spec);
 
+// The core/cavity difference: over the samples whose wall has the part's other face straight
+// across it (eval::across_part, within 3 wall thicknesses), |T(sample) - T(across)|.
+struct WallDifference {
+  std::size_t pairs = 0;
+  double paired_area = 0;      // mm^2, of those samples
+  double mean = 0, max = 0;    // K, area-weighted mean and max
+  geometry::Vec3 where = geometry::Vec3::Zero();  // the sample of the max
+};
+
 struct CavityTemperature {
   std::string tier;                  // t1, t2, t2d, fd
   CavityConditionUsed condition;
@@ -53,6 +62,7 @@ struct CavityTemperature {
   double cooling_time = 0, cycle_time = 0;
   bool ejectable = true;
   int cycle_iterations = 1;          // solves of the coupled cycle's fixed point
+  WallDifference across;             // the core/cavity difference
   double seconds = 0;                // the solve (and the model's construction)
   mesh::SurfaceField field;          // filled when a field was asked for
 };

@@ -76,6 +76,7 @@ struct Model {
 struct Samples {
   std::vector<Vec3> points;
   std::vector<double> weights;
+  std::vector<Vec3> normals;  // unit, out of the part into the steel; empty or 0 where unknown
   std::size_t size() const { return points.size(); }
 };
 

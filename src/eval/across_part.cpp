@@ -1,0 +1,36 @@
+#include "mtcs/eval/across_part.h"
+
+namespace mtcs::eval {
+
+using geometry::Vec3;
+
+namespace {
+constexpr double kOpposite = -0.8;  // the faces' normals' dot product at most: within 37 degrees
+}  // namespace
+
+std::vector<std::optional<Vec3>> across_part(const mold::Scene& scene, const thermal::Samples& samples, double reach) {
+  std::vector<std::optional<Vec3>> out(samples.size());
+  const auto& cavity = scene.spec().cavity;
+  if (!cavity || cavity->is_patch() || samples.normals.size() != samples.size()) return out;
+  const mesh::TriangleBvh* bvh = scene.cavity_bvh();
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const Vec3& p = samples.points[i];
+    const Vec3& n = samples.normals[i];
+    if (n.squaredNorm() < 0.5) continue;
+    if (cavity->box) {  // the part is the box: straight across along the normal's axis
+      int axis = 0;
+      n.cwiseAbs().maxCoeff(&axis);
+      const double t = cavity->box->size()[axis];
+      if (t <= reach) out[i] = Vec3(p - t * n);
+      continue;
+    }
+    if (!bvh) continue;
+    // From a hair inside the part, so the sample's own face is not the first crossing.
+    const double start = 1e-6 * (1 + bvh->bounds().size().norm());
+    const auto hit = bvh->first_hit(p - start * n, -n);
+    if (hit && hit->t + start <= reach && hit->normal.dot(n) <= kOpposite) out[i] = Vec3(p - (hit->t + start) * n);
+  }
+  return out;
+}
+
+}  // namespace mtcs::eval
