@@ -283,6 +283,14 @@ int bench_thermal(const ThermalBenchOptions& o) {
   // A cavity in the block: also the line sinks that know its void (thermal.cavity_void: surface).
   if (c.setting.cavity_mesh || c.setting.cavity_box)
     for (const double panel : o.void_panels) tiers.insert(tiers.begin() + 5, Tier{"t2d", 4, 0, panel});
+  // The coupled cavity condition (a film on the cavity's wall) reaches the line sinks through
+  // the void's panels only: the tiers blind to the void cannot model it.
+  const bool films = std::any_of(c.setting.heat_in.begin(), c.setting.heat_in.end(),
+                                 [](const thermal::HeatedTriangle& t) { return t.film > 0; });
+  if (films && (c.setting.cavity_mesh || c.setting.cavity_box)) {
+    std::erase_if(tiers, [](const Tier& t) { return t.name != "t0" && t.name != "fd" && t.void_panel == 0; });
+    std::cerr << "  the coupled cavity: the line sinks with the void's panels only\n";
+  }
   if (!o.tiers.empty())  // only those asked for, by the start of their labels
     std::erase_if(tiers, [&](const Tier& t) {
       return std::none_of(o.tiers.begin(), o.tiers.end(), [&](const std::string& w) { return label(t).rfind(w, 0) == 0; });
