@@ -9,7 +9,6 @@
 #include "mtcs/cli/commands.h"
 #include "mtcs/eval/cavity_temperature.h"
 #include "mtcs/eval/cavity_temperature_report.h"
-#include "mtcs/eval/thermal_model.h"
 #include "mtcs/eval/thermal_problem_json.h"
 #include "mtcs/io/atomic_file.h"
 #include "mtcs/mold/decoder.h"
@@ -42,7 +41,6 @@ Command add_thermal_command(CLI::App& app) {
       "  --out field.vtp | field.ply | field.png   the temperature on the cavity surface (ParaView,\n"
       "                                            MeshLab, a picture)\n"
       "  --samples POINTS.csv --out T.csv          x,y,z,T at the points of a CSV with columns x,y,z\n"
-      "  --problem problem.json                    the same conduction problem for another solver\n"
       "Example: mtcs thermal molds/thermal_block.yaml --layout molds/thermal_block.layout.yaml --tier fd --cell 1");
   sub->add_option("mold", opt->mold, "mold spec (YAML)")->required();
   sub->add_option("--layout", opt->layout, "layout (YAML: circuits of waypoints)")->required();
@@ -51,9 +49,7 @@ Command add_thermal_command(CLI::App& app) {
   sub->add_option("--elements", opt->elements, "line-sink elements per bore (default: the spec's)")->check(CLI::Range(1, 64));
   sub->add_option("--samples", opt->samples, "CSV of points (columns x,y,z, mm): their temperatures go to --out");
   sub->add_option("--out", opt->out, "field.vtp, field.ply, field.png, or with --samples a CSV");
-  sub->add_option("--problem", opt->problem,
-                  "also write the conduction problem as JSON (block, faces, cavity triangles with their condition, "
-                  "bores, samples; SI films, mm) for a solver outside mtcs");
+  sub->add_option("--problem", opt->problem, "also the conduction problem as JSON, for a solver outside mtcs (SI films, mm)");
   sub->add_flag("--json", opt->json, "one JSON object on stdout: {tier, cavity_condition, mean, std, max, hottest, surface, samples, heat_in, heat_to_bores, heat_to_faces, cooling_time, cycle_time (s), ejectable, seconds}");
   return {sub, [opt] {
             const std::string ext = extension(opt->out);
@@ -69,9 +65,7 @@ Command add_thermal_command(CLI::App& app) {
             const run::Session session(opt->mold, {}, eval::PipelineScope::constraints);
             const mold::Layout layout = mold::decode(session.scene(), session.read_layout(opt->layout));
             eval::ThermalQuery query = eval::thermal_query(session.spec());
-            if (!opt->tier.empty())
-              query.tier = opt->tier == "t1" ? mold::ThermalTier::T1 : opt->tier == "t2" ? mold::ThermalTier::T2
-                         : opt->tier == "fd" ? mold::ThermalTier::Fd : mold::ThermalTier::T2d;
+            if (!opt->tier.empty()) query.tier = *mold::thermal_tier(opt->tier);  // CLI checked the name
             if (opt->cell > 0) query.cell = opt->cell;
             if (opt->elements > 0) query.elements = opt->elements;
             const bool fd = query.tier == mold::ThermalTier::Fd;
@@ -84,13 +78,7 @@ Command add_thermal_command(CLI::App& app) {
             // finer, and each vertex costs a sample's evaluation (the gear's: 34 600 of them).
             const double edge = opt->samples.empty() && !opt->out.empty() ? session.spec().cavity->sample_spacing : 0;
             const eval::CavityTemperature r = eval::cavity_temperature(session.scene(), layout, query, points, edge);
-            if (!opt->problem.empty()) {
-              io::AtomicFile file(opt->problem);
-              const thermal::Model model{eval::thermal_setting(session.scene()), eval::thermal_channels(layout, session.spec())};
-              eval::write_thermal_problem_json(file.stream(), model, eval::thermal_samples(session.scene()));
-              file.commit();
-              std::cerr << "mtcs thermal: the conduction problem to " << opt->problem << "\n";
-            }
+            if (!opt->problem.empty()) eval::write_thermal_problem_file(opt->problem, session.scene(), layout);
 
             if (!opt->samples.empty()) {
               io::AtomicFile file(opt->out);

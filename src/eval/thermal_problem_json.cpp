@@ -3,6 +3,9 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "mtcs/eval/thermal_model.h"
+#include "mtcs/io/atomic_file.h"
+
 namespace mtcs::eval {
 
 namespace {
@@ -45,6 +48,13 @@ void write_thermal_problem_json(std::ostream& out, const thermal::Model& model, 
       {"channels", channels},
       {"samples", points}};
   out << j.dump(1) << "\n";
+}
+
+void write_thermal_problem_file(const std::string& path, const mold::Scene& scene, const mold::Layout& layout) {
+  io::AtomicFile file(path);
+  write_thermal_problem_json(file.stream(), {thermal_setting(scene), thermal_channels(layout, scene.spec())},
+                             thermal_samples(scene));
+  file.commit();
 }
 
 }  // namespace mtcs::eval

@@ -637,6 +637,12 @@ bool is_temperature_objective(Objective o) {
 
 std::string to_string(ObjectiveSurface s) { return s == ObjectiveSurface::Heated ? "heated" : "all"; }
 
+std::optional<ThermalTier> thermal_tier(const std::string& name) {
+  for (const ThermalTier t : {ThermalTier::T1, ThermalTier::T2, ThermalTier::T2d, ThermalTier::Fd})
+    if (to_string(t) == name) return t;
+  return std::nullopt;
+}
+
 std::string to_string(CavityCondition c) { return c == CavityCondition::Coupled ? "coupled" : "flux"; }
 
 std::string to_string(ThermalTier t) {

@@ -7,11 +7,16 @@
 // read by experiments/thermal/freefem_coupled.
 
 #include <ostream>
+#include <string>
 
+#include "mtcs/mold/layout.h"
+#include "mtcs/mold/scene.h"
 #include "mtcs/thermal/model.h"
 
 namespace mtcs::eval {
 
 void write_thermal_problem_json(std::ostream& out, const thermal::Model& model, const thermal::Samples& samples);
+// The scene's problem for the layout (its setting, channels and samples) to `path`, whole or not at all.
+void write_thermal_problem_file(const std::string& path, const mold::Scene& scene, const mold::Layout& layout);
 
 }  // namespace mtcs::eval

@@ -143,6 +143,8 @@ struct Objectives {
 // degrees C (conductivity W/(mm K), films W/(mm^2 K), fluxes W/mm^2).
 enum class ThermalTier { T1, T2, T2d, Fd };
 std::string to_string(ThermalTier t);
+// The tier of that name (as to_string spells it), or none.
+std::optional<ThermalTier> thermal_tier(const std::string& name);
 
 // Which cavity samples the temperature objectives (and every summary of them: `mtcs thermal`,
 // finite-volume re-scores) cover: Heated, those where heat enters (flux > 0: the faces this mold
