@@ -101,36 +101,36 @@ def shift(points, o):
 
 def physics(thickness, extra="", temperatures=True):
     """The thermal section and the temperature objectives of a part of ABS with this wall
-    thickness (mm): the cycle-averaged flux is the heat each half of the part gives up per
-    cycle over the cooling time with the wall at the coolant (docs/mold-spec.md)."""
-    alpha, melt, eject, coolant, rho, cp = 0.095, 230.0, 90.0, 40.0, 1050.0, 2000.0
+    thickness (mm). The cavity is coupled to the part (docs/thermal-model.md): the part gives heat
+    to the steel only while the steel is colder, through a film derived from the polymer, the wall
+    and the cycle; the cooling time is an outcome, so cycle_time is an objective and no layout
+    scores better by letting the mold run hotter."""
+    alpha, melt, eject, coolant = 0.095, 230.0, 90.0, 40.0
     cooling = thickness ** 2 / (math.pi ** 2 * alpha) * math.log(4 / math.pi * (melt - coolant) / (eject - coolant))
-    flux = rho * cp * thickness / 2e3 * (melt - eject) / cooling
-    section = ("# ABS, %g mm: rho c_p (s/2)(T_melt - T_eject) = %.0f kJ/m^2 per half and cycle over a\n"
-               "# %.1f s cooling time: %.0f kW/m^2 into the steel; 8 l/min of water at 40 C per circuit.\n"
+    section = ("# ABS, %g mm walls: the part (230 C melt, ejected at 90 C) coupled to the steel; a %.1f s\n"
+               "# cooling time with the wall at the coolant; 8 l/min of water at 40 C per circuit.\n"
                "thermal:\n"
                "  steel_conductivity: 30\n"
                "  coolant: {temperature: 40, flow_rate: 8}\n"
                "  ambient: {temperature: 25, film: 10}\n"
-               "  heat_flux: %d\n%s"
+               "  cavity_condition: coupled\n"
+               "  cycle: {fill: 1, pack: 3, open: 5}\n%s"
                "  tier: t2d\n"
-               % (thickness, rho * cp * thickness / 2e3 * (melt - eject) / 1e3, cooling, flux / 1e3,
-                  int(round(flux, -3)), extra))
-    use = ("  use: [temperature_std, temperature_max, cost]\n" if temperatures else
-           "  # Wall distances: the temperatures of a mesh cavity cost 20 s to minutes per layout today\n"
-           "  # (the source potential of every heated triangle at every sample; molds/README.md).\n"
+               % (thickness, cooling, extra))
+    use = ("  use: [temperature_std, cycle_time, cost]\n" if temperatures else
            "  use: [uniformity, worst_covered, cost]\n")
     return (section + "objectives:\n" + use +
+            "  # 1 s of cycle weighs as 1 K of spread over the cavity and 1 000 of drilling cost.\n"
             "  scales: {uniformity: 5, worst_covered: 20, cost: 1000, temperature_mean: 10, temperature_std: 1,\n"
-            "           temperature_max: 10, cycle_time: 10}\n")
+            "           temperature_max: 10, cycle_time: 1}\n")
 
 
 def void_surface(panel):
     """The line sinks' view of the part's void: an insulating surface of panels this wide (mm);
     the width per mold from experiments/thermal/void_surface.md (ranking against the finite
     volumes, cost per new bore)."""
-    return ("# The part's void as an insulating surface of %g mm panels: on random layouts the line\n"
-            "# sinks then rank as the finite volumes do (experiments/thermal/void_surface.md).\n"
+    return ("# The part's void as a surface of %g mm panels taking the part's heat: on random layouts\n"
+            "# the line sinks then rank as the finite volumes do (experiments/thermal/void_surface.md).\n"
             "  cavity_void: surface\n"
             "  void_panel: %g\n" % (panel, panel))
 
@@ -159,7 +159,7 @@ def main(out):
            "# T3 unchanged (experiments/thermal/plate_samples.md).\n"
            "  sample_spacing: 11\n")
     with open(os.path.join(out, "plate.yaml"), "w") as f:
-        f.write((PLATE % pins).replace("{physics}", physics(3, top)))
+        f.write((PLATE % pins).replace("{physics}", physics(3, top + void_surface(12))))
     # The same plate scored by wall distances (tier 0): ~50x faster, for comparisons and for the
     # tests that optimise.
     with open(os.path.join(out, "plate_wall_distance.yaml"), "w") as f:
@@ -225,7 +225,7 @@ def main(out):
                   (4, shift(u_loop(126, 146, 138, 49), o))],
                  "extreme: 4 mm bores threading between the pins, 9 mm under a 1 mm wall")
 
-    # The thermal reference block (shared/cases/thermal/block3d_case.txt): a heated patch on the
+    # The thermal reference block (tests/data/thermal/block3d_case.txt): a heated patch on the
     # top face, bores drilled straight through along x (one circuit per bore: inlet at x = 0,
     # outlet at x = 120, the same y and z).
     with open(os.path.join(out, "thermal_block.yaml"), "w") as f:
@@ -344,7 +344,7 @@ objectives:
   scales: {uniformity: 2, worst_covered: 10, cost: 1000}
 """
 
-THERMAL_BLOCK = """# The thermal reference block (shared/cases/thermal/block3d_case.txt): a 120 x 80 x 60 mm steel
+THERMAL_BLOCK = """# The thermal reference block (tests/data/thermal/block3d_case.txt): a 120 x 80 x 60 mm steel
 # block heated through a 60 x 48 mm patch on its top face (50 kW/m^2: 144 W), every other face
 # convective (10 W/(m^2 K) to 25 C), bore walls at the coolant, 40 C (Dirichlet). Bores run
 # straight through along x: one circuit per bore, inlet at x = 0, outlet at x = 120.

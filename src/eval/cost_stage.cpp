@@ -7,6 +7,16 @@
 #include "stages.h"
 
 namespace mtcs::eval {
+
+double drilling_cost(const mold::Layout& layout, const mold::Objectives& o) {
+  double cost = o.cost_plug * layout.plugs;
+  for (const mold::Bore& b : layout.bores) {
+    const double L = b.drilled_length;
+    cost += o.cost_setup + o.cost_per_mm * L * (1 + o.cost_deep_factor * std::max(0.0, L / b.diameter - 10));
+  }
+  return cost;
+}
+
 namespace {
 
 class CostStage final : public Stage {
@@ -17,12 +27,7 @@ class CostStage final : public Stage {
   }
   std::string name() const override { return "cost"; }
   void run(const mold::Layout& layout, Evaluation& out) const override {
-    double cost = o_.cost_plug * layout.plugs;
-    for (const mold::Bore& b : layout.bores) {
-      const double L = b.drilled_length;
-      cost += o_.cost_setup + o_.cost_per_mm * L * (1 + o_.cost_deep_factor * std::max(0.0, L / b.diameter - 10));
-    }
-    out.objectives[slot_] = cost;
+    out.objectives[slot_] = drilling_cost(layout, o_);
   }
 
  private:

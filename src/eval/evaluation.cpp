@@ -16,8 +16,14 @@ const char* to_string(ViolationKind kind) {
     case ViolationKind::InletFace: return "inlet_face";
     case ViolationKind::OutletFace: return "outlet_face";
     case ViolationKind::Drillable: return "drillable";
+    case ViolationKind::Eject: return "eject";
+    case ViolationKind::TemperatureBounds: return "temperature_bounds";
   }
   return "unknown";
+}
+
+bool is_thermal_verdict(ViolationKind kind) {
+  return kind == ViolationKind::Eject || kind == ViolationKind::TemperatureBounds;
 }
 
 double scalar_fitness(const Evaluation& e, const mold::MoldSpec& spec, const std::vector<double>& weights) {

@@ -28,6 +28,13 @@ std::string found_and_needed(const Violation& v) {
     case K::Drillable:
       s << "direction in a blocked cell, the nearest free one " << v.distance << " deg away";
       break;
+    case K::Eject:
+      s << "wall at " << v.distance << " degC, the part sets only below " << v.margin << " degC";
+      break;
+    case K::TemperatureBounds:
+      s << "the thermal tier returned " << v.distance << " degC, beyond the physical bound " << v.margin
+        << " degC: a defect of the model (please report the layout)";
+      break;
     case K::InletFace:
     case K::OutletFace:
       s << v.distance << " mm from the nearest allowed face";

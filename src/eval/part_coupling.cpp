@@ -73,4 +73,32 @@ PartCoupling cavity_coupling(const mold::MoldSpec& spec) {
   return c;
 }
 
+double follow_cycle(std::vector<double>& temperature, const mold::MoldSpec& spec) {
+  const mold::ThermalSpec& t = spec.thermal;
+  const double nominal = nominal_cycle(spec).cooling;
+  if (t.cavity_condition != mold::CavityCondition::Coupled || t.cycle.cooling || t.part_film || temperature.empty())
+    return nominal;
+  const double s = spec.cavity ? spec.cavity->wall_thickness : mold::Cavity{}.wall_thickness;
+  const PartCoupling start = cavity_coupling(spec);
+  const double coolant = t.coolant_temperature, span = start.temperature - coolant;
+  if (!(span > 0) || !std::all_of(temperature.begin(), temperature.end(), [](double v) { return std::isfinite(v); }))
+    return nominal;
+  // The share of a sample at the film x h_0 (below the coolant: left as solved).
+  const auto share = [](double r, double x) { return r <= 0 ? r : x * r / (x * r + 1 - r); };
+  const double hottest = std::min(*std::max_element(temperature.begin(), temperature.end()) - coolant, span) / span;
+  double cooling = nominal, x = 1;
+  for (int i = 0; i < 50; ++i) {
+    const double wall = coolant + span * share(hottest, x);
+    if (wall >= t.polymer.eject_temperature) break;
+    const double need = cooling_time(s, t.polymer, wall);
+    if (std::abs(need - cooling) <= 1e-3 * cooling) break;
+    cooling = need;
+    const double in_mold = t.cycle.fill + t.cycle.pack + cooling;
+    x = part_coupling(t.polymer, s, in_mold, in_mold + t.cycle.open).film / start.film;
+  }
+  if (x != 1)
+    for (double& v : temperature) v = coolant + span * share(std::min(v - coolant, span) / span, x);
+  return cooling;
+}
+
 }  // namespace mtcs::eval

@@ -1,5 +1,6 @@
 #include "mtcs/eval/pipeline.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -73,15 +74,25 @@ Evaluation Pipeline::evaluate(const mold::Layout& layout, bool timed) const {
     stage->run(layout, e);
     e.stages.push_back({stage->name(), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()});
   }
-  for (const Violation& v : e.violations) e.violation += std::pow(v.amount, scene_.spec().penalty.power);
+  // The thermal verdicts count on a layout that can be built: evaluate_if_feasible, which does
+  // not solve for an infeasible one, gives the same violations and CV.
+  const auto thermal = [](const Violation& v) { return is_thermal_verdict(v.kind); };
+  if (!std::all_of(e.violations.begin(), e.violations.end(), thermal))
+    e.violations.erase(std::remove_if(e.violations.begin(), e.violations.end(), thermal), e.violations.end());
+  sum_violation(e);
   return e;
+}
+
+void Pipeline::sum_violation(Evaluation& e) const {
+  e.violation = 0;
+  for (const Violation& v : e.violations) e.violation += std::pow(v.amount, scene_.spec().penalty.power);
 }
 
 Evaluation Pipeline::constraints(const mold::Layout& layout) const {
   Evaluation e;
   e.objectives.assign(scene_.spec().objectives.use.size(), 0.0);
   for (std::size_t s = objective_stages_; s < stages_.size(); ++s) stages_[s]->run(layout, e);
-  for (const Violation& v : e.violations) e.violation += std::pow(v.amount, scene_.spec().penalty.power);
+  sum_violation(e);
   return e;
 }
 
@@ -92,8 +103,10 @@ Evaluation Pipeline::evaluate_if_feasible(const mold::Genome& genome) const {
     std::fill(e.objectives.begin(), e.objectives.end(), std::numeric_limits<double>::infinity());
     return e;
   }
-  // The objective stages add no violations, so this is evaluate's result bit for bit.
+  // evaluate's result bit for bit: the objective stages add only the thermal verdicts, which
+  // evaluate keeps on a layout that meets every other rule (and lists first).
   for (std::size_t s = 0; s < objective_stages_; ++s) stages_[s]->run(layout, e);
+  sum_violation(e);
   return e;
 }
 

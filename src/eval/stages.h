@@ -14,6 +14,8 @@ std::unique_ptr<Stage> make_thermal_stage(const mold::Scene& scene, SurfaceSampl
 // Needs a cavity and a factory that builds a solver.
 std::unique_ptr<Stage> make_temperature_stage(const mold::Scene& scene, const TemperatureSolverFactory& factory);
 std::unique_ptr<Stage> make_cost_stage(const mold::Scene& scene);
+// The `cost` objective: drilling and plugging the layout's holes.
+double drilling_cost(const mold::Layout& layout, const mold::Objectives& o);
 std::unique_ptr<Stage> make_bore_bore_stage(const mold::Scene& scene);
 std::unique_ptr<Stage> make_keep_out_cylinder_stage(const mold::Scene& scene);
 std::unique_ptr<Stage> make_keep_out_mesh_stage(const mold::Scene& scene);

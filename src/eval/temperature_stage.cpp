@@ -3,10 +3,13 @@
 // area-weighted mean, standard deviation and maximum, and the plate cooling time at the
 // hottest sample.
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "mtcs/eval/cycle_time.h"
+#include "mtcs/eval/part_coupling.h"
 #include "mtcs/eval/temperature_objectives.h"
 #include "mtcs/eval/thermal_model.h"
 #include "exact_cache.h"
@@ -22,7 +25,11 @@ TemperatureObjectives temperature_objectives(const std::vector<double>& temperat
   // Coupled: the whole cycle, the slowest place (the hottest wall) deciding when to eject.
   if (spec.thermal.cavity_condition == mold::CavityCondition::Coupled)
     cycle += spec.thermal.cycle.fill + spec.thermal.cycle.pack + spec.thermal.cycle.open;
-  return {s.mean, s.std, s.max, cycle};
+  TemperatureObjectives o{s.mean, s.std, s.max, s.max, cycle};
+  for (std::size_t i = 0; i < temperature.size(); ++i)
+    if (!(temperature[i] >= o.min)) o.min = temperature[i], o.coldest = samples.points[i];
+  if (!samples.points.empty()) o.hottest = samples.points[s.hottest];
+  return o;
 }
 
 namespace {
@@ -30,7 +37,11 @@ namespace {
 class TemperatureStage final : public Stage {
  public:
   TemperatureStage(const mold::Scene& scene, const TemperatureSolverFactory& factory)
-      : spec_(scene.spec()), setting_(thermal_setting(scene)), samples_(thermal_samples(scene)) {
+      : spec_(scene.spec()),
+        setting_(thermal_setting(scene)),
+        samples_(thermal_samples(scene)),
+        coupled_(spec_.thermal.cavity_condition == mold::CavityCondition::Coupled),
+        part_temperature_(coupled_ ? cavity_coupling(spec_).temperature : 0) {
     solve_ = factory(setting_, samples_, spec_.thermal);
     const auto& use = spec_.objectives.use;
     for (std::size_t k = 0; k < use.size(); ++k)
@@ -44,7 +55,7 @@ class TemperatureStage final : public Stage {
     // A genome can decode to no bore at all (a circuit whose waypoints collapse). Nothing then
     // carries the heat away in the models: worse than any layout that cools, not an error.
     constexpr double kNoCooling = std::numeric_limits<double>::infinity();
-    if (channels.empty()) return write({kNoCooling, kNoCooling, kNoCooling, kNoCooling}, out);
+    if (channels.empty()) return write({kNoCooling, kNoCooling, kNoCooling, kNoCooling, kNoCooling}, layout, out);
     // Every number the solve reads of the channels: a child that decodes to a layout solved
     // before gets that solve's objectives (on the plate 1 in 5 of the layouts an ES run solves
     // repeats an earlier one: a move undone by the decoder's snapping, a parent crossed with itself).
@@ -53,11 +64,44 @@ class TemperatureStage final : public Stage {
     for (const thermal::Channel& c : channels)
       key.insert(key.end(), {c.axis.p0.x(), c.axis.p0.y(), c.axis.p0.z(), c.axis.p1.x(), c.axis.p1.y(), c.axis.p1.z(),
                              c.radius, c.coolant, c.film});
-    write(solved_.get(key, [&] { return temperature_objectives(solve_(channels), samples_, spec_); }), out);
+    write(solved_.get(key,
+                      [&] {
+                        std::vector<double> t = solve_(channels);
+                        follow_cycle(t, spec_);  // coupled: the film of the cycle this layout needs
+                        return temperature_objectives(t, samples_, spec_);
+                      }),
+          layout, out);
   }
 
  private:
-  void write(const TemperatureObjectives& o, Evaluation& out) const {
+  // Under the coupled condition every boundary links to the part (T_p), the coolant or the
+  // ambient air: a temperature outside that range is a defect of the tier, and the layout is
+  // refused with it rather than scored. A wall at or above the eject temperature is a design the
+  // part cannot leave. Both count only on a layout that can be built (Pipeline::evaluate).
+  void check_coupled(const TemperatureObjectives& o, Evaluation& out) const {
+    const mold::ThermalSpec& t = spec_.thermal;
+    const double coldest = std::min(t.coolant_temperature, t.ambient_temperature);
+    const double span = std::max(part_temperature_ - coldest, 1.0);
+    if (!(o.max <= part_temperature_ + kBoundSlack)) {
+      const double over = std::isfinite(o.max) ? o.max - part_temperature_ : span;
+      out.violations.push_back({ViolationKind::TemperatureBounds, {"cavity"}, o.max, part_temperature_,
+                                1 + over / span, o.hottest, {}});
+      return;
+    }
+    if (!(o.min >= coldest - kBoundSlack)) {
+      const double under = std::isfinite(o.min) ? coldest - o.min : span;
+      out.violations.push_back({ViolationKind::TemperatureBounds, {"cavity"}, o.min, coldest, 1 + under / span,
+                                o.coldest, {}});
+      return;
+    }
+    const double eject = t.polymer.eject_temperature;
+    if (o.max >= eject)
+      out.violations.push_back({ViolationKind::Eject, {"cavity"}, o.max, eject,
+                                (o.max - eject) / std::max(eject - t.coolant_temperature, 1.0), o.hottest, {}});
+  }
+
+  void write(const TemperatureObjectives& o, const mold::Layout& layout, Evaluation& out) const {
+    if (coupled_ && !std::isinf(o.mean)) check_coupled(o, out);
     for (const auto& [objective, slot] : slots_) {
       double& v = out.objectives[slot];
       switch (objective) {
@@ -65,14 +109,23 @@ class TemperatureStage final : public Stage {
         case mold::Objective::TemperatureStd: v = o.std; break;
         case mold::Objective::TemperatureMax: v = o.max; break;
         case mold::Objective::CycleTime: v = o.cycle_time; break;
+        case mold::Objective::CostPerPart: {
+          const mold::Objectives& s = spec_.objectives;
+          v = drilling_cost(layout, s) / s.production->parts + s.production->machine_rate * o.cycle_time / 3600;
+          break;
+        }
         default: break;
       }
     }
   }
 
+  static constexpr double kBoundSlack = 0.5;  // K: the line sinks' discretisation, well above
+                                              // what the tests find (tests/eval/coupled_molds_test.cpp)
   const mold::MoldSpec& spec_;
   thermal::Setting setting_;
   thermal::Samples samples_;
+  bool coupled_;
+  double part_temperature_;
   TemperatureSolver solve_;
   ExactCache<std::vector<double>, TemperatureObjectives> solved_{256};
   std::vector<std::pair<mold::Objective, std::size_t>> slots_;

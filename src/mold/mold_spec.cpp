@@ -314,7 +314,7 @@ CircuitLimits parse_circuits(const YamlReader& r, const YAML::Node& n) {
 }
 
 Objectives parse_objectives(const YamlReader& r, const YAML::Node& n) {
-  r.expect_map(n, "objectives", {"use", "scales", "target_wall_distance", "cost"});
+  r.expect_map(n, "objectives", {"use", "scales", "target_wall_distance", "cost", "production"});
   Objectives o;
   if (n["use"]) {
     r.expect_sequence(n["use"], "objectives.use");
@@ -332,7 +332,7 @@ Objectives parse_objectives(const YamlReader& r, const YAML::Node& n) {
   if (n["scales"]) {
     const YAML::Node& s = n["scales"];
     r.expect_map(s, "objectives.scales", {"uniformity", "worst_covered", "cost", "temperature_mean", "temperature_std",
-                                          "temperature_max", "cycle_time"});
+                                          "temperature_max", "cycle_time", "cost_per_part"});
     auto scale = [&](const char* key, double& into) {
       if (s[key]) into = r.number(s[key], std::string("objectives.scales.") + key, 1e-12, kHuge);
     };
@@ -343,6 +343,7 @@ Objectives parse_objectives(const YamlReader& r, const YAML::Node& n) {
     scale("temperature_std", o.scale_temperature_std);
     scale("temperature_max", o.scale_temperature_max);
     scale("cycle_time", o.scale_cycle_time);
+    scale("cost_per_part", o.scale_cost_per_part);
   }
   if (n["target_wall_distance"])
     o.target_wall_distance = parse_length(r, n["target_wall_distance"], "objectives.target_wall_distance");
@@ -354,6 +355,20 @@ Objectives parse_objectives(const YamlReader& r, const YAML::Node& n) {
     if (c["deep_factor"]) o.cost_deep_factor = r.number(c["deep_factor"], "objectives.cost.deep_factor", 0, kHuge);
     if (c["plug"]) o.cost_plug = r.number(c["plug"], "objectives.cost.plug", 0, kHuge);
   }
+  if (n["production"]) {
+    const YAML::Node& p = n["production"];
+    r.expect_map(p, "objectives.production", {"parts", "machine_rate"});
+    Objectives::Production production;
+    if (!p["parts"]) r.fail(p, "objectives.production.parts", "the lot size is needed (parts the mold makes)");
+    if (!p["machine_rate"]) r.fail(p, "objectives.production.machine_rate", "the machine's cost per hour is needed");
+    production.parts = r.number(p["parts"], "objectives.production.parts", 1, kHuge);
+    production.machine_rate = r.number(p["machine_rate"], "objectives.production.machine_rate", 0, kHuge);
+    o.production = production;
+  }
+  for (std::size_t i = 0; i < o.use.size(); ++i)
+    if (o.use[i] == Objective::CostPerPart && !o.production)
+      r.fail(n["use"][i], at("objectives.use", i),
+             "cost_per_part needs objectives.production: {parts: N, machine_rate: cost per hour}");
   return o;
 }
 
@@ -619,20 +634,22 @@ std::string to_string(Objective o) {
     case Objective::TemperatureStd: return "temperature_std";
     case Objective::TemperatureMax: return "temperature_max";
     case Objective::CycleTime: return "cycle_time";
+    case Objective::CostPerPart: return "cost_per_part";
   }
   return "?";
 }
 
 std::optional<Objective> objective_named(const std::string& name) {
   for (const auto o : {Objective::Uniformity, Objective::WorstCovered, Objective::Cost, Objective::TemperatureMean,
-                       Objective::TemperatureStd, Objective::TemperatureMax, Objective::CycleTime})
+                       Objective::TemperatureStd, Objective::TemperatureMax, Objective::CycleTime,
+                       Objective::CostPerPart})
     if (to_string(o) == name) return o;
   return std::nullopt;
 }
 
 bool is_temperature_objective(Objective o) {
   return o == Objective::TemperatureMean || o == Objective::TemperatureStd || o == Objective::TemperatureMax ||
-         o == Objective::CycleTime;
+         o == Objective::CycleTime || o == Objective::CostPerPart;
 }
 
 std::string to_string(ObjectiveSurface s) { return s == ObjectiveSurface::Heated ? "heated" : "all"; }

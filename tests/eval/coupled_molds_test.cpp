@@ -20,21 +20,20 @@ namespace {
 
 struct CoupledMold {
   const char* name;
-  const char* flux_line;  // the spec's line the coupled condition replaces
+  const char* line;       // the spec's line replaced
   const char* coupled;
   double mean_within;     // K: the line sinks' mean against T3 at 2 mm on the bundled layout
 };
 
-// The plate's box cavity takes the void as a surface under the coupled condition (the plane cut
-// carries a fixed flux only). One nominal cycle (cooling 12 s): the tiers compared on one film,
-// not each at its own cycle's fixed point.
+// The bundled molds are coupled but the thermal block (the fixed-flux reference). One nominal
+// cycle (cooling 12 s): the tiers compared on one film, not each at its own cycle's fixed point.
 const CoupledMold kMolds[] = {
     {"thermal_block", "heat_flux: 50000", "cavity_condition: coupled\n  cycle: {cooling: 12}", 0.3},
-    {"plate", "heat_flux: 29000", "cavity_condition: coupled\n  cycle: {cooling: 12}\n  cavity_void: surface\n  void_panel: 12", 2.0},
-    {"cup", "heat_flux: 35000", "cavity_condition: coupled\n  cycle: {cooling: 12}", 2.0},
-    {"ribbed_box", "heat_flux: 35000", "cavity_condition: coupled\n  cycle: {cooling: 12}", 3.0},
-    {"l_bracket", "heat_flux: 15000", "cavity_condition: coupled\n  cycle: {cooling: 12}", 1.0},
-    {"gear", "heat_flux: 17000", "cavity_condition: coupled\n  cycle: {cooling: 12}", 1.0},
+    {"plate", "cycle: {fill: 1, pack: 3, open: 5}", "cycle: {cooling: 12}", 2.0},
+    {"cup", "cycle: {fill: 1, pack: 3, open: 5}", "cycle: {cooling: 12}", 2.0},
+    {"ribbed_box", "cycle: {fill: 1, pack: 3, open: 5}", "cycle: {cooling: 12}", 3.0},
+    {"l_bracket", "cycle: {fill: 1, pack: 3, open: 5}", "cycle: {cooling: 12}", 1.0},
+    {"gear", "cycle: {fill: 1, pack: 3, open: 5}", "cycle: {cooling: 12}", 1.0},
 };
 
 // Every temperature within [coldest, T_p]: the maximum principle of a conduction problem whose
@@ -51,7 +50,7 @@ void check_bounds(const eval::CavityTemperature& r, double coldest, double part)
 TEST_CASE("coupled cavity: every bundled mold, the line sinks as T3 finds, no steel above the part", "[eval][coupling]") {
   for (const CoupledMold& m : kMolds) {
     INFO(m.name);
-    const run::Session session(mtcs_test::bundled_variant(m.name, m.flux_line, m.coupled), run::RunOverrides{});
+    const run::Session session(mtcs_test::bundled_variant(m.name, m.line, m.coupled), run::RunOverrides{});
     const mold::Scene& scene = session.scene();
     const mold::ThermalSpec& t = scene.spec().thermal;
     REQUIRE(t.cavity_condition == mold::CavityCondition::Coupled);
@@ -89,8 +88,7 @@ TEST_CASE("coupled cavity: every bundled mold, the line sinks as T3 finds, no st
 TEST_CASE("coupled cavity: the cycle mtcs thermal reports is the one its film was derived for", "[eval][coupling]") {
   // The plate's layout needs 17.6 s of cooling at its hottest sample, not the nominal 15.1 s (the
   // wall at the coolant): the film follows, and the two agree within 1 % after a few solves.
-  const run::Session session(mtcs_test::bundled_variant("plate", "heat_flux: 29000", "cavity_condition: coupled"),
-                             run::RunOverrides{});
+  const run::Session session(MTCS_SOURCE_DIR + "/molds/plate.yaml", run::RunOverrides{});
   const mold::Scene& scene = session.scene();
   const mold::Layout layout = mold::decode(scene, session.read_layout(MTCS_SOURCE_DIR + "/molds/plate.layout.yaml"));
   const eval::CavityTemperature r = eval::cavity_temperature(scene, layout, eval::thermal_query(scene.spec()));
@@ -100,9 +98,87 @@ TEST_CASE("coupled cavity: the cycle mtcs thermal reports is the one its film wa
   CHECK(r.cycle_time == Approx(r.condition.cycle).epsilon(0.01));
   CHECK(r.cycle_time == Approx(r.cooling_time + 1 + 3 + 5).epsilon(1e-12));
   // A cycle the spec fixes is kept: one solve.
-  const run::Session fixed(mtcs_test::bundled_variant("plate", "heat_flux: 29000", "cavity_condition: coupled\n  cycle: {cooling: 15}"),
+  const run::Session fixed(mtcs_test::bundled_variant("plate", "cycle: {fill: 1, pack: 3, open: 5}", "cycle: {cooling: 15}"),
                            run::RunOverrides{});
   const eval::CavityTemperature once = eval::cavity_temperature(fixed.scene(), layout, eval::thermal_query(fixed.spec()));
   CHECK(once.cycle_iterations == 1);
   CHECK(once.condition.cycle == Approx(24));
+}
+
+TEST_CASE("coupled cavity: a wall the part cannot set against is infeasible, with the place", "[eval][coupling]") {
+  // The cup's hand-made layout leaves its core at ~129 C, above the 90 C the part is ejected at.
+  const run::Session session(MTCS_SOURCE_DIR + "/molds/cup.yaml", run::RunOverrides{});
+  const mold::Scene& scene = session.scene();
+  const mold::ThermalSpec& t = scene.spec().thermal;
+  const mold::Genome genome = session.read_layout(MTCS_SOURCE_DIR + "/molds/cup.layout.yaml");
+  const eval::Evaluation e = session.pipeline().evaluate(genome);
+  const eval::CavityTemperature r =
+      eval::cavity_temperature(scene, mold::decode(scene, genome), eval::thermal_query(scene.spec()));
+  REQUIRE_FALSE(r.ejectable);
+  REQUIRE(e.violations.size() == 1);
+  const eval::Violation& v = e.violations[0];
+  CHECK(v.kind == eval::ViolationKind::Eject);
+  CHECK(v.distance == Approx(r.summary.max).epsilon(1e-9));
+  CHECK(v.margin == t.polymer.eject_temperature);
+  CHECK((v.where - r.hottest).norm() < 1e-9);
+  CHECK(v.amount == Approx((r.summary.max - 90) / (90 - 40)).epsilon(1e-9));
+  CHECK(e.violation == Approx(v.amount * v.amount));
+  // The path that skips the solve for a layout that cannot be built gives the same score.
+  const eval::Evaluation skipped = session.pipeline().evaluate_if_feasible(genome);
+  CHECK(skipped.violation == e.violation);
+  CHECK(skipped.objectives == e.objectives);
+  // A layout that breaks a clearance is scored by its clearances alone, on both paths.
+  mold::Genome broken = genome;
+  for (geometry::Vec3& p : broken.circuits[2].waypoints) p.z() = 118;  // the third circuit 2 mm under the top face
+  const eval::Evaluation b = session.pipeline().evaluate(broken), bs = session.pipeline().evaluate_if_feasible(broken);
+  REQUIRE_FALSE(b.feasible());
+  for (const eval::Violation& w : b.violations) CHECK(w.kind != eval::ViolationKind::Eject);
+  CHECK(bs.violation == b.violation);
+  CHECK(bs.violations.size() == b.violations.size());
+}
+
+TEST_CASE("coupled cavity: the optimiser's cycle from one solve is the fixed point's", "[eval][coupling]") {
+  // The pipeline solves once with the nominal film and follows the cycle on its samples
+  // (eval::follow_cycle); mtcs thermal re-solves with each cycle's film. The L-bracket's 6 mm
+  // walls move furthest from the nominal cycle (61 s with the wall at the coolant, ~97 s needed).
+  for (const char* name : {"plate", "l_bracket"}) {
+    INFO(name);
+    const run::Session session(MTCS_SOURCE_DIR + "/molds/" + name + ".yaml", run::RunOverrides{});
+    const mold::Scene& scene = session.scene();
+    const auto& use = scene.spec().objectives.use;
+    const std::size_t cycle = std::size_t(std::find(use.begin(), use.end(), mold::Objective::CycleTime) - use.begin()),
+                      spread = std::size_t(std::find(use.begin(), use.end(), mold::Objective::TemperatureStd) - use.begin());
+    REQUIRE(cycle < use.size());
+    std::vector<mold::Genome> layouts{session.read_layout(MTCS_SOURCE_DIR + "/molds/" + name + ".layout.yaml")};
+    opt::Rng rng(6122026);
+    while (layouts.size() < 4) layouts.push_back(session.problem().genome(session.problem().sample(rng)));
+    int compared = 0;
+    for (std::size_t k = 0; k < layouts.size(); ++k) {
+      const mold::Layout layout = mold::decode(scene, layouts[k]);
+      if (layout.bores.empty()) continue;
+      const eval::CavityTemperature fixed = eval::cavity_temperature(scene, layout, eval::thermal_query(scene.spec()));
+      if (!fixed.ejectable) continue;
+      const eval::Evaluation e = session.pipeline().evaluate(layout);
+      INFO("layout " << k << ": cycle " << e.objectives[cycle] << " s against " << fixed.cycle_time << " s after "
+                     << fixed.cycle_iterations << " solves; std " << e.objectives[spread] << " against "
+                     << fixed.summary.std << " K");
+      CHECK(e.objectives[cycle] == Approx(fixed.cycle_time).epsilon(0.05));
+      CHECK(e.objectives[spread] == Approx(fixed.summary.std).epsilon(0.08));
+      ++compared;
+    }
+    CHECK(compared >= 2);
+  }
+}
+
+TEST_CASE("cost_per_part: the drilling cost over the lot plus the machine's time for the cycle", "[eval][coupling]") {
+  const std::string spec = mtcs_test::bundled_variant(
+      "plate", "use: [temperature_std, cycle_time, cost]",
+      "use: [cost_per_part, cycle_time, cost]\n  production: {parts: 50000, machine_rate: 72}");
+  const run::Session session(spec, run::RunOverrides{});
+  const mold::Genome genome = session.read_layout(MTCS_SOURCE_DIR + "/molds/plate.layout.yaml");
+  const eval::Evaluation e = session.pipeline().evaluate(genome);
+  REQUIRE(e.objectives.size() == 3);
+  // 72 per hour is 0.02 per second of cycle.
+  CHECK(e.objectives[0] == Approx(e.objectives[2] / 50000 + 0.02 * e.objectives[1]).epsilon(1e-12));
+  CHECK(e.objectives[1] > 20);
 }

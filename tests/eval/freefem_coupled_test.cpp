@@ -61,7 +61,7 @@ Errors against(const std::vector<double>& ours, const std::vector<std::vector<do
 }  // namespace
 
 TEST_CASE("coupled cavity: the cup's samples as FreeFem++ P2 has them", "[eval][coupling]") {
-  const mold::Scene scene(mold::load_mold_spec(mtcs_test::bundled_variant("cup", "heat_flux: 35000", "cavity_condition: coupled")));
+  const mold::Scene scene(mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/cup.yaml"));
   const auto reference = read_rows(MTCS_TEST_DATA + "/thermal/freefem_coupled_cup.csv");
   const thermal::Samples samples = eval::thermal_samples(scene);
   REQUIRE(samples.size() == reference.size());

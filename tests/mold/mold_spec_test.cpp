@@ -40,10 +40,12 @@ TEST_CASE("mold spec: the bundled plate loads with its defaults", "[mold]") {
   CHECK(spec.clearances.bore_cavity.per_diameter);
   CHECK(spec.clearances.bore_cavity.at(8) == 8);
   CHECK(spec.objectives.use.size() == 3);
-  // Issue 11: the bundled molds score temperatures, with a thermal section of their own.
+  // Issue 11: the bundled molds score temperatures, with a thermal section of their own; issue
+  // 40: the part coupled to the steel, the cycle time among the objectives.
   CHECK(mold::is_temperature_objective(spec.objectives.use[0]));
-  REQUIRE(spec.thermal.heat_flux);
-  CHECK(*spec.thermal.heat_flux > 0);
+  CHECK(spec.thermal.cavity_condition == mold::CavityCondition::Coupled);
+  CHECK_FALSE(spec.thermal.heat_flux);
+  CHECK(spec.objectives.use[1] == mold::Objective::CycleTime);
 }
 
 TEST_CASE("mold spec: bad input names file, line, column and field", "[mold][errors]") {

@@ -86,7 +86,7 @@ TEST_CASE("thermal spec: cavity_void surface, its panels 8 mm unless void_panel 
   // A mesh cavity's void is a surface unless the spec says otherwise.
   CHECK(mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/gear.yaml").thermal.void_panel == 8);
   CHECK(mold::load_mold_spec(MTCS_SOURCE_DIR + "/docs/first-mold/part.yaml").thermal.void_panel == 8);
-  CHECK(mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate.yaml").thermal.void_panel == 0);
+  CHECK(mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/thermal_block.yaml").thermal.void_panel == 0);
 }
 
 TEST_CASE("thermal spec: sample_spacing, the cavity's by default, coarser only", "[mold][thermal]") {
@@ -249,6 +249,15 @@ TEST_CASE("thermal spec: bad input names file, line, column and field", "[mold][
     const auto e = error_of(kBlock + "objectives: {use: [temperature]}\n");
     CHECK(e.field() == "objectives.use[0]");
     CHECK(mentions(e, "cycle_time"));
+  }
+  SECTION("cost_per_part without the production it divides by") {
+    const auto e = error_of(kBlock + kCavity + "objectives:\n  use: [cycle_time, cost_per_part]\n");
+    CHECK(e.field() == "objectives.use[1]");
+    CHECK(e.line() == 4);
+    CHECK(mentions(e, "production"));
+    CHECK(error_of(kBlock + "objectives:\n  production: {parts: 0, machine_rate: 50}\n").field() ==
+          "objectives.production.parts");
+    CHECK(error_of(kBlock + "objectives:\n  production: {parts: 1000}\n").field() == "objectives.production.machine_rate");
   }
   SECTION("a patch that leaves its face") {
     const auto e = error_of(kBlock + "cavity:\n  patch: {face: +z, min: [30, 16], max: [130, 64]}\n");

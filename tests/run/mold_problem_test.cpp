@@ -51,7 +51,7 @@ TEST_CASE("MoldProblem ranks an infeasible layout as its penalty variant says", 
   CHECK(cd.objectives == s.objectives);
   CHECK(cd.violation == s.violation);
 
-  // The mold's scale of each of its objectives (plate.yaml: temperature_std, temperature_max, cost).
+  // The mold's scale of each of its objectives (plate.yaml: temperature_std, cycle_time, cost).
   const mold::MoldSpec spec = mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate.yaml");
   std::vector<double> scales;
   for (const auto o : spec.objectives.use) scales.push_back(spec.objectives.scale(o));

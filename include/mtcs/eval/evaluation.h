@@ -23,10 +23,18 @@ enum class ViolationKind {
   InletFace,    // an inlet away from its allowed faces
   OutletFace,   // an outlet away from its allowed faces
   Drillable,    // a bore's direction in a blocked cell of the accessibility map at its entry
+  Eject,        // coupled cavity: the wall stays at or above the eject temperature somewhere, so
+                // the part never sets there
+  TemperatureBounds,  // coupled cavity: the tier returned a temperature outside [coldest of
+                      // coolant and air, T_p] (or not a number): a defect of the model, the
+                      // layout refused rather than scored
 };
+// The two thermal verdicts (eject, temperature_bounds) count only on a layout that meets every
+// geometric rule: a bore through the part has no meaningful temperature.
+bool is_thermal_verdict(ViolationKind kind);
 
 // bore_bore, bore_keepout, bore_cavity, bore_surface, depth_ratio, entry_face, entry_angle,
-// inlet_face, outlet_face, drillable.
+// inlet_face, outlet_face, drillable, eject, temperature_bounds.
 const char* to_string(ViolationKind kind);
 
 struct Violation {

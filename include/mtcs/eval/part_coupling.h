@@ -25,6 +25,8 @@
 //
 // Units: mm, s, W, degrees C (films W/(mm^2 K)), as the thermal module.
 
+#include <vector>
+
 #include "mtcs/mold/mold_spec.h"
 
 namespace mtcs::eval {
@@ -59,5 +61,17 @@ CycleTimes nominal_cycle(const mold::MoldSpec& spec);
 // thermal.part_temperature where given, else part_coupling at the cavity's wall thickness and
 // the nominal cycle.
 PartCoupling cavity_coupling(const mold::MoldSpec& spec);
+
+// The cycle a solution needs, from that one solve (the optimiser's linearisation of the fixed
+// point mtcs thermal iterates with whole solves; docs/thermal-model.md, "The cycle in the
+// optimiser"). Each sample's wall is read as a 1-D link of unknown conductance G to the coolant
+// behind a film h to T_p: its share r = (T - T_c) / (T_p - T_c) = h / (h + G) fixes G, and a
+// film x h gives r' = x r / (x r + 1 - r). The hottest sample stays the hottest; its cooling
+// time sets the cycle, the cycle the film, until the cooling time moves by less than 0.1 %.
+// `temperature` (at the samples, solved with the nominal film) becomes that film's. Nothing
+// changes unless the cavity is coupled with a derived film and cycle (no thermal.part_film,
+// no thermal.cycle.cooling); the answer stands at the last film once the wall is too hot to
+// eject. Returns the cooling time (s).
+double follow_cycle(std::vector<double>& temperature, const mold::MoldSpec& spec);
 
 }  // namespace mtcs::eval

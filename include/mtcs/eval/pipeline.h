@@ -40,7 +40,8 @@ class Pipeline {
   // Thread-safe: stages hold only data built at construction (and per-thread caches).
   Evaluation evaluate(const mold::Genome& genome, bool timed = false) const;
   Evaluation evaluate(const mold::Layout& layout, bool timed = false) const;
-  // The constraint stages alone: the violations (and CV) of evaluate, objectives left at 0. For
+  // The constraint stages alone: the violations (and CV) of evaluate but ejectability (which
+  // needs the temperatures), objectives left at 0. For
   // callers that ask only whether a layout is feasible (the reach move tries circuits alone):
   // the objective stages (the thermal proxies, the solver) are most of an evaluation's cost.
   Evaluation constraints(const mold::Layout& layout) const;
@@ -57,6 +58,8 @@ class Pipeline {
   const DrillAccess* drill_access() const { return drill_access_.get(); }
 
  private:
+  void sum_violation(Evaluation& e) const;  // CV from the violations' amounts
+
   const mold::Scene& scene_;
   std::unique_ptr<DrillAccess> drill_access_;
   std::vector<std::unique_ptr<Stage>> stages_;  // the objective stages first, then the constraints

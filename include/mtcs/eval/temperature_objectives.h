@@ -22,8 +22,11 @@ using TemperatureSolverFactory =
 
 struct TemperatureObjectives {
   double mean = 0, std = 0, max = 0;  // degrees C, K, degrees C; area-weighted over the samples
+  double min = 0;                     // degrees C: the coldest sample
   double cycle_time = 0;              // s: cooling_time at the hottest sample (coupled: plus
                                       // fill, pack and open, the whole cycle)
+  geometry::Vec3 hottest = geometry::Vec3::Zero();  // mm: where max is
+  geometry::Vec3 coldest = geometry::Vec3::Zero();  // mm: where min is
 };
 
 TemperatureObjectives temperature_objectives(const std::vector<double>& temperature, const thermal::Samples& samples,

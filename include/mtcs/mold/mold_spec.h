@@ -103,12 +103,21 @@ struct CircuitLimits {
 // Tier 0 (wall distances): Uniformity, WorstCovered. Physics (the thermal section's tier):
 // the area-weighted mean, standard deviation and maximum of the cavity-surface temperature,
 // and the cycle-time proxy at the hottest sample.
-enum class Objective { Uniformity, WorstCovered, Cost, TemperatureMean, TemperatureStd, TemperatureMax, CycleTime };
+enum class Objective {
+  Uniformity,
+  WorstCovered,
+  Cost,
+  TemperatureMean,
+  TemperatureStd,
+  TemperatureMax,
+  CycleTime,
+  CostPerPart  // the drilling cost over the lot plus the machine's time per part
+};
 std::string to_string(Objective o);
 // The objective of that name (as to_string spells it), or none.
 std::optional<Objective> objective_named(const std::string& name);
 inline const std::string kObjectiveNames =
-    "uniformity, worst_covered, cost, temperature_mean, temperature_std, temperature_max or cycle_time";
+    "uniformity, worst_covered, cost, temperature_mean, temperature_std, temperature_max, cycle_time or cost_per_part";
 // Needs a thermal solve (not the tier-0 wall distances).
 bool is_temperature_objective(Objective o);
 
@@ -120,8 +129,16 @@ struct Objectives {
   double scale_uniformity = 5, scale_worst_covered = 20, scale_cost = 1000;                   // mm, mm, cost
   double scale_temperature_mean = 10, scale_temperature_std = 1, scale_temperature_max = 10;  // K
   double scale_cycle_time = 10;                                                               // s
+  double scale_cost_per_part = 0.1;  // the cost units per part
   Length target_wall_distance{2.0, true};
   double cost_setup = 20, cost_per_mm = 0.05, cost_deep_factor = 0.02, cost_plug = 5;
+  // objectives.production, which cost_per_part needs: the lot the mold makes and what an hour
+  // of the molding machine costs (the drilling cost's units).
+  struct Production {
+    double parts = 0;
+    double machine_rate = 0;  // per hour
+  };
+  std::optional<Production> production;
 
   // The divisor that makes objective o comparable to the others.
   double scale(Objective o) const {
@@ -133,6 +150,7 @@ struct Objectives {
       case Objective::TemperatureStd: return scale_temperature_std;
       case Objective::TemperatureMax: return scale_temperature_max;
       case Objective::CycleTime: return scale_cycle_time;
+      case Objective::CostPerPart: return scale_cost_per_part;
     }
     return 1;
   }
