@@ -113,7 +113,7 @@ struct Tier {
 struct Row {
   Tier tier;
   double ms_full = 0, ms_incremental = 0, rms = 0, max = 0;
-  double tau_std = 0, tau_mean = 0, tau_better_half = 0;
+  double tau_std = 0, tau_mean = 0, tau_max = 0, tau_better_half = 0;
   int top10 = 0;
 };
 
@@ -164,7 +164,7 @@ double wall_distance_uniformity(const std::vector<Channel>& layout, const therma
 // Temperatures of every layout by one tier, with its times per layout.
 struct Scored {
   std::vector<std::vector<double>> temperature;  // empty for t0
-  std::vector<double> score_std, score_mean, ms_full, ms_incremental;
+  std::vector<double> score_std, score_mean, score_max, ms_full, ms_incremental;
 };
 
 Scored score(const Case& c, const Tier& tier) {
@@ -175,7 +175,7 @@ Scored score(const Case& c, const Tier& tier) {
       const auto t0 = std::chrono::steady_clock::now();
       const double u = wall_distance_uniformity(layout, c.samples);
       s.ms_full.push_back(1e3 * seconds_since(t0));
-      s.score_std.push_back(u), s.score_mean.push_back(u);
+      s.score_std.push_back(u), s.score_mean.push_back(u), s.score_max.push_back(u);
       continue;
     }
     if (tier.name == "fd") {
@@ -187,7 +187,7 @@ Scored score(const Case& c, const Tier& tier) {
     }
     const thermal::Summary sum = thermal::summarize(t, c.samples);
     s.temperature.push_back(t);
-    s.score_std.push_back(sum.std), s.score_mean.push_back(sum.mean);
+    s.score_std.push_back(sum.std), s.score_mean.push_back(sum.mean), s.score_max.push_back(sum.max);
   }
   return s;
 }
@@ -221,7 +221,7 @@ Scored score_line_sinks(const Case& c, const Tier& tier, int repeat) {
     s.ms_incremental.push_back(median(incremental));
     const thermal::Summary sum = thermal::summarize(t, c.samples);
     s.temperature.push_back(std::move(t));
-    s.score_std.push_back(sum.std), s.score_mean.push_back(sum.mean);
+    s.score_std.push_back(sum.std), s.score_mean.push_back(sum.mean), s.score_max.push_back(sum.max);
   }
   return s;
 }
@@ -246,6 +246,7 @@ Row judge(const Tier& tier, const Scored& s, const Scored& ref) {
   std::iota(all.begin(), all.end(), 0);
   r.tau_std = kendall(s.score_std, ref.score_std, all);
   r.tau_mean = kendall(s.score_mean, ref.score_mean, all);
+  r.tau_max = kendall(s.score_max, ref.score_max, all);
   // The better half by the reference's std: where an optimiser spends its time.
   std::vector<std::size_t> by_ref = all, by_tier = all;
   std::sort(by_ref.begin(), by_ref.end(), [&](auto a, auto b) { return ref.score_std[a] < ref.score_std[b]; });
@@ -313,17 +314,17 @@ int bench_thermal(const ThermalBenchOptions& o) {
       const Row& r = rows[i];
       auto num = [](double v) { return std::isfinite(v) ? std::to_string(v) : std::string("null"); };
       std::printf("%s\n  {\"tier\": \"%s\", \"elements\": %d, \"cell_mm\": %g, \"ms_full\": %.5f, \"ms_incremental\": %.5f, "
-                  "\"rms_k\": %s, \"max_k\": %s, \"tau_std\": %.4f, \"tau_mean\": %.4f, \"tau_better_half\": %.4f, \"top10\": %d}",
+                  "\"rms_k\": %s, \"max_k\": %s, \"tau_std\": %.4f, \"tau_mean\": %.4f, \"tau_max\": %.4f, \"tau_better_half\": %.4f, \"top10\": %d}",
                   i ? "," : "", label(r.tier).c_str(), r.tier.elements, r.tier.cell, r.ms_full, r.ms_incremental,
-                  num(r.rms).c_str(), num(r.max).c_str(), r.tau_std, r.tau_mean, r.tau_better_half, r.top10);
+                  num(r.rms).c_str(), num(r.max).c_str(), r.tau_std, r.tau_mean, r.tau_max, r.tau_better_half, r.top10);
     }
     std::printf("\n]}\n");
     return 0;
   }
-  std::printf("tier,ms_full,ms_incremental,rms_k,max_k,tau_std,tau_mean,tau_better_half,top10\n");
+  std::printf("tier,ms_full,ms_incremental,rms_k,max_k,tau_std,tau_mean,tau_max,tau_better_half,top10\n");
   for (const Row& r : rows)
-    std::printf("%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%d\n", label(r.tier).c_str(), r.ms_full, r.ms_incremental, r.rms,
-                r.max, r.tau_std, r.tau_mean, r.tau_better_half, r.top10);
+    std::printf("%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%d\n", label(r.tier).c_str(), r.ms_full, r.ms_incremental, r.rms,
+                r.max, r.tau_std, r.tau_mean, r.tau_max, r.tau_better_half, r.top10);
   return 0;
 }
 

@@ -8,6 +8,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "mtcs/eval/across_part.h"
 #include "mtcs/eval/cycle_time.h"
 #include "mtcs/eval/part_coupling.h"
 #include "mtcs/eval/temperature_objectives.h"
@@ -41,9 +42,23 @@ class TemperatureStage final : public Stage {
         setting_(thermal_setting(scene)),
         samples_(thermal_samples(scene)),
         coupled_(spec_.thermal.cavity_condition == mold::CavityCondition::Coupled),
-        part_temperature_(coupled_ ? cavity_coupling(spec_).temperature : 0) {
-    solve_ = factory(setting_, samples_, spec_.thermal);
+        part_temperature_(coupled_ ? cavity_coupling(spec_).temperature : 0),
+        samples_count_(samples_.size()) {
     const auto& use = spec_.objectives.use;
+    // temperature_difference: the part's other face across from each sample joins the points
+    // solved for, with no weight (after the samples: their summary is unchanged).
+    if (std::find(use.begin(), use.end(), mold::Objective::TemperatureDifference) != use.end()) {
+      const double reach = 3 * spec_.cavity->wall_thickness;
+      const std::vector<std::optional<geometry::Vec3>> across = across_part(scene, samples_, reach);
+      for (std::size_t i = 0; i < across.size(); ++i) {
+        if (!across[i]) continue;
+        pairs_.push_back({i, samples_.points.size()});
+        samples_.points.push_back(*across[i]);
+        samples_.weights.push_back(0);
+        if (samples_.normals.size() + 1 == samples_.points.size()) samples_.normals.push_back(-samples_.normals[i]);
+      }
+    }
+    solve_ = factory(setting_, samples_, spec_.thermal);
     for (std::size_t k = 0; k < use.size(); ++k)
       if (mold::is_temperature_objective(use[k])) slots_.push_back({use[k], k});
   }
@@ -55,7 +70,11 @@ class TemperatureStage final : public Stage {
     // A genome can decode to no bore at all (a circuit whose waypoints collapse). Nothing then
     // carries the heat away in the models: worse than any layout that cools, not an error.
     constexpr double kNoCooling = std::numeric_limits<double>::infinity();
-    if (channels.empty()) return write({kNoCooling, kNoCooling, kNoCooling, kNoCooling, kNoCooling}, layout, out);
+    if (channels.empty()) {
+      TemperatureObjectives none{kNoCooling, kNoCooling, kNoCooling, kNoCooling, kNoCooling};
+      none.difference = kNoCooling;
+      return write(none, layout, out);
+    }
     // Every number the solve reads of the channels: a child that decodes to a layout solved
     // before gets that solve's objectives (on the plate 1 in 5 of the layouts an ES run solves
     // repeats an earlier one: a move undone by the decoder's snapping, a parent crossed with itself).
@@ -68,12 +87,26 @@ class TemperatureStage final : public Stage {
                       [&] {
                         std::vector<double> t = solve_(channels);
                         follow_cycle(t, spec_);  // coupled: the film of the cycle this layout needs
-                        return temperature_objectives(t, samples_, spec_);
+                        return objectives_of(std::move(t));
                       }),
           layout, out);
   }
 
  private:
+  // The objectives of the samples' temperatures (the points across the part after them).
+  TemperatureObjectives objectives_of(std::vector<double> t) const {
+    std::vector<double> across(t.begin() + std::ptrdiff_t(samples_count_), t.end());
+    t.resize(samples_count_);
+    TemperatureObjectives o = temperature_objectives(t, samples_, spec_);
+    double sum = 0, area = 0;
+    for (const auto& [i, j] : pairs_) {
+      const double w = samples_.weights[i];
+      sum += w * std::abs(t[i] - across[j - samples_count_]), area += w;
+    }
+    if (area > 0) o.difference = sum / area;
+    return o;
+  }
+
   // Under the coupled condition every boundary links to the part (T_p), the coolant or the
   // ambient air: a temperature outside that range is a defect of the tier, and the layout is
   // refused with it rather than scored. A wall at or above the eject temperature is a design the
@@ -109,6 +142,7 @@ class TemperatureStage final : public Stage {
         case mold::Objective::TemperatureStd: v = o.std; break;
         case mold::Objective::TemperatureMax: v = o.max; break;
         case mold::Objective::CycleTime: v = o.cycle_time; break;
+        case mold::Objective::TemperatureDifference: v = o.difference; break;
         case mold::Objective::CostPerPart: {
           const mold::Objectives& s = spec_.objectives;
           v = drilling_cost(layout, s) / s.production->parts + s.production->machine_rate * o.cycle_time / 3600;
@@ -126,6 +160,8 @@ class TemperatureStage final : public Stage {
   thermal::Samples samples_;
   bool coupled_;
   double part_temperature_;
+  std::size_t samples_count_;                              // the samples (the points across after them)
+  std::vector<std::pair<std::size_t, std::size_t>> pairs_;  // sample, the point across the part
   TemperatureSolver solve_;
   ExactCache<std::vector<double>, TemperatureObjectives> solved_{256};
   std::vector<std::pair<mold::Objective, std::size_t>> slots_;

@@ -332,7 +332,8 @@ Objectives parse_objectives(const YamlReader& r, const YAML::Node& n) {
   if (n["scales"]) {
     const YAML::Node& s = n["scales"];
     r.expect_map(s, "objectives.scales", {"uniformity", "worst_covered", "cost", "temperature_mean", "temperature_std",
-                                          "temperature_max", "cycle_time", "cost_per_part"});
+                                          "temperature_max", "cycle_time", "cost_per_part",
+                                          "temperature_difference"});
     auto scale = [&](const char* key, double& into) {
       if (s[key]) into = r.number(s[key], std::string("objectives.scales.") + key, 1e-12, kHuge);
     };
@@ -344,6 +345,7 @@ Objectives parse_objectives(const YamlReader& r, const YAML::Node& n) {
     scale("temperature_max", o.scale_temperature_max);
     scale("cycle_time", o.scale_cycle_time);
     scale("cost_per_part", o.scale_cost_per_part);
+    scale("temperature_difference", o.scale_temperature_difference);
   }
   if (n["target_wall_distance"])
     o.target_wall_distance = parse_length(r, n["target_wall_distance"], "objectives.target_wall_distance");
@@ -635,6 +637,7 @@ std::string to_string(Objective o) {
     case Objective::TemperatureMax: return "temperature_max";
     case Objective::CycleTime: return "cycle_time";
     case Objective::CostPerPart: return "cost_per_part";
+    case Objective::TemperatureDifference: return "temperature_difference";
   }
   return "?";
 }
@@ -642,14 +645,14 @@ std::string to_string(Objective o) {
 std::optional<Objective> objective_named(const std::string& name) {
   for (const auto o : {Objective::Uniformity, Objective::WorstCovered, Objective::Cost, Objective::TemperatureMean,
                        Objective::TemperatureStd, Objective::TemperatureMax, Objective::CycleTime,
-                       Objective::CostPerPart})
+                       Objective::CostPerPart, Objective::TemperatureDifference})
     if (to_string(o) == name) return o;
   return std::nullopt;
 }
 
 bool is_temperature_objective(Objective o) {
   return o == Objective::TemperatureMean || o == Objective::TemperatureStd || o == Objective::TemperatureMax ||
-         o == Objective::CycleTime || o == Objective::CostPerPart;
+         o == Objective::CycleTime || o == Objective::CostPerPart || o == Objective::TemperatureDifference;
 }
 
 std::string to_string(ObjectiveSurface s) { return s == ObjectiveSurface::Heated ? "heated" : "all"; }

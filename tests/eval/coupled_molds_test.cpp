@@ -182,3 +182,23 @@ TEST_CASE("cost_per_part: the drilling cost over the lot plus the machine's time
   CHECK(e.objectives[0] == Approx(e.objectives[2] / 50000 + 0.02 * e.objectives[1]).epsilon(1e-12));
   CHECK(e.objectives[1] > 20);
 }
+
+TEST_CASE("temperature_difference: the core/cavity difference mtcs thermal reports, as an objective", "[eval][coupling]") {
+  // One fixed cycle, so that the pipeline and mtcs thermal solve with the same film.
+  const std::string spec = mtcs_test::bundled_variant(
+      "plate", {{"use: [temperature_std, cycle_time, cost]", "use: [temperature_difference, temperature_std, cost]"},
+                {"cycle: {fill: 1, pack: 3, open: 5}", "cycle: {fill: 1, pack: 3, open: 5, cooling: 15}"}});
+  const run::Session session(spec, run::RunOverrides{});
+  const mold::Scene& scene = session.scene();
+  const mold::Genome genome = session.read_layout(MTCS_SOURCE_DIR + "/molds/plate.layout.yaml");
+  const eval::Evaluation e = session.pipeline().evaluate(genome);
+  const eval::CavityTemperature r =
+      eval::cavity_temperature(scene, mold::decode(scene, genome), eval::thermal_query(scene.spec()));
+  INFO("objective " << e.objectives[0] << " K, mtcs thermal " << r.across.mean << " K over " << r.across.pairs << " pairs");
+  REQUIRE(r.across.pairs > 100);
+  CHECK(r.across.mean > 1);
+  CHECK(e.objectives[0] == Approx(r.across.mean).epsilon(1e-4));
+  // The points across the part leave the samples' own objectives as they were, but for the line
+  // sinks' float rounding (their coordinates and far-field chunks follow the set of points).
+  CHECK(e.objectives[1] == Approx(r.summary.std).epsilon(1e-4));
+}

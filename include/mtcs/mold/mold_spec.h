@@ -111,13 +111,15 @@ enum class Objective {
   TemperatureStd,
   TemperatureMax,
   CycleTime,
-  CostPerPart  // the drilling cost over the lot plus the machine's time per part
+  CostPerPart,           // the drilling cost over the lot plus the machine's time per part
+  TemperatureDifference  // the core/cavity difference across the part's wall (warpage)
 };
 std::string to_string(Objective o);
 // The objective of that name (as to_string spells it), or none.
 std::optional<Objective> objective_named(const std::string& name);
 inline const std::string kObjectiveNames =
-    "uniformity, worst_covered, cost, temperature_mean, temperature_std, temperature_max, cycle_time or cost_per_part";
+    "uniformity, worst_covered, cost, temperature_mean, temperature_std, temperature_max, cycle_time, cost_per_part "
+    "or temperature_difference";
 // Needs a thermal solve (not the tier-0 wall distances).
 bool is_temperature_objective(Objective o);
 
@@ -129,7 +131,8 @@ struct Objectives {
   double scale_uniformity = 5, scale_worst_covered = 20, scale_cost = 1000;                   // mm, mm, cost
   double scale_temperature_mean = 10, scale_temperature_std = 1, scale_temperature_max = 10;  // K
   double scale_cycle_time = 10;                                                               // s
-  double scale_cost_per_part = 0.1;  // the cost units per part
+  double scale_cost_per_part = 0.1;          // the cost units per part
+  double scale_temperature_difference = 1;   // K
   Length target_wall_distance{2.0, true};
   double cost_setup = 20, cost_per_mm = 0.05, cost_deep_factor = 0.02, cost_plug = 5;
   // objectives.production, which cost_per_part needs: the lot the mold makes and what an hour
@@ -151,6 +154,7 @@ struct Objectives {
       case Objective::TemperatureMax: return scale_temperature_max;
       case Objective::CycleTime: return scale_cycle_time;
       case Objective::CostPerPart: return scale_cost_per_part;
+      case Objective::TemperatureDifference: return scale_temperature_difference;
     }
     return 1;
   }
