@@ -74,11 +74,14 @@ Evaluation Pipeline::evaluate(const mold::Layout& layout, bool timed) const {
     stage->run(layout, e);
     e.stages.push_back({stage->name(), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()});
   }
-  // The thermal verdicts count on a layout that can be built: evaluate_if_feasible, which does
-  // not solve for an infeasible one, gives the same violations and CV.
-  const auto thermal = [](const Violation& v) { return is_thermal_verdict(v.kind); };
-  if (!std::all_of(e.violations.begin(), e.violations.end(), thermal))
-    e.violations.erase(std::remove_if(e.violations.begin(), e.violations.end(), thermal), e.violations.end());
+  // A bore through the part has no meaningful temperature: a tier's out-of-bounds result counts
+  // as its defect only on a layout that meets every geometric rule. Ejectability counts always
+  // (dropped, it would let a layout escape it by breaking a clearance a little).
+  const auto geometric = [](const Violation& v) { return !is_thermal_verdict(v.kind); };
+  if (std::any_of(e.violations.begin(), e.violations.end(), geometric))
+    e.violations.erase(std::remove_if(e.violations.begin(), e.violations.end(),
+                                      [](const Violation& v) { return v.kind == ViolationKind::TemperatureBounds; }),
+                       e.violations.end());
   sum_violation(e);
   return e;
 }
@@ -103,8 +106,9 @@ Evaluation Pipeline::evaluate_if_feasible(const mold::Genome& genome) const {
     std::fill(e.objectives.begin(), e.objectives.end(), std::numeric_limits<double>::infinity());
     return e;
   }
-  // evaluate's result bit for bit: the objective stages add only the thermal verdicts, which
-  // evaluate keeps on a layout that meets every other rule (and lists first).
+  // evaluate's result bit for bit for a layout that meets every geometric rule (the objective
+  // stages add only the thermal verdicts, which evaluate lists first). An infeasible one lacks
+  // its eject verdict here: the caller ranks it behind feasible layouts whatever its CV.
   for (std::size_t s = 0; s < objective_stages_; ++s) stages_[s]->run(layout, e);
   sum_violation(e);
   return e;

@@ -104,8 +104,16 @@ void check_same_run(const std::vector<opt::Generation>& a, const std::vector<opt
     ++skipped;
     CHECK_FALSE(s.feasible);
     CHECK_FALSE(f.feasible);
-    CHECK(s.violation == f.violation);
-    CHECK(s.detail == f.detail);
+    // Skipped, a layout lacks its eject verdict (it needs the solve; listed first): the rest as
+    // the full evaluation has it.
+    if (f.detail.rfind("eject ", 0) != 0) {
+      CHECK(s.violation == f.violation);
+      CHECK(s.detail == f.detail);
+    } else {
+      REQUIRE(f.detail.find("; ") != std::string::npos);
+      CHECK(s.violation < f.violation);
+      CHECK(s.detail == f.detail.substr(f.detail.find("; ") + 2));
+    }
     for (const double o : s.objectives) CHECK(std::isinf(o));
   }
   CHECK(skipped >= least_skipped);

@@ -27,10 +27,12 @@ enum class ViolationKind {
                 // the part never sets there
   TemperatureBounds,  // coupled cavity: the tier returned a temperature outside [coldest of
                       // coolant and air, T_p] (or not a number): a defect of the model, the
-                      // layout refused rather than scored
+                      // layout refused rather than scored; only on a layout meeting every
+                      // geometric rule
 };
-// The two thermal verdicts (eject, temperature_bounds) count only on a layout that meets every
-// geometric rule: a bore through the part has no meaningful temperature.
+// The two thermal verdicts (eject, temperature_bounds), from the temperature stage; the second
+// counts only on a layout that meets every geometric rule (a bore through the part has no
+// meaningful temperature).
 bool is_thermal_verdict(ViolationKind kind);
 
 // bore_bore, bore_keepout, bore_cavity, bore_surface, depth_ratio, entry_face, entry_angle,

@@ -46,8 +46,9 @@ class Pipeline {
   // the objective stages (the thermal proxies, the solver) are most of an evaluation's cost.
   Evaluation constraints(const mold::Layout& layout) const;
   // evaluate, but the objectives only for a feasible layout: an infeasible one gets its
-  // violations and CV as evaluate gives them and every objective at +inf, not computed. For
-  // optimisers that rank any infeasible layout behind the feasible ones they hold.
+  // geometric violations and their CV (not the eject verdict, which needs the solve) and every
+  // objective at +inf, not computed. For optimisers that rank any infeasible layout behind the
+  // feasible ones they hold.
   Evaluation evaluate_if_feasible(const mold::Genome& genome) const;
 
   std::vector<std::string> stage_names() const;
