@@ -73,10 +73,11 @@ PartCoupling cavity_coupling(const mold::MoldSpec& spec) {
   return c;
 }
 
-double follow_cycle(std::vector<double>& temperature, const mold::MoldSpec& spec) {
+double follow_cycle(std::vector<double>& temperature, const mold::MoldSpec& spec, std::size_t deciding) {
   const mold::ThermalSpec& t = spec.thermal;
   const double nominal = nominal_cycle(spec).cooling;
-  if (t.cavity_condition != mold::CavityCondition::Coupled || t.cycle.cooling || t.part_film || temperature.empty())
+  deciding = std::min(deciding, temperature.size());
+  if (t.cavity_condition != mold::CavityCondition::Coupled || t.cycle.cooling || t.part_film || deciding == 0)
     return nominal;
   const double s = spec.cavity ? spec.cavity->wall_thickness : mold::Cavity{}.wall_thickness;
   const PartCoupling start = cavity_coupling(spec);
@@ -85,7 +86,9 @@ double follow_cycle(std::vector<double>& temperature, const mold::MoldSpec& spec
     return nominal;
   // The share of a sample at the film x h_0 (below the coolant: left as solved).
   const auto share = [](double r, double x) { return r <= 0 ? r : x * r / (x * r + 1 - r); };
-  const double hottest = std::min(*std::max_element(temperature.begin(), temperature.end()) - coolant, span) / span;
+  const double hottest =
+      std::min(*std::max_element(temperature.begin(), temperature.begin() + std::ptrdiff_t(deciding)) - coolant, span) /
+      span;
   double cooling = nominal, x = 1;
   for (int i = 0; i < 50; ++i) {
     const double wall = coolant + span * share(hottest, x);

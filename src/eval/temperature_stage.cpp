@@ -26,9 +26,11 @@ TemperatureObjectives temperature_objectives(const std::vector<double>& temperat
   // Coupled: the whole cycle, the slowest place (the hottest wall) deciding when to eject.
   if (spec.thermal.cavity_condition == mold::CavityCondition::Coupled)
     cycle += spec.thermal.cycle.fill + spec.thermal.cycle.pack + spec.thermal.cycle.open;
-  TemperatureObjectives o{s.mean, s.std, s.max, s.max, cycle};
-  for (std::size_t i = 0; i < temperature.size(); ++i)
-    if (!(temperature[i] >= o.min)) o.min = temperature[i], o.coldest = samples.points[i];
+  TemperatureObjectives o{s.mean, s.std, s.max, std::numeric_limits<double>::infinity(), cycle};
+  for (std::size_t i = 0; i < temperature.size(); ++i) {
+    if (!std::isfinite(temperature[i])) o.finite = false;
+    else if (temperature[i] < o.min) o.min = temperature[i], o.coldest = samples.points[i];
+  }
   if (!samples.points.empty()) o.hottest = samples.points[s.hottest];
   return o;
 }
@@ -43,6 +45,8 @@ class TemperatureStage final : public Stage {
         samples_(thermal_samples(scene)),
         coupled_(spec_.thermal.cavity_condition == mold::CavityCondition::Coupled),
         part_temperature_(coupled_ ? cavity_coupling(spec_).temperature : 0),
+        bounded_above_(std::none_of(spec_.thermal.regions.begin(), spec_.thermal.regions.end(),
+                                    [](const mold::HeatRegion& r) { return r.flux > 0; })),
         samples_count_(samples_.size()) {
     const auto& use = spec_.objectives.use;
     // temperature_difference: the part's other face across from each sample joins the points
@@ -50,6 +54,10 @@ class TemperatureStage final : public Stage {
     if (std::find(use.begin(), use.end(), mold::Objective::TemperatureDifference) != use.end()) {
       const double reach = 3 * spec_.cavity->wall_thickness;
       const std::vector<std::optional<geometry::Vec3>> across = across_part(scene, samples_, reach);
+      if (std::none_of(across.begin(), across.end(), [](const auto& q) { return q.has_value(); }))
+        throw std::invalid_argument(
+            "temperature_difference needs a part whose faces pair across its wall within 3 wall thicknesses "
+            "(a box or mesh cavity with cavity.wall_thickness near its real walls); none do here");
       for (std::size_t i = 0; i < across.size(); ++i) {
         if (!across[i]) continue;
         pairs_.push_back({i, samples_.points.size()});
@@ -73,7 +81,12 @@ class TemperatureStage final : public Stage {
     if (channels.empty()) {
       TemperatureObjectives none{kNoCooling, kNoCooling, kNoCooling, kNoCooling, kNoCooling};
       none.difference = kNoCooling;
-      return write(none, layout, out);
+      // Coupled, the whole mold goes to the part's temperature: the part never sets.
+      if (coupled_)
+        out.violations.push_back({ViolationKind::Eject, {"cavity"}, part_temperature_,
+                                  spec_.thermal.polymer.eject_temperature, eject_amount(part_temperature_),
+                                  samples_.points.empty() ? geometry::Vec3::Zero() : samples_.points[0], {}});
+      return write(none, layout, out, false);
     }
     // Every number the solve reads of the channels: a child that decodes to a layout solved
     // before gets that solve's objectives (on the plate 1 in 5 of the layouts an ES run solves
@@ -86,7 +99,7 @@ class TemperatureStage final : public Stage {
     write(solved_.get(key,
                       [&] {
                         std::vector<double> t = solve_(channels);
-                        follow_cycle(t, spec_);  // coupled: the film of the cycle this layout needs
+                        follow_cycle(t, spec_, samples_count_);  // coupled: the film of the cycle this layout needs
                         return objectives_of(std::move(t));
                       }),
           layout, out);
@@ -107,34 +120,36 @@ class TemperatureStage final : public Stage {
     return o;
   }
 
+  double eject_amount(double wall) const {
+    const mold::ThermalSpec& t = spec_.thermal;
+    return (wall - t.polymer.eject_temperature) / std::max(t.polymer.eject_temperature - t.coolant_temperature, 1.0);
+  }
+
   // Under the coupled condition every boundary links to the part (T_p), the coolant or the
-  // ambient air: a temperature outside that range is a defect of the tier, and the layout is
-  // refused with it rather than scored. A wall at or above the eject temperature is a design the
-  // part cannot leave. Both count only on a layout that can be built (Pipeline::evaluate).
+  // ambient air (a fixed flux in a region may add heat: then no upper bound): a temperature
+  // outside that range, or not a number, is a defect of the tier, and the layout is refused with
+  // it rather than scored (Pipeline::evaluate counts it on a buildable layout only). A wall at or
+  // above the eject temperature is a design the part cannot leave.
   void check_coupled(const TemperatureObjectives& o, Evaluation& out) const {
     const mold::ThermalSpec& t = spec_.thermal;
     const double coldest = std::min(t.coolant_temperature, t.ambient_temperature);
     const double span = std::max(part_temperature_ - coldest, 1.0);
-    if (!(o.max <= part_temperature_ + kBoundSlack)) {
-      const double over = std::isfinite(o.max) ? o.max - part_temperature_ : span;
+    if (!o.finite)
+      out.violations.push_back({ViolationKind::TemperatureBounds, {"cavity"}, std::nan(""), part_temperature_, 2,
+                                o.hottest, {}});
+    else if (bounded_above_ && o.max > part_temperature_ + kBoundSlack)
       out.violations.push_back({ViolationKind::TemperatureBounds, {"cavity"}, o.max, part_temperature_,
-                                1 + over / span, o.hottest, {}});
-      return;
-    }
-    if (!(o.min >= coldest - kBoundSlack)) {
-      const double under = std::isfinite(o.min) ? coldest - o.min : span;
-      out.violations.push_back({ViolationKind::TemperatureBounds, {"cavity"}, o.min, coldest, 1 + under / span,
-                                o.coldest, {}});
-      return;
-    }
-    const double eject = t.polymer.eject_temperature;
-    if (o.max >= eject)
-      out.violations.push_back({ViolationKind::Eject, {"cavity"}, o.max, eject,
-                                (o.max - eject) / std::max(eject - t.coolant_temperature, 1.0), o.hottest, {}});
+                                1 + (o.max - part_temperature_) / span, o.hottest, {}});
+    else if (o.min < coldest - kBoundSlack)
+      out.violations.push_back({ViolationKind::TemperatureBounds, {"cavity"}, o.min, coldest,
+                                1 + (coldest - o.min) / span, o.coldest, {}});
+    if (o.max >= t.polymer.eject_temperature)
+      out.violations.push_back({ViolationKind::Eject, {"cavity"}, o.max, t.polymer.eject_temperature,
+                                eject_amount(o.max), o.hottest, {}});
   }
 
-  void write(const TemperatureObjectives& o, const mold::Layout& layout, Evaluation& out) const {
-    if (coupled_ && !std::isinf(o.mean)) check_coupled(o, out);
+  void write(const TemperatureObjectives& o, const mold::Layout& layout, Evaluation& out, bool solved = true) const {
+    if (coupled_ && solved) check_coupled(o, out);
     for (const auto& [objective, slot] : slots_) {
       double& v = out.objectives[slot];
       switch (objective) {
@@ -160,6 +175,7 @@ class TemperatureStage final : public Stage {
   thermal::Samples samples_;
   bool coupled_;
   double part_temperature_;
+  bool bounded_above_;  // no region adds a fixed flux: nothing can heat the steel above T_p
   std::size_t samples_count_;                              // the samples (the points across after them)
   std::vector<std::pair<std::size_t, std::size_t>> pairs_;  // sample, the point across the part
   TemperatureSolver solve_;

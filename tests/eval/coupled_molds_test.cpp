@@ -123,7 +123,8 @@ TEST_CASE("coupled cavity: a wall the part cannot set against is infeasible, wit
   CHECK((v.where - r.hottest).norm() < 1e-9);
   CHECK(v.amount == Approx((r.summary.max - 90) / (90 - 40)).epsilon(1e-9));
   CHECK(e.violation == Approx(v.amount * v.amount));
-  // The path that skips the solve for a layout that cannot be built gives the same score.
+  // The optimiser's shortcut (no solve for a layout it cannot build) solves this buildable one:
+  // the same score.
   const eval::Evaluation skipped = session.pipeline().evaluate_if_feasible(genome);
   CHECK(skipped.violation == e.violation);
   CHECK(skipped.objectives == e.objectives);
@@ -136,6 +137,11 @@ TEST_CASE("coupled cavity: a wall the part cannot set against is infeasible, wit
   REQUIRE(b.violations.size() >= 2);
   CHECK(b.violations[0].kind == eval::ViolationKind::Eject);
   CHECK(bs.violations.size() == b.violations.size() - 1);
+  // No bore at all: the mold goes to the part's temperature, and the part never sets.
+  const eval::Evaluation none = session.pipeline().evaluate(mold::Genome{});
+  REQUIRE(none.violations.size() == 1);
+  CHECK(none.violations[0].kind == eval::ViolationKind::Eject);
+  CHECK(none.violations[0].distance == t.polymer.melt_temperature);
   CHECK(bs.violation == Approx(b.violation - b.violations[0].amount * b.violations[0].amount));
 }
 
@@ -203,4 +209,13 @@ TEST_CASE("temperature_difference: the core/cavity difference mtcs thermal repor
   // The points across the part leave the samples' own objectives as they were, but for the line
   // sinks' float rounding (their coordinates and far-field chunks follow the set of points).
   CHECK(e.objectives[1] == Approx(r.summary.std).epsilon(1e-4));
+  // With the cycle followed (the bundled plate's), the samples alone still decide it.
+  const run::Session followed(mtcs_test::bundled_variant("plate", "use: [temperature_std, cycle_time, cost]",
+                                                         "use: [temperature_std, cycle_time, temperature_difference]"),
+                              run::RunOverrides{});
+  const run::Session bundled(MTCS_SOURCE_DIR + "/molds/plate.yaml", run::RunOverrides{});
+  const eval::Evaluation f = followed.pipeline().evaluate(genome), b = bundled.pipeline().evaluate(genome);
+  CHECK(f.objectives[0] == Approx(b.objectives[0]).epsilon(1e-4));
+  CHECK(f.objectives[1] == Approx(b.objectives[1]).epsilon(1e-6));
+  CHECK(f.objectives[2] > 1);
 }

@@ -68,10 +68,12 @@ PartCoupling cavity_coupling(const mold::MoldSpec& spec);
 // behind a film h to T_p: its share r = (T - T_c) / (T_p - T_c) = h / (h + G) fixes G, and a
 // film x h gives r' = x r / (x r + 1 - r). The hottest sample stays the hottest; its cooling
 // time sets the cycle, the cycle the film, until the cooling time moves by less than 0.1 %.
-// `temperature` (at the samples, solved with the nominal film) becomes that film's. Nothing
+// `temperature` (solved with the nominal film) becomes that film's; its first `deciding` values
+// (the samples; the rest, points across the part, follow) set the hottest. Samples in a fixed-
+// flux region are rescaled as well: an approximation where regions meet the cavity. Nothing
 // changes unless the cavity is coupled with a derived film and cycle (no thermal.part_film,
 // no thermal.cycle.cooling); the answer stands at the last film once the wall is too hot to
 // eject. Returns the cooling time (s).
-double follow_cycle(std::vector<double>& temperature, const mold::MoldSpec& spec);
+double follow_cycle(std::vector<double>& temperature, const mold::MoldSpec& spec, std::size_t deciding);
 
 }  // namespace mtcs::eval

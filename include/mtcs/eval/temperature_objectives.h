@@ -27,6 +27,7 @@ struct TemperatureObjectives {
                                       // fill, pack and open, the whole cycle)
   geometry::Vec3 hottest = geometry::Vec3::Zero();  // mm: where max is
   geometry::Vec3 coldest = geometry::Vec3::Zero();  // mm: where min is
+  bool finite = true;     // every temperature a number (a tier's defect otherwise)
   double difference = 0;  // K: the area-weighted mean |T - T across the part's wall| over the
                           // samples paired with the part's other face (eval::across_part)
 };
