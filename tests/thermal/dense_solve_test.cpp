@@ -84,35 +84,3 @@ TEST_CASE("dense solve: a singular system gives non-finite values, not a wrong a
   CHECK_FALSE(x.allFinite());
 }
 
-// Hidden: the plate's system size, best of 200 solves, this LU against Eigen's partialPivLu.
-TEST_CASE("dense solve: best time at n = 331", "[.bench][dense_solve]") {
-  const MatrixXd A = random_system(331, 9);
-  const VectorXd b = VectorXd::LinSpaced(331, -1, 2);
-  const double ours = 1e-3 * best_us(A, 200, [&](MatrixXd& w) { return mtcs::thermal::solve_dense(w, b); });
-  const double eigen = 1e-3 * best_us(A, 200, [&](MatrixXd& w) { return VectorXd(w.partialPivLu().solve(b)); });
-  std::printf("dense solve n=331, best of 200: solve_dense %.3f ms, Eigen partialPivLu %.3f ms\n", ours, eigen);
-  // Out of cache, as in a child's evaluation: 40 different systems (35 MB) in turn, mean.
-  std::vector<MatrixXd> many;
-  for (int i = 0; i < 40; ++i) many.push_back(random_system(331, 100u + unsigned(i)));
-  auto cold_ms = [&](auto&& solve) {
-    const auto t0 = std::chrono::steady_clock::now();
-    for (int r = 0; r < 5; ++r)
-      for (MatrixXd w : many) REQUIRE(solve(w).allFinite());
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / 200;
-  };
-  for (int r = 0; r < 2; ++r)
-    std::printf("out of cache, mean of 200 (copy included): solve_dense %.3f ms, Eigen %.3f ms\n",
-                cold_ms([&](MatrixXd& w) { return mtcs::thermal::solve_dense(w, b); }),
-                cold_ms([&](MatrixXd& w) { return VectorXd(w.partialPivLu().solve(b)); }));
-}
-
-// Hidden: the sizes of a few bores' systems (T2d, 12 unknowns per bore), best of 2 000.
-TEST_CASE("dense solve: best time at n = 40 and 80", "[.bench][dense_solve]") {
-  for (int n : {40, 80}) {
-    const MatrixXd A = random_system(n, 9);
-    const VectorXd b = VectorXd::LinSpaced(n, -1, 2);
-    std::printf("dense solve n=%d, best of 2000: solve_dense %.2f us, blocked %.2f us\n", n,
-                best_us(A, 2000, [&](MatrixXd& w) { return mtcs::thermal::solve_dense(w, b); }),
-                best_us(A, 2000, [&](MatrixXd& w) { return mtcs::thermal::solve_dense_blocked(w, b); }));
-  }
-}

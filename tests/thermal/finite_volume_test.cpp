@@ -448,29 +448,6 @@ TEST_CASE("finite volume: heat through a cavity void's wall matches the same hea
   }
 }
 
-// The error-versus-cost table of experiments/thermal/fv.md: run by hand, it prints CSV.
-TEST_CASE("finite volume: error against run time on the reference block", "[.fv-table]") {
-  const Reference ref = patch_samples();
-  std::cout << "cell_mm,steel_cells,seconds,solver_seconds,iterations,rms_K,max_K,dmean_K,dstd_K,spearman,"
-               "heat_in_W,"
-               "to_channels_W,to_faces_W,balance_rel\n";
-  // MTCS_FV_PRECONDITIONER=jacobi compares the preconditioners; unset, the default (ic).
-  const char* choice = std::getenv("MTCS_FV_PRECONDITIONER");
-  const std::string preconditioner = choice ? choice : "";
-  for (double cell : {4.0, 3.0, 2.0, 1.5, 1.0, 0.75}) {
-    FvOptions options;
-    options.cell = cell;
-    if (preconditioner == "ic") options.preconditioner = FvPreconditioner::IncompleteCholesky;
-    if (preconditioner == "jacobi") options.preconditioner = FvPreconditioner::Jacobi;
-    const FvResult r = solve_finite_volume(block_case(), ref.samples, options);
-    const Errors e = compare(r.temperature, ref);
-    std::cout << cell << ',' << r.steel_cells << ',' << r.seconds << ',' << r.solver_seconds << ','
-              << r.iterations << ',' << e.rms << ',' << e.max << ',' << e.mean << ',' << e.std << ','
-              << e.spearman << ',' << r.heat_in << ',' << r.heat_to_channels << ',' << r.heat_to_faces << ','
-              << balance_error(r) << std::endl;
-  }
-}
-
 TEST_CASE("finite volume: models and options it cannot solve are rejected", "[fv]") {
   const Samples none;
   CHECK_THROWS_AS(solve_finite_volume(block_case(), none, {0.0}), std::invalid_argument);

@@ -224,56 +224,6 @@ TEST_CASE("triangle potential: the one-atan2 solid angle against two atans per e
   CHECK(errors[errors.size() / 2] < 1e-13);
 }
 
-// The float slot kernel alone (hidden: a measurement): 720 targets x 6 image slots, 4 elements.
-TEST_CASE("element fields: float slot kernel, best time", "[.bench]") {
-  using namespace mtcs::thermal;
-  Channel ch;
-  ch.axis = {Vec3(0, 40, 45), Vec3(120, 40, 45)};
-  ch.radius = 5;
-  const ChannelAxis axis = channel_axis(ch, 4);
-  const std::size_t T = 720;
-  const int slots = 6;
-  std::mt19937 rng(1);
-  std::uniform_real_distribution<float> u(-60, 60);
-  std::vector<float> x(T * slots), y(T * slots), z(T * slots), w(T * slots, 1.0f);
-  for (std::size_t i = 0; i < x.size(); ++i) x[i] = u(rng), y[i] = u(rng), z[i] = u(rng);
-  std::vector<float> out(T * 12);
-  double best = 1e9, sum = 0;
-  for (int i = 0; i < 3000; ++i) {
-    std::fill(out.begin(), out.end(), 0.0f);
-    const auto t0 = std::chrono::steady_clock::now();
-    element_fields_float_slots(axis, Vec3(60, 40, 30), 3, x.data(), y.data(), z.data(), w.data(), T, slots, out.data());
-    best = std::min(best, std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
-  }
-  for (float v : out) sum += v;
-  std::printf("slot kernel best %.2f us (checksum %.6g)\n", best, sum);
-  // The same points moved 400 mm off, every chunk far: the expansions alone.
-  for (std::size_t i = 0; i < x.size(); ++i) z[i] += 400;
-  std::vector<float> box;
-  const std::size_t chunk = 16, chunks = T / chunk;
-  for (int j = 0; j < slots; ++j)
-    for (std::size_t c = 0; c < chunks; ++c) {
-      float b[6] = {1e30f, 1e30f, 1e30f, -1e30f, -1e30f, -1e30f};
-      for (std::size_t t = c * chunk; t < (c + 1) * chunk; ++t) {
-        const std::size_t k = j * T + t;
-        const float p[3] = {x[k], y[k], z[k]};
-        for (int a = 0; a < 3; ++a) b[a] = std::min(b[a], p[a]), b[3 + a] = std::max(b[3 + a], p[a]);
-      }
-      box.insert(box.end(), b, b + 6);
-    }
-  const FarChunks far{box.data(), chunk, 0.3f};
-  for (const FarChunks* f : {(const FarChunks*)nullptr, &far}) {
-    best = 1e9;
-    for (int i = 0; i < 3000; ++i) {
-      std::fill(out.begin(), out.end(), 0.0f);
-      const auto t0 = std::chrono::steady_clock::now();
-      element_fields_float_slots(axis, Vec3(60, 40, 30), 3, x.data(), y.data(), z.data(), w.data(), T, slots, out.data(), f);
-      best = std::min(best, std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
-    }
-    std::printf("all points far, %s: best %.2f us\n", f ? "expansions" : "closed forms", best);
-  }
-}
-
 // The far expansion (element_fields_float with FarChunks) against the double closed forms: at
 // points whose distance from every element's centre is h / q or more, q up to the ratio, the
 // error stays inside the stated bound (sink q^8/9, dipole 5 q^8, over 1 - q^2) plus float
