@@ -24,8 +24,6 @@ using mtcs::geometry::Segment;
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 // The block case of block3d_case.txt, in mm / W / degC.
 Setting block_setting() {
   Setting s;
