@@ -108,6 +108,7 @@ struct Tier {
   int elements = 0;      // line sinks
   double cell = 0;       // fd
   double void_panel = 0; // line sinks: the part's void as panels this wide (mm; 0: none)
+  int sample_images = 0;  // line sinks: image levels summed exactly at the samples (0: the model's choice)
 };
 
 struct Row {
@@ -197,6 +198,7 @@ Scored score_line_sinks(const Case& c, const Tier& tier, int repeat) {
   options.tier = tier.name == "t1" ? thermal::Tier::T1 : tier.name == "t2" ? thermal::Tier::T2 : thermal::Tier::T2d;
   options.elements = tier.elements;
   options.void_panel = tier.void_panel;
+  if (tier.sample_images > 0) options.sample_images = tier.sample_images;
   const thermal::LineSinkModel model(c.setting, c.samples, options);
   Scored s;
   for (const auto& layout : c.layouts) {
@@ -264,7 +266,9 @@ std::string label(const Tier& t) {
   else if (t.void_panel > 0) std::snprintf(buf, sizeof buf, "%s M=%d void %g mm", t.name.c_str(), t.elements, t.void_panel);
   else if (t.elements > 0) std::snprintf(buf, sizeof buf, "%s M=%d", t.name.c_str(), t.elements);
   else return t.name;
-  return buf;
+  std::string s = buf;
+  if (t.sample_images > 0) s += " S=" + std::to_string(t.sample_images);
+  return s;
 }
 
 }  // namespace
@@ -291,6 +295,15 @@ int bench_thermal(const ThermalBenchOptions& o) {
   if (films && (c.setting.cavity_mesh || c.setting.cavity_box)) {
     std::erase_if(tiers, [](const Tier& t) { return t.name != "t0" && t.name != "fd" && t.void_panel == 0; });
     std::cerr << "  the coupled cavity: the line sinks with the void's panels only\n";
+  }
+  for (const int levels : o.sample_images) {
+    const std::size_t n = tiers.size();
+    for (std::size_t i = 0; i < n; ++i)
+      if (tiers[i].name != "t0" && tiers[i].name != "fd") {
+        Tier t = tiers[i];
+        t.sample_images = levels;
+        tiers.push_back(t);
+      }
   }
   if (!o.tiers.empty())  // only those asked for, by the start of their labels
     std::erase_if(tiers, [&](const Tier& t) {

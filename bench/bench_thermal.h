@@ -18,7 +18,9 @@ struct ThermalBenchOptions {
   std::vector<double> void_panels{6, 10};
   int circuits = 3;            // per random layout of a mold (4 legs each)
   bool through_part = false;
-  std::vector<std::string> tiers;  // labels' starts ("t2d M=4", "fd"); empty: every tier   // keep the random layouts that drill through the part  // mm: t2d M=4 with the void (mesh cavities only)
+  std::vector<std::string> tiers;  // labels' starts ("t2d M=4", "fd"); empty: every tier
+  std::vector<int> sample_images;  // also every line-sink tier with this many image levels summed
+                                   // exactly at the samples (LineSinkOptions::sample_images)
 };
 
 // Prints one row per tier: CSV on stdout, or a JSON object with default_tier and tiers.

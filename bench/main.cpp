@@ -201,6 +201,10 @@ int run(int argc, char** argv) {
                     "a mold: keep the random layouts whose bores cross the part (by default only those clear of it)");
   thermal->add_option("--tiers", to->tiers, "only the tiers whose labels start so, comma-separated (e.g. \"t0,t2d M=4\")")
       ->delimiter(',');
+  thermal->add_option("--sample-images", to->sample_images,
+                      "also every line-sink tier with this many image levels summed exactly at the samples "
+                      "(label ends S=N; the model chooses otherwise)")
+      ->delimiter(',')->check(CLI::Range(1, 4));
   thermal->add_flag("--json", to->json, "one JSON object instead of CSV");
 
   auto ao = std::make_shared<AccessMapBenchOptions>();

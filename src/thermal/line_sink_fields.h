@@ -3,6 +3,7 @@
 // lattice, and the fields of all elements of one channel at a point (shared distances).
 
 #include <array>
+#include <cmath>
 #include <span>
 #include <vector>
 
@@ -23,6 +24,22 @@ struct Image {
 // face_sign: +1 (adiabatic or convective) or -1 (isothermal) per BlockFace.
 std::vector<Image> block_images(const Box& block, const std::array<double, 6>& face_sign,
                                 int levels);
+
+// The far images of the block, each seen as a point charge and dipole at the image of its
+// centre c: (sum sigma / d, sum sigma L_g (s - g(c)) / d^3), d = |s - g(c)|. Dotted with the
+// charge and first moment (about c) of everything in the block, then divided by 4 pi k, it is
+// the far lattice's field at s.
+inline Eigen::Vector4d far_lattice_kernel(std::span<const Image> far, const Vec3& center, const Vec3& s) {
+  Eigen::Vector4d k = Eigen::Vector4d::Zero();
+  for (const Image& g : far) {
+    const Vec3 d = s - (g.mult.cwiseProduct(center) + g.offset);
+    const double r2 = d.squaredNorm();
+    const double inv = 1 / std::sqrt(r2);
+    k[0] += g.sign * inv;
+    k.tail<3>() += (g.sign * inv / r2) * g.mult.cwiseProduct(d);
+  }
+  return k;
+}
 
 struct WeightedPoint {
   Vec3 point;

@@ -208,20 +208,11 @@ struct LineSinkModel::Impl {
     }
   }
 
-  // The far images of the block, each seen as a point charge and dipole at its centre:
-  // (sum sigma / d, sum sigma L_g (s - g(c)) / d^3) / (4 pi k), d = |s - g(c)|. Dotted with the
-  // charge and first moment (about c) of everything in the block, it is the far lattice's field.
+  // The far lattice's kernel over 4 pi k (line_sink_fields.h): dotted with the charge and first
+  // moment (about `center`) of everything in the block, the far images' field.
   Eigen::Vector4d far_kernel(const Vec3& s) const { return far_kernel(s, far_images); }
   Eigen::Vector4d far_kernel(const Vec3& s, std::span<const Image> far) const {
-    Eigen::Vector4d k = Eigen::Vector4d::Zero();
-    for (const Image& g : far) {
-      const Vec3 d = s - (g.mult.cwiseProduct(center) + g.offset);
-      const double r2 = d.squaredNorm();
-      const double inv = 1 / std::sqrt(r2);
-      k[0] += g.sign * inv;
-      k.tail<3>() += (g.sign * inv / r2) * g.mult.cwiseProduct(d);
-    }
-    return k * inv4pik;
+    return far_lattice_kernel(far, center, s) * inv4pik;
   }
 
   // The wall points of element e: m +- R n1, m +- R n2.

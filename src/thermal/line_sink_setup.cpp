@@ -7,10 +7,12 @@
 #include <deque>
 #include <mutex>
 #include <numbers>
+#include <numeric>
 #include <stdexcept>
 
 #include <tbb/parallel_for.h>
 
+#include "heat_source_tree.h"
 #include "line_sink_model.h"
 
 namespace mtcs::thermal {
@@ -23,6 +25,10 @@ constexpr double kInf = kInfiniteFilm;
 // 0.005 K (ribbed_box's max; experiments/thermal/heat_tree.md), its model built in 3.2 s
 // instead of 35 s.
 constexpr double kHeatTreeTheta = 0.15;
+// far_lattice_misfit above which the samples sum every exact level: the bundled molds measure
+// 0.07-2.2 %, the channel row of experiments/thermal/published_menges 34 % (its temperatures
+// along the bores 32-49 C with one level, 37.5-39.7 C with two; T3 37.4-39.5 C).
+constexpr double kFarMisfitBound = 0.05;
 
 // f(p, values) for every node p of g, with the node's g.fields values to write; rows of nodes in
 // parallel. Each node's values are its own: the table is the same whatever the threads. The
@@ -161,6 +167,51 @@ std::shared_ptr<const VoidSurface> kept_void(const Setting& setting, const std::
   return v;
 }
 
+// How far the far lattice's charge and dipole miss the heated wall's own images at the samples,
+// relative to the wall's range of potential there: the wall at unit flux (its geometry alone),
+// exact to `levels` against exact to `near` plus the lattice of `far` (its uniform part left out:
+// the free constant or the faces take it). Near 0 when the sources are compact within the block
+// (the reference block: 0.5 %); large when they reach two faces, as a cavity over a whole face
+// (the channel row of experiments/thermal/published_menges: 34 %), where the bores' images past
+// the edges lie beside the samples and must be summed exactly too.
+constexpr std::size_t kMisfitSamples = 256;
+double far_lattice_misfit(const Setting& setting, const Samples& samples, const Box& box,
+                          const std::array<double, 6>& sign, int near, int levels) {
+  std::vector<HeatedTriangle> wall;
+  for (const HeatedTriangle& t : setting.heat_in)
+    if (t.heats()) wall.push_back({t.a, t.b, t.c, 1.0});
+  if (wall.empty() || samples.size() == 0 || levels <= near) return 0;
+  const HeatSourceTree tree(wall, kHeatTreeTheta);
+  const Vec3 center = 0.5 * (box.min + box.max);
+  Eigen::Vector4d moments = Eigen::Vector4d::Zero();
+  for (const HeatedTriangle& t : wall) {
+    const double area = 0.5 * (t.b - t.a).cross(t.c - t.a).norm();
+    moments[0] += area;
+    moments.tail<3>() += area * ((t.a + t.b + t.c) / 3 - center);
+  }
+  const std::vector<Image> exact = block_images(box, sign, levels), nearer = block_images(box, sign, near);
+  std::vector<Image> far = block_images(box, sign, levels);
+  far.erase(far.begin(), far.begin() + std::ptrdiff_t(nearer.size()));
+  const auto sum = [&](std::span<const Image> of, const Vec3& p) {
+    double v = 0;
+    for (const Image& g : of) v += g.sign * tree.potential(g.mult.cwiseProduct(p) + g.offset);
+    return v;
+  };
+  // Every k-th sample: the misfit is a property of the geometry, not of one sample.
+  const std::size_t stride = (samples.size() + kMisfitSamples - 1) / kMisfitSamples, n = (samples.size() + stride - 1) / stride;
+  std::vector<double> truth(n), miss(n);
+  for_each_index(n, [&](std::size_t s) {
+    const Vec3& p = samples.points[s * stride];
+    truth[s] = sum(exact, p);
+    miss[s] = truth[s] - sum(nearer, p) - far_lattice_kernel(far, center, p).dot(moments);
+  });
+  const double mean = std::accumulate(miss.begin(), miss.end(), 0.0) / double(n);
+  double worst = 0;
+  for (const double d : miss) worst = std::max(worst, std::abs(d - mean));
+  const auto [lo, hi] = std::minmax_element(truth.begin(), truth.end());
+  return *hi > *lo ? worst / (*hi - *lo) : 0;
+}
+
 }  // namespace
 
 void LineSinkModel::Impl::build_robin_fields(const std::vector<Vec3>& face_points, const MatrixXd& d) {
@@ -235,8 +286,11 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
   }
   m.center = 0.5 * (box.min + box.max);
   // At the samples (the bulk of the work) fewer images may be summed exactly, the rest as the
-  // far lattice's charge and dipole.
-  const int sample_levels = options.sample_images < 0 ? options.images : std::min(options.sample_images, options.images);
+  // far lattice's charge and dipole; all of them where that lattice misses the heated wall.
+  int sample_levels = options.sample_images < 0 ? options.images : std::min(options.sample_images, options.images);
+  if (options.sample_images == 0)
+    sample_levels = far_lattice_misfit(setting, samples, box, sign, 1, options.images) > kFarMisfitBound ? options.images
+                                                                                                       : std::min(1, options.images);
   const std::vector<Image> sample_images = block_images(box, sign, sample_levels);
   std::vector<Image> sample_far;
   if (options.far_images > sample_levels) {

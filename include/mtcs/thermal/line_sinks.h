@@ -41,8 +41,10 @@ struct LineSinkOptions {
   int images = 2;       // reflection levels summed exactly: 1 = the six faces, 2 = also the
                         // double reflections (edges, and the translations by twice the block)
   int far_images = 6;   // up to this level, the farther images as the block's charge + dipole
-  int sample_images = 1;   // levels summed exactly at the samples (at most `images`); fewer is
-                           // cheaper, the rest joins the far lattice there
+  int sample_images = 0;   // levels summed exactly at the samples (at most `images`; -1: all);
+                           // fewer is cheaper, the rest joins the far lattice there. 0: one,
+                           // or all where the far lattice misses the heated wall's own images
+                           // at the samples by over 5 % (a cavity reaching two faces)
   int face_grid = 4;    // face_grid^2 points per convective face for its mean temperature
   bool single_precision = true;  // the per-channel columns at the samples in float
   double far_expansion = 0.35;   // at samples and face points whose chunk lies h / this or
