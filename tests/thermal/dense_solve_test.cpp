@@ -1,4 +1,4 @@
-// The line-sink system's dense solve (src/thermal/dense_solve.cpp) against a second method,
+// The line-sink system's dense solve (src/thermal/linalg/dense_solve.cpp) against a second method,
 // Eigen's full-pivoting LU, on random systems of the sizes the models produce (a few bores: n ~
 // 40; the plate: n = 331), and its determinism: the same system solved twice gives the same bits.
 #include <catch2/catch.hpp>
@@ -10,7 +10,7 @@
 #include <random>
 #include <vector>
 
-#include "thermal/dense_solve.h"
+#include "thermal/linalg/dense_solve.h"
 
 using Eigen::MatrixXd;
 using Eigen::VectorXd;

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "support/random_draws.h"
-#include "thermal/heat_source_tree.h"
+#include "thermal/kernels/heat_source_tree.h"
 
 using namespace mtcs::thermal;
 using mtcs_test::draw_vec3;

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "thermal/segment_potential.h"
-#include "thermal/line_sink_fields.h"
+#include "thermal/kernels/segment_potential.h"
+#include "thermal/kernels/line_sink_fields.h"
 #include <chrono>
 #include <random>
 #include <vector>

@@ -1,11 +1,11 @@
-// The void's tall-times-few-columns product (src/thermal/skinny_product.cpp) against the same
+// The void's tall-times-few-columns product (src/thermal/linalg/skinny_product.cpp) against the same
 // product in double precision (Eigen), over shapes with every row and column remainder.
 
 #include <catch2/catch.hpp>
 
 #include <Eigen/Dense>
 
-#include "thermal/skinny_product.h"
+#include "thermal/linalg/skinny_product.h"
 
 using Eigen::MatrixXd;
 using Eigen::MatrixXf;

@@ -1,4 +1,4 @@
-// The part's void for the line sinks (src/thermal/void_surface.h) against closed forms: a
+// The part's void for the line sinks (src/thermal/cavity/void_surface.h) against closed forms: a
 // sphere's void in an unbounded body.
 #include <catch2/catch.hpp>
 
@@ -8,8 +8,8 @@
 #include <numbers>
 #include <vector>
 
-#include "thermal/line_sink_fields.h"
-#include "thermal/void_surface.h"
+#include "thermal/kernels/line_sink_fields.h"
+#include "thermal/cavity/void_surface.h"
 #include "thermal/cup_void.h"
 #include "mtcs/thermal/finite_volume.h"
 #include "mtcs/thermal/line_sinks.h"

@@ -235,7 +235,7 @@ struct ThermalSpec {
   ObjectiveSurface objective_surface = ObjectiveSurface::Heated;
   // thermal.cavity_void: plane: the line-sink tiers cut the block at a box cavity's most heated
   // face (mtcs/thermal/void_plane.h); surface (a mesh cavity's default): the cavity's wall as
-  // panels void_panel mm wide (thermal.void_panel; src/thermal/void_surface.h); ignore (a box
+  // panels void_panel mm wide (thermal.void_panel; src/thermal/cavity/void_surface.h); ignore (a box
   // cavity's default): they see no void.
   bool void_plane = false;
   double void_panel = 0;  // mm; 0: no void surface

@@ -59,7 +59,7 @@ struct LineSinkOptions {
                         // as its multipole expansion to P6 (q <= 1 / (2 pair_far); 0: every
                         // block exact; with single_precision only, the double path stays exact)
   double void_panel = 0;  // mm: > 0 with a cavity (mesh or box): the part's void as a surface of
-                          // panels this wide (src/thermal/void_surface.h); 0: the void is steel
+                          // panels this wide (src/thermal/cavity/void_surface.h); 0: the void is steel
 };
 
 // The per-channel and per-pair influence blocks of recent evaluations, keyed by the exact
@@ -77,12 +77,12 @@ class LineSinkCache {
   std::size_t channels_computed = 0;  // columns computed (misses), over the cache's life
   std::size_t channels_reused = 0;    // hits
   void clear();
-  struct ChannelBlock;  // defined inside the module (src/thermal/line_sink_model.h)
+  struct ChannelBlock;  // defined inside the module (src/thermal/line_sinks/line_sink_model.h)
   struct PairBlock;
 
  private:
   friend class LineSinkModel;
-  struct Tables;  // the blocks by key (src/thermal/line_sinks.cpp)
+  struct Tables;  // the blocks by key (src/thermal/line_sinks/line_sinks.cpp)
   std::unique_ptr<Tables> tables_;
   std::size_t budget_;
   std::size_t bytes_ = 0;  // held by the channels' and pairs' blocks

@@ -1,4 +1,4 @@
-#include "heat_source_tree.h"
+#include "thermal/kernels/heat_source_tree.h"
 
 #include <algorithm>
 #include <cmath>

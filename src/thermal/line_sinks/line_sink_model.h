@@ -13,10 +13,10 @@
 #include <optional>
 #include <vector>
 
-#include "heat_source_tree.h"
-#include "line_sink_fields.h"
-#include "line_sink_tables.h"
-#include "void_surface.h"
+#include "thermal/kernels/heat_source_tree.h"
+#include "thermal/kernels/line_sink_fields.h"
+#include "thermal/line_sinks/line_sink_tables.h"
+#include "thermal/cavity/void_surface.h"
 #include "mtcs/thermal/line_sinks.h"
 
 namespace mtcs::thermal {

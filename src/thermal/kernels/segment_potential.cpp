@@ -1,4 +1,4 @@
-#include "segment_potential.h"
+#include "thermal/kernels/segment_potential.h"
 
 #include <cmath>
 

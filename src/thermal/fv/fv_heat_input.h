@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "fv_grid.h"
+#include "thermal/fv/fv_grid.h"
 
 namespace mtcs::thermal::fv {
 

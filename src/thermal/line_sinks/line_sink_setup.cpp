@@ -12,8 +12,8 @@
 
 #include <tbb/parallel_for.h>
 
-#include "heat_source_tree.h"
-#include "line_sink_model.h"
+#include "thermal/kernels/heat_source_tree.h"
+#include "thermal/line_sinks/line_sink_model.h"
 
 namespace mtcs::thermal {
 

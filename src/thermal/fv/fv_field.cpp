@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "fv_grid.h"
+#include "thermal/fv/fv_grid.h"
 #include "mtcs/thermal/finite_volume.h"
 
 namespace mtcs::thermal {

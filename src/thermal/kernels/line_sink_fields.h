@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "mtcs/thermal/model.h"
-#include "segment_potential.h"
+#include "thermal/kernels/segment_potential.h"
 
 namespace mtcs::thermal {
 

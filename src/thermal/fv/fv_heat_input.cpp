@@ -1,11 +1,11 @@
-#include "fv_heat_input.h"
+#include "thermal/fv/fv_heat_input.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "fv_geometry.h"
+#include "thermal/fv/fv_geometry.h"
 
 namespace mtcs::thermal::fv {
 

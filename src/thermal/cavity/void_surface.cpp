@@ -1,4 +1,4 @@
-#include "void_surface.h"
+#include "thermal/cavity/void_surface.h"
 
 #include <algorithm>
 #include <array>
@@ -10,8 +10,8 @@
 
 #include <tbb/parallel_for.h>
 
-#include "cpu_features.h"
-#include "skinny_product.h"
+#include "thermal/kernels/cpu_features.h"
+#include "thermal/linalg/skinny_product.h"
 
 namespace mtcs::thermal {
 

@@ -13,7 +13,7 @@
 #include <Eigen/Dense>
 
 #include "mtcs/thermal/model.h"
-#include "segment_potential.h"
+#include "thermal/kernels/segment_potential.h"
 
 namespace mtcs::thermal {
 

@@ -1,11 +1,11 @@
-#include "fv_grid.h"
+#include "thermal/fv/fv_grid.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "fv_geometry.h"
+#include "thermal/fv/fv_geometry.h"
 #include "mtcs/mesh/bvh.h"
 
 namespace mtcs::thermal::fv {

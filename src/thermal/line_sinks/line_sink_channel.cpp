@@ -3,8 +3,8 @@
 
 #include <algorithm>
 
-#include "line_sink_model.h"
-#include "skinny_product.h"
+#include "thermal/line_sinks/line_sink_model.h"
+#include "thermal/linalg/skinny_product.h"
 
 namespace mtcs::thermal {
 

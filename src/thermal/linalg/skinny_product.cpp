@@ -1,10 +1,10 @@
-#include "skinny_product.h"
+#include "thermal/linalg/skinny_product.h"
 
 #include <immintrin.h>
 
 #include <stdexcept>
 
-#include "cpu_features.h"
+#include "thermal/kernels/cpu_features.h"
 
 namespace mtcs::thermal {
 

@@ -3,8 +3,8 @@
 // the grids the model builds (1, 2, 4, 5, 6), so the per-node sum over fields unrolls and
 // vectorises; compiled for AVX2/FMA too, picked at run time.
 
-#include "line_sink_tables.h"
-#include "cpu_features.h"
+#include "thermal/line_sinks/line_sink_tables.h"
+#include "thermal/kernels/cpu_features.h"
 
 namespace mtcs::thermal {
 

@@ -10,8 +10,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "line_sink_fields.h"
-#include "cpu_features.h"
+#include "thermal/kernels/line_sink_fields.h"
+#include "thermal/kernels/cpu_features.h"
 
 namespace mtcs::thermal {
 

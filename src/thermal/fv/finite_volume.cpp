@@ -8,8 +8,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "fv_grid.h"
-#include "fv_heat_input.h"
+#include "thermal/fv/fv_grid.h"
+#include "thermal/fv/fv_heat_input.h"
 
 namespace mtcs::thermal {
 

@@ -1,4 +1,4 @@
-#include "fv_geometry.h"
+#include "thermal/fv/fv_geometry.h"
 
 #include <algorithm>
 #include <cmath>

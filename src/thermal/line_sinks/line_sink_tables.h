@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-#include "line_sink_fields.h"
+#include "thermal/kernels/line_sink_fields.h"
 
 namespace mtcs::thermal {
 

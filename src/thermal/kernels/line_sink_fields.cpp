@@ -1,10 +1,10 @@
-#include "line_sink_fields.h"
+#include "thermal/kernels/line_sink_fields.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "segment_potential.h"
+#include "thermal/kernels/segment_potential.h"
 
 namespace mtcs::thermal {
 

@@ -27,7 +27,7 @@
 #include <span>
 #include <vector>
 
-#include "line_sink_fields.h"
+#include "thermal/kernels/line_sink_fields.h"
 #include "mtcs/thermal/model.h"
 
 namespace mtcs::thermal {

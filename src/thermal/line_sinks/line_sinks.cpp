@@ -11,8 +11,8 @@
 
 #include <absl/container/flat_hash_map.h>
 
-#include "dense_solve.h"
-#include "line_sink_model.h"
+#include "thermal/linalg/dense_solve.h"
+#include "thermal/line_sinks/line_sink_model.h"
 #include "mtcs/geometry/exact_hash.h"
 #include "mtcs/geometry/segment_distance.h"
 

@@ -3,8 +3,8 @@
 // whose trailing updates A22 -= L21 U12 run in an AVX2/FMA kernel; Eigen is built for SSE2 here
 // and its LU ran at ~4 flops per cycle.
 
-#include "dense_solve.h"
-#include "cpu_features.h"
+#include "thermal/linalg/dense_solve.h"
+#include "thermal/kernels/cpu_features.h"
 
 #include <immintrin.h>
 
