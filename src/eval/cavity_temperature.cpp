@@ -1,5 +1,7 @@
 #include "mtcs/eval/cavity_temperature.h"
 
+#include <algorithm>
+
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -59,6 +61,8 @@ CavityConditionUsed cavity_condition_used(const mold::MoldSpec& spec) {
     const CycleTimes times = nominal_cycle(spec);
     c.part_film = p.film * 1e6, c.part_temperature = p.temperature;
     c.in_mold = times.in_mold, c.cycle = times.cycle;
+    c.wall_thinnest = c.wall_thickest = spec.cavity ? spec.cavity->wall_thickness : mold::Cavity{}.wall_thickness;
+    c.local_wall = spec.cavity && spec.cavity->local_thickness;
   } else {
     c.heat_flux = cavity_heat_flux(spec) * 1e6;
   }
@@ -81,6 +85,8 @@ CavityTemperature solve_once(const mold::Scene& scene, const mold::MoldSpec& spe
   CavityTemperature out;
   out.tier = mold::to_string(query.tier);
   out.condition = cavity_condition_used(spec);
+  if (out.condition.local_wall && !samples.thickness.empty())
+    out.condition.wall_thinnest = *std::min_element(samples.thickness.begin(), samples.thickness.end());
   out.surface = mold::to_string(spec.thermal.objective_surface);
   if (field_edge > 0) out.field = {mesh::refine(heated_surface(setting), field_edge), {}, "temperature", "degC"};
 

@@ -16,11 +16,14 @@ namespace {
 std::string condition_text(const CavityConditionUsed& c) {
   std::ostringstream s;
   s << std::fixed << std::setprecision(1);
-  if (c.model == "coupled")
-    s << "coupled, q = " << c.part_film << " W/(m^2 K) x (" << c.part_temperature << " degC - wall) (cycle "
-      << c.cycle << " s, " << c.in_mold << " s in the mold)";
-  else
+  if (c.model != "coupled") {
     s << "fixed flux " << c.heat_flux << " W/m^2";
+    return s.str();
+  }
+  s << "coupled, q = " << c.part_film << " W/(m^2 K) x (" << c.part_temperature << " degC - wall) (cycle " << c.cycle
+    << " s, " << c.in_mold << " s in the mold; part wall " << c.wall_thickest << " mm";
+  if (c.local_wall) s << " at its thickest, local walls from " << c.wall_thinnest << " mm, each with its own film";
+  s << ")";
   return s.str();
 }
 
@@ -31,7 +34,8 @@ std::string cycle_text(const CavityTemperature& r) {
     s << "not ejectable: the wall reaches " << r.summary.max << " degC at (" << r.hottest.x() << ", " << r.hottest.y()
       << ", " << r.hottest.z() << ") mm, at or above the eject temperature: the part never sets there\n";
   } else if (r.condition.model == "coupled") {
-    s << "cycle " << r.cycle_time << " s: cooling " << r.cooling_time << " s at the hottest sample";
+    s << "cycle " << r.cycle_time << " s: cooling " << r.cooling_time << " s at the "
+      << (r.condition.local_wall ? "place that cools last" : "hottest sample");
     if (r.cycle_iterations > 1) s << " (the film's cycle, consistent after " << r.cycle_iterations << " solves)";
     if (std::abs(r.cycle_time - r.condition.cycle) > 0.05 * r.condition.cycle)
       s << " (the film assumed a " << r.condition.cycle << " s cycle: set thermal.cycle.cooling to " << r.cooling_time
@@ -56,7 +60,8 @@ std::string across_text(const CavityTemperature& r) {
 nlohmann::ordered_json condition_json(const CavityConditionUsed& c) {
   if (c.model == "coupled")
     return {{"model", c.model}, {"part_film", c.part_film}, {"part_temperature", c.part_temperature},
-            {"in_mold", c.in_mold}, {"cycle", c.cycle}};
+            {"in_mold", c.in_mold}, {"cycle", c.cycle},
+            {"wall_thickness", {{"local", c.local_wall}, {"thinnest", c.wall_thinnest}, {"thickest", c.wall_thickest}}}};
   return {{"model", c.model}, {"heat_flux", c.heat_flux}};
 }
 

@@ -1,6 +1,8 @@
 #include "mtcs/eval/cycle_time.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace mtcs::eval {
 
@@ -17,6 +19,21 @@ double cooling_time(double wall_thickness, const mold::Polymer& polymer, double 
   if (wall_temperature <= knee) return exact(wall_temperature);
   const double slope = scale * (1 / (eject - knee) - 1 / (melt - knee));
   return exact(knee) + slope * (wall_temperature - knee);
+}
+
+std::size_t slowest_place(std::span<const double> temperature, std::span<const double> thickness,
+                          const mold::Polymer& polymer, std::size_t deciding) {
+  deciding = std::min(deciding, temperature.size());
+  std::size_t slowest = 0;
+  if (thickness.empty()) {
+    for (std::size_t i = 1; i < deciding; ++i)
+      if (temperature[i] > temperature[slowest]) slowest = i;
+    return slowest;
+  }
+  double longest = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < deciding; ++i)
+    if (const double t = cooling_time(thickness[i], polymer, temperature[i]); t > longest) longest = t, slowest = i;
+  return slowest;
 }
 
 double default_heat_flux(const mold::MoldSpec& spec) {

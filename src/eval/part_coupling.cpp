@@ -73,22 +73,26 @@ PartCoupling cavity_coupling(const mold::MoldSpec& spec) {
   return c;
 }
 
-double follow_cycle(std::vector<double>& temperature, const mold::MoldSpec& spec, std::size_t deciding) {
+double follow_cycle(std::vector<double>& temperature, const mold::MoldSpec& spec, std::size_t deciding,
+                    std::span<const double> thickness) {
   const mold::ThermalSpec& t = spec.thermal;
   const double nominal = nominal_cycle(spec).cooling;
   deciding = std::min(deciding, temperature.size());
   if (t.cavity_condition != mold::CavityCondition::Coupled || t.cycle.cooling || t.part_film || deciding == 0)
     return nominal;
-  const double s = spec.cavity ? spec.cavity->wall_thickness : mold::Cavity{}.wall_thickness;
+  const std::size_t slowest = slowest_place(temperature, thickness, t.polymer, deciding);
+  const double s = !thickness.empty() ? thickness[slowest]
+                   : spec.cavity     ? spec.cavity->wall_thickness
+                                     : mold::Cavity{}.wall_thickness;
+  const CycleTimes times = nominal_cycle(spec);
+  const double start_film = part_coupling(t.polymer, s, times.in_mold, times.cycle).film;
   const PartCoupling start = cavity_coupling(spec);
   const double coolant = t.coolant_temperature, span = start.temperature - coolant;
   if (!(span > 0) || !std::all_of(temperature.begin(), temperature.end(), [](double v) { return std::isfinite(v); }))
     return nominal;
   // The share of a sample at the film x h_0 (below the coolant: left as solved).
   const auto share = [](double r, double x) { return r <= 0 ? r : x * r / (x * r + 1 - r); };
-  const double hottest =
-      std::min(*std::max_element(temperature.begin(), temperature.begin() + std::ptrdiff_t(deciding)) - coolant, span) /
-      span;
+  const double hottest = std::min(temperature[slowest] - coolant, span) / span;
   double cooling = nominal, x = 1;
   for (int i = 0; i < 50; ++i) {
     const double wall = coolant + span * share(hottest, x);
@@ -97,7 +101,7 @@ double follow_cycle(std::vector<double>& temperature, const mold::MoldSpec& spec
     if (std::abs(need - cooling) <= 1e-3 * cooling) break;
     cooling = need;
     const double in_mold = t.cycle.fill + t.cycle.pack + cooling;
-    x = part_coupling(t.polymer, s, in_mold, in_mold + t.cycle.open).film / start.film;
+    x = part_coupling(t.polymer, s, in_mold, in_mold + t.cycle.open).film / start_film;
   }
   if (x != 1)
     for (double& v : temperature) v = coolant + span * share(std::min(v - coolant, span) / span, x);

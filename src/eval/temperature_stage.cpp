@@ -21,8 +21,12 @@ namespace mtcs::eval {
 TemperatureObjectives temperature_objectives(const std::vector<double>& temperature, const thermal::Samples& samples,
                                              const mold::MoldSpec& spec) {
   const thermal::Summary s = thermal::summarize(temperature, samples);
-  const double thickness = spec.cavity ? spec.cavity->wall_thickness : mold::Cavity{}.wall_thickness;
-  double cycle = cooling_time(thickness, spec.thermal.polymer, s.max);
+  double cycle = cooling_time(spec.cavity ? spec.cavity->wall_thickness : mold::Cavity{}.wall_thickness,
+                              spec.thermal.polymer, s.max);
+  if (!samples.thickness.empty() && !temperature.empty()) {  // the part's local wall: the slowest place decides
+    const std::size_t k = slowest_place(temperature, samples.thickness, spec.thermal.polymer, temperature.size());
+    cycle = cooling_time(samples.thickness[k], spec.thermal.polymer, temperature[k]);
+  }
   // Coupled: the whole cycle, the slowest place (the hottest wall) deciding when to eject.
   if (spec.thermal.cavity_condition == mold::CavityCondition::Coupled)
     cycle += spec.thermal.cycle.fill + spec.thermal.cycle.pack + spec.thermal.cycle.open;
@@ -63,6 +67,7 @@ class TemperatureStage final : public Stage {
         pairs_.push_back({i, samples_.points.size()});
         samples_.points.push_back(*across[i]);
         samples_.weights.push_back(0);
+        if (!samples_.thickness.empty()) samples_.thickness.push_back(samples_.thickness[i]);
         if (samples_.normals.size() + 1 == samples_.points.size()) samples_.normals.push_back(-samples_.normals[i]);
       }
     }
@@ -99,7 +104,7 @@ class TemperatureStage final : public Stage {
     write(solved_.get(key,
                       [&] {
                         std::vector<double> t = solve_(channels);
-                        follow_cycle(t, spec_, samples_count_);  // coupled: the film of the cycle this layout needs
+                        follow_cycle(t, spec_, samples_count_, samples_.thickness);  // coupled: the film of the cycle this layout needs
                         return objectives_of(std::move(t));
                       }),
           layout, out);

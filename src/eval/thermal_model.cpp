@@ -37,24 +37,31 @@ const mold::HeatRegion* region_at(const Vec3& p, const std::vector<mold::HeatReg
 
 // The cavity's condition per point: a region's fixed flux where one holds the point; elsewhere
 // the spec's condition (the flux model's flux, or the part's coupling).
+// With the part's local wall thickness (cavity.wall_thickness: local), the film per triangle
+// at its own thickness, in the nominal cycle (the thickest wall's).
 class CavityCondition {
  public:
-  explicit CavityCondition(const mold::MoldSpec& spec) : regions_(spec.thermal.regions) {
+  explicit CavityCondition(const mold::MoldSpec& spec) : spec_(spec), regions_(spec.thermal.regions) {
     if (spec.thermal.cavity_condition == mold::CavityCondition::Coupled) {
       const PartCoupling c = cavity_coupling(spec);
       film_ = c.film, part_ = c.temperature;
+      times_ = nominal_cycle(spec);
     } else {
       flux_ = cavity_heat_flux(spec);
     }
   }
-  thermal::HeatedTriangle at(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& where) const {
+  thermal::HeatedTriangle at(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& where, double thickness = 0) const {
     if (const mold::HeatRegion* r = region_at(where, regions_)) return {a, b, c, r->flux};
+    if (thickness > 0 && film_ > 0 && !spec_.thermal.part_film)
+      return {a, b, c, flux_, part_coupling(spec_.thermal.polymer, thickness, times_.in_mold, times_.cycle).film, part_};
     return {a, b, c, flux_, film_, part_};
   }
 
  private:
+  const mold::MoldSpec& spec_;
   const std::vector<mold::HeatRegion>& regions_;
   double flux_ = 0, film_ = 0, part_ = 0;
+  CycleTimes times_;
 };
 
 // A flat rectangle (zero extent along one axis) as triangles facing `melt`, cut wherever a
@@ -129,10 +136,11 @@ thermal::Setting thermal_setting(const mold::Scene& scene, const mold::MoldSpec&
   } else {
     const mesh::TriangleMesh& m = cavity.mesh->mesh;
     s.cavity_mesh = std::make_shared<const mesh::TriangleMesh>(m);
+    const std::vector<double>& thickness = scene.cavity_thickness();
     for (std::size_t i = 0; i < m.triangles.size(); ++i) {
       const Vec3 a = m.corner(i, 0), b = m.corner(i, 1), c = m.corner(i, 2);
       // Outward-oriented mesh: reversed, the triangle faces the melt inside the part.
-      s.heat_in.push_back(condition.at(a, c, b, (a + b + c) / 3));
+      s.heat_in.push_back(condition.at(a, c, b, (a + b + c) / 3, thickness.empty() ? 0 : thickness[i]));
     }
   }
   return s;
@@ -171,9 +179,12 @@ thermal::Samples thermal_samples(const mold::Scene& scene) {
   thermal::Samples all, heated;
   for (std::size_t i = 0; i < s.size(); ++i) {
     const Vec3 p(s.x[i], s.y[i], s.z[i]);
-    all.points.push_back(p), all.weights.push_back(s.weight[i]), all.normals.push_back(s.normal[i]);
-    if (cavity_heated_at(spec, p))
-      heated.points.push_back(p), heated.weights.push_back(s.weight[i]), heated.normals.push_back(s.normal[i]);
+    const double wall = cavity.local_thickness ? scene.wall_thickness_at(p, s.normal[i]) : 0;
+    for (thermal::Samples* into : {&all, &heated}) {
+      if (into == &heated && !cavity_heated_at(spec, p)) continue;
+      into->points.push_back(p), into->weights.push_back(s.weight[i]), into->normals.push_back(s.normal[i]);
+      if (cavity.local_thickness) into->thickness.push_back(wall);
+    }
   }
   const bool use_heated = spec.thermal.objective_surface == mold::ObjectiveSurface::Heated && heated.size() > 0;
   return use_heated ? heated : all;

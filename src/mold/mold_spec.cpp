@@ -217,7 +217,12 @@ Cavity parse_cavity(const YamlReader& r, const YAML::Node& n, const Box& block) 
     r.fail(n, "cavity", "the cavity needs a mesh (file), a box or a patch");
   }
   if (n["sample_spacing"]) c.sample_spacing = r.number(n["sample_spacing"], "cavity.sample_spacing", 1e-3, kHuge);
-  if (n["wall_thickness"]) c.wall_thickness = r.number(n["wall_thickness"], "cavity.wall_thickness", 1e-6, kHuge);
+  if (const YAML::Node w = n["wall_thickness"]; w && w.IsScalar() && w.Scalar() == "local") {
+    if (!c.mesh) r.fail(w, "cavity.wall_thickness", "local needs a mesh cavity (a box's or a patch's wall is one number: give it in mm)");
+    c.local_thickness = true;
+  } else if (w) {
+    c.wall_thickness = r.number(w, "cavity.wall_thickness", 1e-6, kHuge);
+  }
   return c;
 }
 

@@ -1,11 +1,19 @@
 #include "mtcs/mold/scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+
+#include "mtcs/mesh/wall_thickness.h"
 
 namespace mtcs::mold {
 
 using geometry::Vec3;
+
+namespace {
+constexpr double kThickestWall = 1e3;  // mm: the inscribed balls' cap
+}  // namespace
 
 Scene::Scene(MoldSpec spec) : spec_(std::move(spec)) {
   if (spec_.block.box) {
@@ -17,6 +25,27 @@ Scene::Scene(MoldSpec spec) : spec_(std::move(spec)) {
   if (spec_.cavity && spec_.cavity->mesh) cavity_bvh_ = std::make_unique<mesh::TriangleBvh>(spec_.cavity->mesh->mesh);
   for (const KeepOut& k : spec_.keep_outs)
     keep_out_bvh_.push_back(k.mesh ? std::make_unique<mesh::TriangleBvh>(k.mesh->mesh) : nullptr);
+  if (spec_.cavity && spec_.cavity->local_thickness && cavity_bvh_) {
+    const mesh::TriangleMesh& m = spec_.cavity->mesh->mesh;
+    cavity_thickness_.resize(m.triangles.size());
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+      const Vec3 a = m.corner(t, 0), b = m.corner(t, 1), c = m.corner(t, 2);
+      cavity_thickness_[t] = mesh::inscribed_diameter(*cavity_bvh_, (a + b + c) / 3, (b - a).cross(c - a).normalized(), kThickestWall);
+    }
+    const double thickest = *std::max_element(cavity_thickness_.begin(), cavity_thickness_.end());
+    if (!(thickest > 0))
+      throw std::invalid_argument("cavity.wall_thickness: local: no wall across the part's mesh (is it closed?)");
+    for (double& s : cavity_thickness_) s = s > 0 ? s : thickest;  // a sliver the ray slipped past
+    spec_.cavity->wall_thickness = thickest;
+  }
+}
+
+double Scene::wall_thickness_at(const Vec3& p, const Vec3& outward) const {
+  if (!spec_.cavity) return Cavity{}.wall_thickness;
+  const Cavity& c = *spec_.cavity;
+  if (!c.local_thickness || !cavity_bvh_) return c.wall_thickness;
+  const double s = mesh::inscribed_diameter(*cavity_bvh_, p, outward, kThickestWall);
+  return s > 0 ? s : c.wall_thickness;
 }
 
 BlockExit Scene::exit_block(const Vec3& from, const Vec3& d) const {

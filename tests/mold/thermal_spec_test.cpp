@@ -389,3 +389,16 @@ TEST_CASE("thermal spec: a coupled box cavity takes the void as a surface, the p
   CHECK(plane.line() == 5);
   CHECK(mentions(plane, "cavity_void: surface"));
 }
+
+TEST_CASE("thermal spec: cavity.wall_thickness local, for a mesh cavity only", "[mold][thermal]") {
+  const std::string mesh = MTCS_SOURCE_DIR + "/molds/meshes/cup.off";
+  const std::string block = "block: {box: {min: [0, 0, 0], max: [220, 180, 120]}}\n";
+  const mold::MoldSpec s = load(block + "cavity: {mesh: " + mesh + ", wall_thickness: local}\n");
+  CHECK(s.cavity->local_thickness);
+  CHECK_FALSE(load(block + "cavity: {mesh: " + mesh + ", wall_thickness: 3}\n").cavity->local_thickness);
+  const io::InputError e = error_of(kBlock + "cavity: {box: {min: [30, 16, 50], max: [90, 64, 55]}, wall_thickness: local}\n");
+  CHECK(e.field() == "cavity.wall_thickness");
+  CHECK(mentions(e, "mesh cavity"));
+  CHECK(error_of(kBlock + "cavity: {box: {min: [30, 16, 50], max: [90, 64, 55]}, wall_thickness: thick}\n").field() ==
+        "cavity.wall_thickness");
+}

@@ -35,6 +35,10 @@ struct CavityConditionUsed {
   double part_film = 0;           // W/(m^2 K) (coupled)
   double part_temperature = 0;    // degrees C (coupled)
   double in_mold = 0, cycle = 0;  // s, the nominal cycle the film is derived for (coupled)
+  // mm, the part's wall: one value, or (cavity.wall_thickness: local) the thinnest and the
+  // thickest place; part_film is the thickest's, each triangle of the cavity has its own.
+  double wall_thinnest = 0, wall_thickest = 0;
+  bool local_wall = false;
 };
 CavityConditionUsed cavity_condition_used(const mold::MoldSpec& spec);
 

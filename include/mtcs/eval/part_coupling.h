@@ -25,6 +25,7 @@
 //
 // Units: mm, s, W, degrees C (films W/(mm^2 K)), as the thermal module.
 
+#include <span>
 #include <vector>
 
 #include "mtcs/mold/mold_spec.h"
@@ -73,7 +74,11 @@ PartCoupling cavity_coupling(const mold::MoldSpec& spec);
 // flux region are rescaled as well: an approximation where regions meet the cavity. Nothing
 // changes unless the cavity is coupled with a derived film and cycle (no thermal.part_film,
 // no thermal.cycle.cooling); the answer stands at the last film once the wall is too hot to
-// eject. Returns the cooling time (s).
-double follow_cycle(std::vector<double>& temperature, const mold::MoldSpec& spec, std::size_t deciding);
+// eject. With the part's local wall (`thickness` per value, cavity.wall_thickness: local) the
+// place that cools last (eval::slowest_place) takes the hottest's part, its wall the film's
+// thickness; the film's ratio at that wall rescales every sample (the thin walls' ratio
+// differs by the slab's residual heat, a few % at Fo < 0.2). Returns the cooling time (s).
+double follow_cycle(std::vector<double>& temperature, const mold::MoldSpec& spec, std::size_t deciding,
+                    std::span<const double> thickness = {});
 
 }  // namespace mtcs::eval

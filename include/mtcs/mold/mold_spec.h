@@ -55,7 +55,8 @@ struct Cavity {
   std::optional<MeshSource> mesh;
   std::optional<Face> patch_face;   // set: `box` is a flat rectangle on this block face
   double sample_spacing = 3.0;      // mm between cavity-surface samples
-  double wall_thickness = 2.5;      // mm
+  double wall_thickness = 2.5;      // mm; with local_thickness, the thickest wall (the Scene sets it)
+  bool local_thickness = false;     // `wall_thickness: local`: per place, from the mesh (mesh/wall_thickness.h)
 
   bool is_patch() const { return patch_face.has_value(); }
   Box bounds() const { return box ? *box : mesh->mesh.bounds(); }

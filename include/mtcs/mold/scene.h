@@ -34,6 +34,13 @@ class Scene {
   geometry::Vec3 surface_place(const geometry::Cylinder& c, double skip, double skip_end = 0) const;
 
   const mesh::TriangleBvh* cavity_bvh() const { return cavity_bvh_.get(); }
+  // With cavity.wall_thickness: local, the part's wall thickness (mm) at each cavity mesh
+  // triangle's centroid (mesh/wall_thickness.h); spec().cavity->wall_thickness is then their
+  // largest, the wall that sets the cycle. Empty otherwise.
+  const std::vector<double>& cavity_thickness() const { return cavity_thickness_; }
+  // The part's wall thickness at a point of the cavity's surface with its normal out of the
+  // part: local where the spec asks for it, else the spec's one value.
+  double wall_thickness_at(const geometry::Vec3& p, const geometry::Vec3& outward) const;
   const mesh::TriangleBvh* keep_out_bvh(std::size_t k) const { return keep_out_bvh_[k].get(); }
 
  private:
@@ -41,6 +48,7 @@ class Scene {
   Box block_bounds_;
   std::unique_ptr<mesh::TriangleBvh> block_bvh_, cavity_bvh_;
   std::vector<std::unique_ptr<mesh::TriangleBvh>> keep_out_bvh_;
+  std::vector<double> cavity_thickness_;
 };
 
 }  // namespace mtcs::mold

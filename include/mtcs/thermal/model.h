@@ -77,6 +77,7 @@ struct Samples {
   std::vector<Vec3> points;
   std::vector<double> weights;
   std::vector<Vec3> normals;  // unit, out of the part into the steel; empty or 0 where unknown
+  std::vector<double> thickness;  // mm, the part's wall at each sample; empty: one for all
   std::size_t size() const { return points.size(); }
 };
 
