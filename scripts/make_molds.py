@@ -264,7 +264,7 @@ block: {box: {min: [0, 0, 0], max: [220, 180, 120]}}
 cavity:
   mesh: meshes/cup.off
   sample_spacing: 4
-  wall_thickness: 2.5
+  wall_thickness: local  # from the mesh: each place its own wall, corners and bosses thicker
 drilling:
   diameters: [8, 10]
   axis_parallel: true
@@ -280,7 +280,7 @@ block: {box: {min: [0, 0, 0], max: [240, 180, 160]}}
 cavity:
   mesh: meshes/l_bracket.off
   sample_spacing: 4
-  wall_thickness: 6
+  wall_thickness: local  # from the mesh: each place its own wall, corners and bosses thicker
 drilling:
   diameters: [8, 10]
   axis_parallel: true
@@ -296,7 +296,7 @@ block: {box: {min: [0, 0, 0], max: [220, 180, 120]}}
 cavity:
   mesh: meshes/ribbed_box.off
   sample_spacing: 4
-  wall_thickness: 2.5
+  wall_thickness: local  # from the mesh: each place its own wall, corners and bosses thicker
 drilling:
   diameters: [6, 8]
   axis_parallel: true

@@ -9,6 +9,7 @@
 
 #include "mtcs/eval/across_part.h"
 #include "mtcs/eval/part_coupling.h"
+#include "mtcs/eval/cycle_time.h"
 #include "mtcs/eval/temperature_objectives.h"
 #include "mtcs/eval/thermal_model.h"
 #include "mtcs/geometry/segment_distance.h"
@@ -85,8 +86,11 @@ CavityTemperature solve_once(const mold::Scene& scene, const mold::MoldSpec& spe
   CavityTemperature out;
   out.tier = mold::to_string(query.tier);
   out.condition = cavity_condition_used(spec);
-  if (out.condition.local_wall && !samples.thickness.empty())
-    out.condition.wall_thinnest = *std::min_element(samples.thickness.begin(), samples.thickness.end());
+  if (out.condition.local_wall && !samples.thickness.empty()) {  // the samples' walls with the triangles'
+    const auto [thinnest, thickest] = std::minmax_element(samples.thickness.begin(), samples.thickness.end());
+    out.condition.wall_thinnest = std::min(*thinnest, *std::min_element(scene.cavity_thickness().begin(), scene.cavity_thickness().end()));
+    out.condition.wall_thickest = std::max(*thickest, out.condition.wall_thickest);
+  }
   out.surface = mold::to_string(spec.thermal.objective_surface);
   if (field_edge > 0) out.field = {mesh::refine(heated_surface(setting), field_edge), {}, "temperature", "degC"};
 
@@ -147,6 +151,12 @@ CavityTemperature solve_once(const mold::Scene& scene, const mold::MoldSpec& spe
                          ? out.cycle_time - thermal.cycle.fill - thermal.cycle.pack - thermal.cycle.open
                          : out.cycle_time;
   out.ejectable = out.summary.max < thermal.polymer.eject_temperature;
+  if (n > 0) {
+    const std::size_t k = slowest_place(out.at_samples, samples.thickness, thermal.polymer, n);
+    out.slowest = samples.points[k];
+    out.slowest_wall = samples.thickness.empty() ? (spec.cavity ? spec.cavity->wall_thickness : mold::Cavity{}.wall_thickness)
+                                                 : samples.thickness[k];
+  }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }
@@ -185,16 +195,24 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
     split_across(r, asked.size(), samples, across);
     return r;
   }
-  // The film was derived for the nominal cycle; the solution needs its own. Fed back until the
-  // cooling time moves by less than 1 % (a hotter mold takes longer: a longer cycle, a weaker
-  // film, a cooler mold), unless the part cannot be ejected at all.
-  mold::MoldSpec spec = scene.spec();
-  for (int i = 1; i < kCycleIterations && r.ejectable; ++i) {
-    const double nominal = nominal_cycle(spec).cooling;
-    if (std::abs(r.cooling_time - nominal) <= 0.01 * nominal) break;
-    spec.thermal.cycle.cooling = r.cooling_time;
-    r = solve_once(scene, spec, layout, query, points, field_edge);
-    r.cycle_iterations = i + 1;
+  // The film was derived for the nominal cycle; the solution needs its own: the cooling time
+  // whose film gives a solution needing that cooling time, within 1 % (consistent_cooling),
+  // unless the part cannot be ejected at the nominal film.
+  if (r.ejectable) {
+    mold::MoldSpec spec = scene.spec();
+    std::vector<std::pair<double, CavityTemperature>> solved{{nominal_cycle(spec).cooling, r}};
+    const auto need = [&](double cooling) {
+      for (const auto& [c, s] : solved)
+        if (c == cooling) return s.cooling_time;
+      spec.thermal.cycle.cooling = cooling;
+      solved.emplace_back(cooling, solve_once(scene, spec, layout, query, points, field_edge));
+      return solved.back().second.cooling_time;
+    };
+    int solves = 0;
+    const double cooling = consistent_cooling(need, solved.front().first, 0.01, kCycleIterations, &solves);
+    for (const auto& [c, s] : solved)
+      if (c == cooling) r = s;
+    r.cycle_iterations = int(solved.size());
   }
   split_across(r, asked.size(), samples, across);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

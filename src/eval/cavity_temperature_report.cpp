@@ -21,8 +21,9 @@ std::string condition_text(const CavityConditionUsed& c) {
     return s.str();
   }
   s << "coupled, q = " << c.part_film << " W/(m^2 K) x (" << c.part_temperature << " degC - wall) (cycle " << c.cycle
-    << " s, " << c.in_mold << " s in the mold; part wall " << c.wall_thickest << " mm";
-  if (c.local_wall) s << " at its thickest, local walls from " << c.wall_thinnest << " mm, each with its own film";
+    << " s, " << c.in_mold << " s in the mold; part wall ";
+  if (c.local_wall) s << "local, " << c.wall_thinnest << " to " << c.wall_thickest << " mm, each place with its own film";
+  else s << c.wall_thickest << " mm";
   s << ")";
   return s.str();
 }
@@ -34,8 +35,12 @@ std::string cycle_text(const CavityTemperature& r) {
     s << "not ejectable: the wall reaches " << r.summary.max << " degC at (" << r.hottest.x() << ", " << r.hottest.y()
       << ", " << r.hottest.z() << ") mm, at or above the eject temperature: the part never sets there\n";
   } else if (r.condition.model == "coupled") {
-    s << "cycle " << r.cycle_time << " s: cooling " << r.cooling_time << " s at the "
-      << (r.condition.local_wall ? "place that cools last" : "hottest sample");
+    s << "cycle " << r.cycle_time << " s: cooling " << r.cooling_time << " s at the ";
+    if (r.condition.local_wall)
+      s << "place that cools last, (" << r.slowest.x() << ", " << r.slowest.y() << ", " << r.slowest.z() << ") mm, its wall "
+        << r.slowest_wall << " mm";
+    else
+      s << "hottest sample";
     if (r.cycle_iterations > 1) s << " (the film's cycle, consistent after " << r.cycle_iterations << " solves)";
     if (std::abs(r.cycle_time - r.condition.cycle) > 0.05 * r.condition.cycle)
       s << " (the film assumed a " << r.condition.cycle << " s cycle: set thermal.cycle.cooling to " << r.cooling_time
@@ -103,6 +108,8 @@ void write_cavity_temperature_json(std::ostream& out, const CavityTemperature& r
                                  {"heat_to_faces", r.balance.to_faces},
                                  {"cooling_time", r.cooling_time},
                                  {"cycle_time", r.cycle_time},
+                                 {"slowest", {r.slowest.x(), r.slowest.y(), r.slowest.z()}},
+                                 {"slowest_wall", r.slowest_wall},
                                  {"ejectable", r.ejectable},
                                  {"cycle_iterations", r.cycle_iterations},
                                  {"temperature_difference",

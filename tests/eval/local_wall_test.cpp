@@ -11,14 +11,13 @@
 #include "mtcs/mesh/wall_thickness.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/run/session.h"
-#include "support/bundled_variant.h"
 #include "support/paths.h"
 
 using namespace mtcs;
 using geometry::Vec3;
 
 TEST_CASE("local wall: the ribbed box's films follow its walls, the thickest one sets the cycle", "[eval][coupling]") {
-  const run::Session session(mtcs_test::bundled_variant("ribbed_box", "wall_thickness: 2.5", "wall_thickness: local"),
+  const run::Session session(MTCS_SOURCE_DIR + "/molds/ribbed_box.yaml",
                              run::RunOverrides{});
   const mold::Scene& scene = session.scene();
   const mold::MoldSpec& spec = scene.spec();
@@ -53,8 +52,11 @@ TEST_CASE("local wall: the ribbed box's films follow its walls, the thickest one
   INFO("slowest place " << samples.points[k].transpose() << ", wall " << samples.thickness[k] << " mm, "
                         << r.at_samples[k] << " C; cycle " << r.cycle_time << " s");
   CHECK(r.condition.local_wall);
-  CHECK(r.condition.wall_thickest == thickest);
+  CHECK(r.condition.wall_thickest >= thickest);  // a sample may lie where no centroid does
+  CHECK(r.condition.wall_thickest == *std::max_element(samples.thickness.begin(), samples.thickness.end()));
   CHECK(r.condition.wall_thinnest < 2.5);
+  CHECK(r.slowest == samples.points[k]);
+  CHECK(r.slowest_wall == samples.thickness[k]);
   CHECK(r.cooling_time == Approx(eval::cooling_time(samples.thickness[k], spec.thermal.polymer, r.at_samples[k])).epsilon(1e-12));
   for (std::size_t i = 0; i < samples.size(); ++i)
     REQUIRE(eval::cooling_time(samples.thickness[i], spec.thermal.polymer, r.at_samples[i]) <= r.cooling_time * (1 + 1e-12));
@@ -65,7 +67,7 @@ TEST_CASE("local wall: the ribbed box's films follow its walls, the thickest one
 
 TEST_CASE("local wall: the optimiser's cycle from one solve is the fixed point's", "[eval][coupling]") {
   // The optimiser's one-solve cycle (follow_cycle) against mtcs thermal's whole-solve fixed point.
-  const run::Session session(mtcs_test::bundled_variant("l_bracket", "wall_thickness: 6", "wall_thickness: local"),
+  const run::Session session(MTCS_SOURCE_DIR + "/molds/l_bracket.yaml",
                              run::RunOverrides{});
   const mold::Scene& scene = session.scene();
   const mold::Genome genome = session.read_layout(MTCS_SOURCE_DIR + "/molds/l_bracket.layout.yaml");

@@ -165,3 +165,22 @@ TEST_CASE("part coupling: walls at two temperatures exchange heat through the pa
   // The odd part alone: the difference between the two walls' heats is 2 h_x (T2 - T1) t_cycle.
   CHECK(c.cross_film > 0);
 }
+
+TEST_CASE("part coupling: the consistent cooling time where plain substitution oscillates", "[eval][coupling]") {
+  // A steep, decreasing need (the L-bracket's whole solves: 235, 77, 216, 79, 191 s from 75 s):
+  // substitution c <- need(c) swings around the root; regula falsi closes in on it.
+  const auto need = [](double c) { return 60 + 175 * std::exp(-(c - 75) / 12); };
+  double c = 75;
+  for (int i = 0; i < 6; ++i) c = need(c);
+  const double root = eval::consistent_cooling(need, 75, 1e-6, 40);
+  INFO("substitution after 6 steps " << c << " s, root " << root << " s, need there " << need(root));
+  CHECK(std::abs(need(c) - c) > 0.2 * c);  // the oscillation this replaces
+  CHECK(need(root) == Approx(root).epsilon(1e-6));
+  int evaluations = 0;
+  const double coarse = eval::consistent_cooling(need, 75, 0.01, 6, &evaluations);
+  CHECK(evaluations <= 6);
+  CHECK(need(coarse) == Approx(coarse).epsilon(0.01));
+  // Already consistent: one evaluation.
+  CHECK(eval::consistent_cooling([](double) { return 20.0; }, 20, 0.01, 6, &evaluations) == 20);
+  CHECK(evaluations == 1);
+}

@@ -36,7 +36,8 @@ struct CavityConditionUsed {
   double part_temperature = 0;    // degrees C (coupled)
   double in_mold = 0, cycle = 0;  // s, the nominal cycle the film is derived for (coupled)
   // mm, the part's wall: one value, or (cavity.wall_thickness: local) the thinnest and the
-  // thickest place; part_film is the thickest's, each triangle of the cavity has its own.
+  // thickest place (samples and triangles); part_film is then the thickest triangle's, each
+  // triangle of the cavity has its own.
   double wall_thinnest = 0, wall_thickest = 0;
   bool local_wall = false;
 };
@@ -65,6 +66,8 @@ struct CavityTemperature {
   // ejectable: the hottest sample below the eject temperature (else the part never sets there).
   double cooling_time = 0, cycle_time = 0;
   bool ejectable = true;
+  geometry::Vec3 slowest = geometry::Vec3::Zero();  // the place that cools last (the hottest, at one wall)
+  double slowest_wall = 0;                          // mm, the part's wall there
   int cycle_iterations = 1;          // solves of the coupled cycle's fixed point
   WallDifference across;             // the core/cavity difference
   double seconds = 0;                // the solve (and the model's construction)

@@ -25,6 +25,7 @@
 //
 // Units: mm, s, W, degrees C (films W/(mm^2 K)), as the thermal module.
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -62,6 +63,16 @@ CycleTimes nominal_cycle(const mold::MoldSpec& spec);
 // thermal.part_temperature where given, else part_coupling at the cavity's wall thickness and
 // the nominal cycle.
 PartCoupling cavity_coupling(const mold::MoldSpec& spec);
+
+// The cooling time c that a mold's solution needs when its film is derived for c itself:
+// need(c) = c, `need` decreasing in c (a longer cycle, a weaker film, a cooler mold, a shorter
+// cooling). Plain substitution oscillates where need is steep (the L-bracket: 77, 216, 79, 191
+// s); regula falsi (Illinois) in logarithms on the bracket [c0, need(c0)] converges in a few
+// evaluations (need > 0). Stops
+// when |need(c) - c| <= tolerance c or after max_evaluations of need (then the c with the least
+// misfit). `evaluations` (optional) counts them.
+double consistent_cooling(const std::function<double(double)>& need, double start, double tolerance,
+                          int max_evaluations, int* evaluations = nullptr);
 
 // The cycle a solution needs, from that one solve (the optimiser's linearisation of the fixed
 // point mtcs thermal iterates with whole solves; docs/thermal-model.md, "The cycle in the
