@@ -206,7 +206,7 @@ TEST_CASE("finite volume: one hole under an isothermal face has S = 2 pi / acosh
   }
 }
 
-TEST_CASE("finite volume: the single-hole shape factor converges on refinement", "[.fv-slow]") {
+TEST_CASE("finite volume: the single-hole shape factor converges on refinement", "[fv]") {
   const double expected = 6.5285026 * (1 - 0.002);  // hole_iso_a1, less the plate's -0.2 %
   const double coarse = single_hole_shape_factor(10, 7.5, 1.0), fine = single_hole_shape_factor(10, 7.5, 0.5);
   INFO("S(1 mm) " << coarse << " S(0.5 mm) " << fine << " plate value " << expected);
