@@ -88,7 +88,9 @@ CavityTemperature solve_once(const mold::Scene& scene, const mold::MoldSpec& spe
   out.condition = cavity_condition_used(spec);
   if (out.condition.local_wall && !samples.thickness.empty()) {  // the samples' walls with the triangles'
     const auto [thinnest, thickest] = std::minmax_element(samples.thickness.begin(), samples.thickness.end());
-    out.condition.wall_thinnest = std::min(*thinnest, *std::min_element(scene.cavity_thickness().begin(), scene.cavity_thickness().end()));
+    const std::vector<double>& triangles = scene.cavity_thickness();
+    out.condition.wall_thinnest =
+        triangles.empty() ? *thinnest : std::min(*thinnest, *std::min_element(triangles.begin(), triangles.end()));
     out.condition.wall_thickest = std::max(*thickest, out.condition.wall_thickest);
   }
   out.surface = mold::to_string(spec.thermal.objective_surface);

@@ -27,7 +27,7 @@ double inscribed_diameter(const TriangleBvh& part, const geometry::Vec3& p, cons
     const double mid = 0.5 * (lo + hi);
     (fits(mid) ? lo : hi) = mid;
   }
-  return 2 * lo;
+  return 2 * (lo > 0 ? lo : hi);  // no radius fitted: thinner than the last tried, never 0
 }
 
 }  // namespace mtcs::mesh

@@ -25,7 +25,7 @@ Scene::Scene(MoldSpec spec) : spec_(std::move(spec)) {
   if (spec_.cavity && spec_.cavity->mesh) cavity_bvh_ = std::make_unique<mesh::TriangleBvh>(spec_.cavity->mesh->mesh);
   for (const KeepOut& k : spec_.keep_outs)
     keep_out_bvh_.push_back(k.mesh ? std::make_unique<mesh::TriangleBvh>(k.mesh->mesh) : nullptr);
-  if (spec_.cavity && spec_.cavity->local_thickness && cavity_bvh_) {
+  if (spec_.cavity && spec_.cavity->local_thickness && cavity_bvh_ && !spec_.cavity->mesh->mesh.triangles.empty()) {
     const mesh::TriangleMesh& m = spec_.cavity->mesh->mesh;
     cavity_thickness_.resize(m.triangles.size());
     for (std::size_t t = 0; t < m.triangles.size(); ++t) {

@@ -62,6 +62,11 @@ TEST_CASE("line sinks: a molding over a whole face, the channel row, as T3 at 0.
   // T3 at 0.5 mm: mean 38.51 C, std 0.7 K over the molding (experiments/thermal/published_menges).
   CHECK(std::abs(r.summary.mean - 38.51) < 0.4);
   CHECK(r.summary.std < 1.0);
+  // A point asked alone is solved by the same model: the image levels are the cavity samples'
+  // choice, not the points' (one point has no spread to judge by).
+  const eval::CavityTemperature one = eval::cavity_temperature(scene, layout, eval::thermal_query(scene.spec()), {t3[0].p});
+  REQUIRE(one.at_points.size() == 1);
+  CHECK(one.at_points[0] == Approx(r.at_points[0]).margin(1e-9));
 }
 
 TEST_CASE("line sinks: the channel row coupled, its wall and cycle as T3 at 1 mm finds", "[eval][coupling]") {

@@ -10,8 +10,8 @@
 namespace mtcs::mesh {
 
 // The inscribed ball's diameter at p on `part`'s surface, `outward` the surface's unit normal
-// there (out of the part), at most `cap` mm; 0 when the inward ray crosses nothing (an open
-// surface). Bisection on the radius r: the ball of centre p - r outward fits while the surface
+// there (out of the part), at most `cap` mm; 0 only when the inward ray crosses nothing (an
+// open surface). Bisection on the radius r: the ball of centre p - r outward fits while the surface
 // lies at least 0.99 r from its centre (a faceted curve cuts a tangent ball at its facet edges);
 // the first crossing of the inward ray bounds r by half its distance. Within 1 % (the slack)
 // and 1e-4 of that bound. Where two walls of thickness s meet, the corner is up to 1.17 s thick

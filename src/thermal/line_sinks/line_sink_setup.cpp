@@ -197,11 +197,17 @@ double far_lattice_misfit(const Setting& setting, const Samples& samples, const 
     for (const Image& g : of) v += g.sign * tree.potential(g.mult.cwiseProduct(p) + g.offset);
     return v;
   };
-  // Every k-th sample: the misfit is a property of the geometry, not of one sample.
-  const std::size_t stride = (samples.size() + kMisfitSamples - 1) / kMisfitSamples, n = (samples.size() + stride - 1) / stride;
+  // Every k-th sample of weight (points of no weight, such as those across the part, left out:
+  // the pipeline's samples and mtcs thermal's then decide alike); the misfit is a property of
+  // the geometry, not of one sample.
+  std::vector<std::size_t> weighted;
+  for (std::size_t i = 0; i < samples.size(); ++i)
+    if (samples.weights.empty() || samples.weights[i] > 0) weighted.push_back(i);
+  if (weighted.empty()) return 0;
+  const std::size_t stride = (weighted.size() + kMisfitSamples - 1) / kMisfitSamples, n = (weighted.size() + stride - 1) / stride;
   std::vector<double> truth(n), miss(n);
   for_each_index(n, [&](std::size_t s) {
-    const Vec3& p = samples.points[s * stride];
+    const Vec3& p = samples.points[weighted[s * stride]];
     truth[s] = sum(exact, p);
     miss[s] = truth[s] - sum(nearer, p) - far_lattice_kernel(far, center, p).dot(moments);
   });
@@ -288,9 +294,11 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
   // At the samples (the bulk of the work) fewer images may be summed exactly, the rest as the
   // far lattice's charge and dipole; all of them where that lattice misses the heated wall.
   int sample_levels = options.sample_images < 0 ? options.images : std::min(options.sample_images, options.images);
-  if (options.sample_images == 0)
+  if (options.sample_images == 0) {
     sample_levels = far_lattice_misfit(setting, samples, box, sign, 1, options.images) > kFarMisfitBound ? options.images
                                                                                                        : std::min(1, options.images);
+    m.options.sample_images = std::max(sample_levels, 1);  // decided once: a model `like` this one sums the same
+  }
   const std::vector<Image> sample_images = block_images(box, sign, sample_levels);
   std::vector<Image> sample_far;
   if (options.far_images > sample_levels) {
