@@ -1,15 +1,14 @@
 #include "mtcs/eval/cavity_temperature.h"
 
 #include <algorithm>
-
 #include <chrono>
 #include <cmath>
 #include <map>
 #include <sstream>
 
 #include "mtcs/eval/across_part.h"
-#include "mtcs/eval/part_coupling.h"
 #include "mtcs/eval/cycle_time.h"
+#include "mtcs/eval/part_coupling.h"
 #include "mtcs/eval/temperature_objectives.h"
 #include "mtcs/eval/thermal_model.h"
 #include "mtcs/geometry/segment_distance.h"
