@@ -10,8 +10,11 @@
 #include <cstdio>
 #include <iostream>
 #include <numeric>
+#include <optional>
 
 #include "bench_evaluate.h"
+#include "mtcs/eval/across_part.h"
+#include "mtcs/eval/temperature_objectives.h"
 #include "mtcs/eval/thermal_model.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/scene.h"
@@ -27,8 +30,11 @@ using thermal::Channel;
 
 struct Case {
   thermal::Setting setting;
-  thermal::Samples samples;
+  thermal::Samples samples;  // a mold's: the points across the part after the samples, unweighted
   std::vector<std::vector<Channel>> layouts;
+  std::optional<mold::MoldSpec> spec;       // a mold: its cycle time and difference
+  std::size_t count = 0;                    // the samples (the points across after them)
+  std::vector<std::optional<Vec3>> across;  // per sample, the point across the part
 };
 
 // shared/cases/thermal/block3d_case.txt: a 120 x 80 x 60 mm block, 0.05 W/mm^2 into the patch
@@ -59,6 +65,7 @@ Case block_case(int count, std::uint64_t seed) {
     }
     if (int(layout.size()) == n) c.layouts.push_back(std::move(layout));
   }
+  c.count = c.samples.size();
   return c;
 }
 
@@ -77,10 +84,13 @@ double cavity_gap(const std::vector<Channel>& layout, const thermal::Samples& sa
 
 // A mold: its setting and samples; layouts of random genomes (`circuits` circuits of 4 legs),
 // decoded; with `clear_of_part`, only those whose bores keep off the part (most random layouts
-// of 3 circuits drill through a cup: not what an optimiser ranks).
-Case mold_case(const std::string& path, int count, std::uint64_t seed, int circuits, bool clear_of_part) {
+// of 3 circuits drill through a cup: not what an optimiser ranks); with `difference`, the points
+// across the part after the samples.
+Case mold_case(const std::string& path, int count, std::uint64_t seed, int circuits, bool clear_of_part,
+               bool difference) {
   const mold::Scene scene(mold::load_mold_spec(path));
-  Case c{eval::thermal_setting(scene), eval::thermal_samples(scene), {}};
+  Case c{eval::thermal_setting(scene), eval::thermal_samples(scene), {}, scene.spec(), 0, {}};
+  c.count = c.samples.size();
   const double spacing = scene.spec().thermal.sample_spacing.value_or(scene.spec().cavity->sample_spacing);
   for (std::uint64_t batch = 0; int(c.layouts.size()) < count; ++batch) {
     if (batch == 1000)
@@ -92,6 +102,15 @@ Case mold_case(const std::string& path, int count, std::uint64_t seed, int circu
       if (int(c.layouts.size()) < count) c.layouts.push_back(std::move(layout));
     }
   }
+  if (!difference) return c;
+  // The points across the part join the samples, unweighted, as temperature_difference has them.
+  c.across = eval::across_part(scene, c.samples, 3 * scene.spec().cavity->wall_thickness);
+  for (std::size_t i = 0; i < c.count; ++i)
+    if (c.across[i]) {
+      c.samples.points.push_back(*c.across[i]), c.samples.weights.push_back(0);
+      if (!c.samples.thickness.empty()) c.samples.thickness.push_back(c.samples.thickness[i]);
+      if (c.samples.normals.size() == c.samples.points.size() - 1) c.samples.normals.push_back(-c.samples.normals[i]);
+    }
   return c;
 }
 
@@ -115,6 +134,7 @@ struct Row {
   Tier tier;
   double ms_full = 0, ms_incremental = 0, rms = 0, max = 0;
   double tau_std = 0, tau_mean = 0, tau_max = 0, tau_better_half = 0;
+  double tau_cycle = 0, tau_difference = 0;  // a mold's (NaN on the block)
   int top10 = 0;
 };
 
@@ -164,8 +184,26 @@ double wall_distance_uniformity(const std::vector<Channel>& layout, const therma
 
 // Temperatures of every layout by one tier, with its times per layout.
 struct Scored {
-  std::vector<std::vector<double>> temperature;  // empty for t0
-  std::vector<double> score_std, score_mean, score_max, ms_full, ms_incremental;
+  std::vector<std::vector<double>> temperature;  // at the samples; empty for t0
+  std::vector<double> score_std, score_mean, score_max, score_cycle, score_difference, ms_full, ms_incremental;
+
+  // The objectives of one layout's temperatures at the samples and the points across, as the
+  // temperature stage computes them (a mold's at the nominal cycle's films: the bench does not
+  // follow each layout's cycle).
+  void add(const Case& c, std::vector<double> t) {
+    const std::vector<double> at_across(t.begin() + std::ptrdiff_t(c.count), t.end());
+    t.resize(c.count);
+    const thermal::Summary sum = thermal::summarize(t, c.samples);
+    score_std.push_back(sum.std), score_mean.push_back(sum.mean), score_max.push_back(sum.max);
+    if (c.spec) {
+      score_cycle.push_back(eval::temperature_objectives(t, c.samples, *c.spec).cycle_time);
+      if (!c.across.empty()) score_difference.push_back(eval::wall_difference(t, at_across, c.samples, c.across).mean);
+    }
+    temperature.push_back(std::move(t));
+  }
+  void add_score(double u) {  // t0: one ranking score for every objective
+    for (auto* v : {&score_std, &score_mean, &score_max, &score_cycle, &score_difference}) v->push_back(u);
+  }
 };
 
 Scored score(const Case& c, const Tier& tier) {
@@ -176,7 +214,7 @@ Scored score(const Case& c, const Tier& tier) {
       const auto t0 = std::chrono::steady_clock::now();
       const double u = wall_distance_uniformity(layout, c.samples);
       s.ms_full.push_back(1e3 * seconds_since(t0));
-      s.score_std.push_back(u), s.score_mean.push_back(u), s.score_max.push_back(u);
+      s.add_score(u);
       continue;
     }
     if (tier.name == "fd") {
@@ -186,9 +224,7 @@ Scored score(const Case& c, const Tier& tier) {
       t = thermal::solve_finite_volume({c.setting, layout}, c.samples, options).temperature;
       s.ms_full.push_back(1e3 * seconds_since(t0));
     }
-    const thermal::Summary sum = thermal::summarize(t, c.samples);
-    s.temperature.push_back(t);
-    s.score_std.push_back(sum.std), s.score_mean.push_back(sum.mean), s.score_max.push_back(sum.max);
+    s.add(c, std::move(t));
   }
   return s;
 }
@@ -221,9 +257,7 @@ Scored score_line_sinks(const Case& c, const Tier& tier, int repeat) {
     }
     s.ms_full.push_back(median(full));
     s.ms_incremental.push_back(median(incremental));
-    const thermal::Summary sum = thermal::summarize(t, c.samples);
-    s.temperature.push_back(std::move(t));
-    s.score_std.push_back(sum.std), s.score_mean.push_back(sum.mean), s.score_max.push_back(sum.max);
+    s.add(c, std::move(t));
   }
   return s;
 }
@@ -249,6 +283,8 @@ Row judge(const Tier& tier, const Scored& s, const Scored& ref) {
   r.tau_std = kendall(s.score_std, ref.score_std, all);
   r.tau_mean = kendall(s.score_mean, ref.score_mean, all);
   r.tau_max = kendall(s.score_max, ref.score_max, all);
+  r.tau_cycle = ref.score_cycle.empty() ? std::nan("") : kendall(s.score_cycle, ref.score_cycle, all);
+  r.tau_difference = ref.score_difference.empty() ? std::nan("") : kendall(s.score_difference, ref.score_difference, all);
   // The better half by the reference's std: where an optimiser spends its time.
   std::vector<std::size_t> by_ref = all, by_tier = all;
   std::sort(by_ref.begin(), by_ref.end(), [&](auto a, auto b) { return ref.score_std[a] < ref.score_std[b]; });
@@ -275,9 +311,9 @@ std::string label(const Tier& t) {
 
 int bench_thermal(const ThermalBenchOptions& o) {
   const Case c = o.scene == "block" ? block_case(o.layouts, o.seed)
-                                    : mold_case(o.scene, o.layouts, o.seed, o.circuits, !o.through_part);
-  std::cerr << "bench thermal: " << c.layouts.size() << " layouts, " << c.samples.size()
-            << " samples; reference: finite volumes at " << o.reference_cell << " mm\n";
+                                    : mold_case(o.scene, o.layouts, o.seed, o.circuits, !o.through_part, o.difference);
+  std::cerr << "bench thermal: " << c.layouts.size() << " layouts, " << c.count << " samples ("
+            << c.samples.size() - c.count << " across the part); reference: finite volumes at " << o.reference_cell << " mm\n";
   const Tier reference{"fd", 0, o.reference_cell};
   const auto t0 = std::chrono::steady_clock::now();
   const Scored ref = score(c, reference);
@@ -322,22 +358,24 @@ int bench_thermal(const ThermalBenchOptions& o) {
   const std::string default_tier = "t2d M=4";
   if (o.json) {
     std::printf("{\"scene\": \"%s\", \"layouts\": %zu, \"samples\": %zu, \"reference\": \"fd h=%g mm\", \"default_tier\": \"%s\", \"tiers\": [",
-                o.scene.c_str(), c.layouts.size(), c.samples.size(), o.reference_cell, default_tier.c_str());
+                o.scene.c_str(), c.layouts.size(), c.count, o.reference_cell, default_tier.c_str());
     for (std::size_t i = 0; i < rows.size(); ++i) {
       const Row& r = rows[i];
       auto num = [](double v) { return std::isfinite(v) ? std::to_string(v) : std::string("null"); };
       std::printf("%s\n  {\"tier\": \"%s\", \"elements\": %d, \"cell_mm\": %g, \"ms_full\": %.5f, \"ms_incremental\": %.5f, "
-                  "\"rms_k\": %s, \"max_k\": %s, \"tau_std\": %.4f, \"tau_mean\": %.4f, \"tau_max\": %.4f, \"tau_better_half\": %.4f, \"top10\": %d}",
+                  "\"rms_k\": %s, \"max_k\": %s, \"tau_std\": %.4f, \"tau_mean\": %.4f, \"tau_max\": %.4f, \"tau_better_half\": %.4f, \"top10\": %d, "
+                  "\"tau_cycle\": %s, \"tau_difference\": %s}",
                   i ? "," : "", label(r.tier).c_str(), r.tier.elements, r.tier.cell, r.ms_full, r.ms_incremental,
-                  num(r.rms).c_str(), num(r.max).c_str(), r.tau_std, r.tau_mean, r.tau_max, r.tau_better_half, r.top10);
+                  num(r.rms).c_str(), num(r.max).c_str(), r.tau_std, r.tau_mean, r.tau_max, r.tau_better_half, r.top10,
+                  num(r.tau_cycle).c_str(), num(r.tau_difference).c_str());
     }
     std::printf("\n]}\n");
     return 0;
   }
-  std::printf("tier,ms_full,ms_incremental,rms_k,max_k,tau_std,tau_mean,tau_max,tau_better_half,top10\n");
+  std::printf("tier,ms_full,ms_incremental,rms_k,max_k,tau_std,tau_mean,tau_max,tau_better_half,top10,tau_cycle,tau_difference\n");
   for (const Row& r : rows)
-    std::printf("%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%d\n", label(r.tier).c_str(), r.ms_full, r.ms_incremental, r.rms,
-                r.max, r.tau_std, r.tau_mean, r.tau_max, r.tau_better_half, r.top10);
+    std::printf("%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%d,%.4f,%.4f\n", label(r.tier).c_str(), r.ms_full, r.ms_incremental,
+                r.rms, r.max, r.tau_std, r.tau_mean, r.tau_max, r.tau_better_half, r.top10, r.tau_cycle, r.tau_difference);
   return 0;
 }
 

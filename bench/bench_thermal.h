@@ -18,6 +18,7 @@ struct ThermalBenchOptions {
   std::vector<double> void_panels{6, 10};
   int circuits = 3;            // per random layout of a mold (4 legs each)
   bool through_part = false;
+  bool difference = false;     // a mold: the points across the part too (tau of temperature_difference)
   std::vector<std::string> tiers;  // labels' starts ("t2d M=4", "fd"); empty: every tier
   std::vector<int> sample_images;  // also every line-sink tier with this many image levels summed
                                    // exactly at the samples (LineSinkOptions::sample_images)

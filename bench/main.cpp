@@ -179,9 +179,10 @@ int run(int argc, char** argv) {
       "Error against run time of the thermal tiers (t0 wall distance, t1, t2, t2d line sinks with M\n"
       "elements per bore, fd finite volumes at a cell size) on random layouts, against the finite\n"
       "volumes at --reference-cell: ms per evaluation (full; incremental = one bore moved, warm\n"
-      "cache), RMS and max error at the samples (K), Kendall tau of the samples' std, mean and max\n"
-      "(the max's is the cycle time's: a coupled cavity's cycle grows with it), tau among the\n"
-      "better half, top-10 overlap. CSV on stdout, or --json:\n"
+      "cache), RMS and max error at the samples (K), Kendall tau of the samples' std, mean and max,\n"
+      "tau among the better half, top-10 overlap, and on a mold the tau of cycle_time (the slowest\n"
+      "place's, at the nominal cycle's films) and with --difference of temperature_difference.\n"
+      "CSV on stdout, or --json:\n"
       "  {default_tier, tiers: [{tier, ms_full, ms_incremental, rms_k, tau_std, ...}]}\n"
       "--case block: the reference block of shared/cases/thermal with 2-5 through-bores along x;\n"
       "--case MOLD.yaml: a mold's cavity with random layouts (3 circuits of 4 legs).\n"
@@ -205,6 +206,9 @@ int run(int argc, char** argv) {
                       "also every line-sink tier with this many image levels summed exactly at the samples "
                       "(label ends S=N; the model chooses otherwise)")
       ->delimiter(',')->check(CLI::Range(1, 4));
+  thermal->add_flag("--difference", to->difference,
+                    "a mold: also the points across the part's wall, for the tau of temperature_difference "
+                    "(they are solved for too: the times grow as the stage's do with that objective)");
   thermal->add_flag("--json", to->json, "one JSON object instead of CSV");
 
   auto ao = std::make_shared<AccessMapBenchOptions>();

@@ -1,5 +1,7 @@
 #include "mtcs/eval/across_part.h"
 
+#include <cmath>
+
 namespace mtcs::eval {
 
 using geometry::Vec3;
@@ -31,6 +33,20 @@ std::vector<std::optional<Vec3>> across_part(const mold::Scene& scene, const the
     if (hit && hit->t + start <= reach && hit->normal.dot(n) <= kOpposite) out[i] = Vec3(p - (hit->t + start) * n);
   }
   return out;
+}
+
+WallDifference wall_difference(const std::vector<double>& at_samples, const std::vector<double>& at_across,
+                               const thermal::Samples& samples, const std::vector<std::optional<Vec3>>& across) {
+  WallDifference d;
+  double sum = 0;
+  for (std::size_t i = 0, k = 0; i < across.size(); ++i) {
+    if (!across[i]) continue;
+    const double diff = std::abs(at_samples[i] - at_across[k++]);
+    d.pairs += 1, d.paired_area += samples.weights[i], sum += samples.weights[i] * diff;
+    if (diff > d.max) d.max = diff, d.where = samples.points[i];
+  }
+  if (d.paired_area > 0) d.mean = sum / d.paired_area;
+  return d;
 }
 
 }  // namespace mtcs::eval

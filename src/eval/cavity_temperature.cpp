@@ -167,17 +167,9 @@ CavityTemperature solve_once(const mold::Scene& scene, const mold::MoldSpec& spe
 // Splits the points asked for from those across the part (after them), and finds the difference.
 void split_across(CavityTemperature& r, std::size_t asked, const thermal::Samples& samples,
                   const std::vector<std::optional<Vec3>>& across) {
-  std::vector<double> at_across(r.at_points.begin() + std::ptrdiff_t(asked), r.at_points.end());
+  const std::vector<double> at_across(r.at_points.begin() + std::ptrdiff_t(asked), r.at_points.end());
   r.at_points.resize(asked);
-  WallDifference& d = r.across;
-  double sum = 0;
-  for (std::size_t i = 0, k = 0; i < across.size(); ++i) {
-    if (!across[i]) continue;
-    const double diff = std::abs(r.at_samples[i] - at_across[k++]);
-    d.pairs += 1, d.paired_area += samples.weights[i], sum += samples.weights[i] * diff;
-    if (diff > d.max) d.max = diff, d.where = samples.points[i];
-  }
-  if (d.paired_area > 0) d.mean = sum / d.paired_area;
+  r.across = wall_difference(r.at_samples, at_across, samples, across);
 }
 
 CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layout& layout, const ThermalQuery& query,

@@ -57,15 +57,14 @@ class TemperatureStage final : public Stage {
     // solved for, with no weight (after the samples: their summary is unchanged).
     if (std::find(use.begin(), use.end(), mold::Objective::TemperatureDifference) != use.end()) {
       const double reach = 3 * spec_.cavity->wall_thickness;
-      const std::vector<std::optional<geometry::Vec3>> across = across_part(scene, samples_, reach);
-      if (std::none_of(across.begin(), across.end(), [](const auto& q) { return q.has_value(); }))
+      across_ = across_part(scene, samples_, reach);
+      if (std::none_of(across_.begin(), across_.end(), [](const auto& q) { return q.has_value(); }))
         throw std::invalid_argument(
             "temperature_difference needs a part whose faces pair across its wall within 3 wall thicknesses "
             "(a box or mesh cavity with cavity.wall_thickness near its real walls); none do here");
-      for (std::size_t i = 0; i < across.size(); ++i) {
-        if (!across[i]) continue;
-        pairs_.push_back({i, samples_.points.size()});
-        samples_.points.push_back(*across[i]);
+      for (std::size_t i = 0; i < across_.size(); ++i) {
+        if (!across_[i]) continue;
+        samples_.points.push_back(*across_[i]);
         samples_.weights.push_back(0);
         if (!samples_.thickness.empty()) samples_.thickness.push_back(samples_.thickness[i]);
         if (samples_.normals.size() + 1 == samples_.points.size()) samples_.normals.push_back(-samples_.normals[i]);
@@ -116,12 +115,7 @@ class TemperatureStage final : public Stage {
     std::vector<double> across(t.begin() + std::ptrdiff_t(samples_count_), t.end());
     t.resize(samples_count_);
     TemperatureObjectives o = temperature_objectives(t, samples_, spec_);
-    double sum = 0, area = 0;
-    for (const auto& [i, j] : pairs_) {
-      const double w = samples_.weights[i];
-      sum += w * std::abs(t[i] - across[j - samples_count_]), area += w;
-    }
-    if (area > 0) o.difference = sum / area;
+    if (!across_.empty()) o.difference = wall_difference(t, across, samples_, across_).mean;
     return o;
   }
 
@@ -182,7 +176,7 @@ class TemperatureStage final : public Stage {
   double part_temperature_;
   bool bounded_above_;  // no region adds a fixed flux: nothing can heat the steel above T_p
   std::size_t samples_count_;                              // the samples (the points across after them)
-  std::vector<std::pair<std::size_t, std::size_t>> pairs_;  // sample, the point across the part
+  std::vector<std::optional<geometry::Vec3>> across_;       // per sample, the point across the part
   TemperatureSolver solve_;
   ExactCache<std::vector<double>, TemperatureObjectives> solved_{256};
   std::vector<std::pair<mold::Objective, std::size_t>> slots_;

@@ -18,4 +18,18 @@ namespace mtcs::eval {
 std::vector<std::optional<geometry::Vec3>> across_part(const mold::Scene& scene, const thermal::Samples& samples,
                                                        double reach);
 
+// The core/cavity difference: over the samples whose wall has the part's other face straight
+// across it, |T(sample) - T(across)|.
+struct WallDifference {
+  std::size_t pairs = 0;
+  double paired_area = 0;      // mm^2, of those samples
+  double mean = 0, max = 0;    // K, area-weighted mean and max
+  geometry::Vec3 where = geometry::Vec3::Zero();  // the sample of the max
+};
+
+// `at_samples` at the samples; `at_across` at the points across, in the samples' order, one
+// per sample that has one (`across` from across_part).
+WallDifference wall_difference(const std::vector<double>& at_samples, const std::vector<double>& at_across,
+                               const thermal::Samples& samples, const std::vector<std::optional<geometry::Vec3>>& across);
+
 }  // namespace mtcs::eval

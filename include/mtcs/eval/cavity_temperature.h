@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "mtcs/eval/across_part.h"
 #include "mtcs/mesh/surface_field.h"
 #include "mtcs/mold/layout.h"
 #include "mtcs/mold/scene.h"
@@ -42,15 +43,6 @@ struct CavityConditionUsed {
   bool local_wall = false;
 };
 CavityConditionUsed cavity_condition_used(const mold::MoldSpec& spec);
-
-// The core/cavity difference: over the samples whose wall has the part's other face straight
-// across it (eval::across_part, within 3 wall thicknesses), |T(sample) - T(across)|.
-struct WallDifference {
-  std::size_t pairs = 0;
-  double paired_area = 0;      // mm^2, of those samples
-  double mean = 0, max = 0;    // K, area-weighted mean and max
-  geometry::Vec3 where = geometry::Vec3::Zero();  // the sample of the max
-};
 
 struct CavityTemperature {
   std::string tier;                  // t1, t2, t2d, fd
