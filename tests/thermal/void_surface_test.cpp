@@ -300,6 +300,22 @@ TEST_CASE("void surface: the faces' planes cut the panels only up to a bound") {
   CHECK(many <= none + 2 * 40 + 8);  // 80 planes: none; the small faces' own panels only
 }
 
+TEST_CASE("void surface: a bore reaches the wall only where its cylinder meets it") {
+  // 16 mm panels cut the face into sub-triangles 8 mm wide: a bound by their balls took a bore
+  // 3 mm off the wall for one through it, and dropped its reflection (the cup's random layouts
+  // ran 30-39 K off T3).
+  const std::vector<HeatedTriangle> wall{{Vec3(0, 0, 0), Vec3(96, 96, 0), Vec3(96, 0, 0), 0.03},
+                                         {Vec3(0, 0, 0), Vec3(0, 96, 0), Vec3(96, 96, 0), 0.03}};
+  const VoidSurface v(wall, std::vector<Image>{Image{}}, 16, 0.03);
+  for (const double gap : {0.5, 3.0, 10.0}) {  // the cylinder's wall this far below the face
+    const double z = -(2 + gap);
+    CHECK_FALSE(v.reaches(Vec3(10, 30, z), Vec3(90, 50, z), 2));
+  }
+  CHECK(v.reaches(Vec3(10, 30, -1.5), Vec3(90, 50, -1.5), 2));  // cuts into the face
+  CHECK(v.reaches(Vec3(40, 40, -5), Vec3(40, 40, 5), 2));       // through it
+  CHECK_FALSE(v.reaches(Vec3(100, 40, -5), Vec3(100, 40, 5), 2));  // beside its edge, 2 mm clear
+}
+
 TEST_CASE("void surface: built twice from the same wall, the same bits") {
   // Models of one setting take the void the process keeps (line_sink_setup.cpp): a kept void
   // must read as one built afresh would.
