@@ -105,12 +105,7 @@ Case mold_case(const std::string& path, int count, std::uint64_t seed, int circu
   if (!difference) return c;
   // The points across the part join the samples, unweighted, as temperature_difference has them.
   c.across = eval::across_part(scene, c.samples, 3 * scene.spec().cavity->wall_thickness);
-  for (std::size_t i = 0; i < c.count; ++i)
-    if (c.across[i]) {
-      c.samples.points.push_back(*c.across[i]), c.samples.weights.push_back(0);
-      if (!c.samples.thickness.empty()) c.samples.thickness.push_back(c.samples.thickness[i]);
-      if (c.samples.normals.size() == c.samples.points.size() - 1) c.samples.normals.push_back(-c.samples.normals[i]);
-    }
+  eval::append_across(c.samples, c.across);
   return c;
 }
 

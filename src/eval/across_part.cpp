@@ -35,6 +35,16 @@ std::vector<std::optional<Vec3>> across_part(const mold::Scene& scene, const the
   return out;
 }
 
+void append_across(thermal::Samples& samples, const std::vector<std::optional<Vec3>>& across) {
+  for (std::size_t i = 0; i < across.size(); ++i) {
+    if (!across[i]) continue;
+    samples.points.push_back(*across[i]);
+    samples.weights.push_back(0);
+    if (!samples.thickness.empty()) samples.thickness.push_back(samples.thickness[i]);
+    if (samples.normals.size() + 1 == samples.points.size()) samples.normals.push_back(-samples.normals[i]);
+  }
+}
+
 WallDifference wall_difference(const std::vector<double>& at_samples, const std::vector<double>& at_across,
                                const thermal::Samples& samples, const std::vector<std::optional<Vec3>>& across) {
   WallDifference d;

@@ -62,13 +62,7 @@ class TemperatureStage final : public Stage {
         throw std::invalid_argument(
             "temperature_difference needs a part whose faces pair across its wall within 3 wall thicknesses "
             "(a box or mesh cavity with cavity.wall_thickness near its real walls); none do here");
-      for (std::size_t i = 0; i < across_.size(); ++i) {
-        if (!across_[i]) continue;
-        samples_.points.push_back(*across_[i]);
-        samples_.weights.push_back(0);
-        if (!samples_.thickness.empty()) samples_.thickness.push_back(samples_.thickness[i]);
-        if (samples_.normals.size() + 1 == samples_.points.size()) samples_.normals.push_back(-samples_.normals[i]);
-      }
+      append_across(samples_, across_);
     }
     solve_ = factory(setting_, samples_, spec_.thermal);
     for (std::size_t k = 0; k < use.size(); ++k)

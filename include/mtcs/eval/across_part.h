@@ -18,6 +18,11 @@ namespace mtcs::eval {
 std::vector<std::optional<geometry::Vec3>> across_part(const mold::Scene& scene, const thermal::Samples& samples,
                                                        double reach);
 
+// The points across join `samples` after them, unweighted (the samples' summary stays theirs),
+// each with its sample's wall thickness and the opposite normal: what a solve for the
+// difference takes.
+void append_across(thermal::Samples& samples, const std::vector<std::optional<geometry::Vec3>>& across);
+
 // The core/cavity difference: over the samples whose wall has the part's other face straight
 // across it, |T(sample) - T(across)|.
 struct WallDifference {
