@@ -291,7 +291,7 @@ def collect(mold, d, out):
                 runs[(lev, el)] = np.loadtxt(f"{d}/{mold}_{lev}_{el}.T")
             except OSError:
                 pass
-    # reference: the finest P2 run; without any P2 (the gear, see README) the finest P1
+    # reference: the finest P2 run (without any P2, the finest P1)
     best = next(k for k in (("fine", "P2"), ("coarse", "P2"), ("fine", "P1")) if k in runs)
     ref = runs[best]
     print(f"{mold}: {len(S)} samples, reference {best[0]} {best[1]}: min {ref.min():.3f} mean "
