@@ -314,6 +314,13 @@ TEST_CASE("void surface: a bore reaches the wall only where its cylinder meets i
   CHECK(v.reaches(Vec3(10, 30, -1.5), Vec3(90, 50, -1.5), 2));  // cuts into the face
   CHECK(v.reaches(Vec3(40, 40, -5), Vec3(40, 40, 5), 2));       // through it
   CHECK_FALSE(v.reaches(Vec3(100, 40, -5), Vec3(100, 40, 5), 2));  // beside its edge, 2 mm clear
+  // A sliver, one panel: a bore through its sharp end lies 62 mm from its centroid, far beyond
+  // the sqrt(2 area) = 6.9 mm ball that once screened it.
+  const VoidSurface sliver(std::vector<HeatedTriangle>{{Vec3(0, 0, 0), Vec3(96, 0.5, 0), Vec3(96, 0, 0), 0.03}},
+                           std::vector<Image>{Image{}}, 200, 0.03);
+  REQUIRE(sliver.panels() == 1);
+  CHECK(sliver.reaches(Vec3(2, 0.005, -5), Vec3(2, 0.005, 5), 1));
+  CHECK_FALSE(sliver.reaches(Vec3(2, 3, -5), Vec3(2, 3, 5), 1));
 }
 
 TEST_CASE("void surface: built twice from the same wall, the same bits") {
