@@ -105,6 +105,8 @@ Case mold_case(const std::string& path, int count, std::uint64_t seed, int circu
   if (!difference) return c;
   // The points across the part join the samples, unweighted, as temperature_difference has them.
   c.across = eval::across_part(scene, c.samples, 3 * scene.spec().cavity->wall_thickness);
+  if (std::none_of(c.across.begin(), c.across.end(), [](const auto& q) { return q.has_value(); }))
+    c.across.clear();  // no faces pair across the part: no difference to rank (its tau NaN)
   eval::append_across(c.samples, c.across);
   return c;
 }

@@ -301,7 +301,7 @@ TEST_CASE("void surface: the faces' planes cut the panels only up to a bound") {
 }
 
 TEST_CASE("void surface: a bore reaches the wall only where its cylinder meets it") {
-  // 16 mm panels cut the face into sub-triangles 8 mm wide: a bound by their balls took a bore
+  // 16 mm panels cut the face into sub-triangles ~5 mm wide: a bound by their balls took a bore
   // 3 mm off the wall for one through it, and dropped its reflection (the cup's random layouts
   // ran 30-39 K off T3).
   const std::vector<HeatedTriangle> wall{{Vec3(0, 0, 0), Vec3(96, 96, 0), Vec3(96, 0, 0), 0.03},

@@ -187,6 +187,10 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
     centroid_.push_back(centroid);
     area_.push_back(area);
     radius_.push_back(radius);
+    double reach = 0;
+    for (const Sub& s : cut.subs)
+      for (int k = 0; k < 3; ++k) reach = std::max(reach, (s.source.corner(k) - centroid).norm());
+    corner_reach_.push_back(reach);
     flux_.push_back(heat / area);
     Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
     for (const Sub& s : cut.subs) second += s.area * (s.centroid - centroid) * (s.centroid - centroid).transpose();
@@ -388,17 +392,20 @@ bool VoidSurface::reaches(const Vec3& a, const Vec3& b, double radius) const {
     return (p - a - t * d).norm();
   };
   // Exactly, by the segment-triangle distance. A ball bound (sqrt(2 area) about a sub-triangle's
-  // centroid) reached 8 mm beyond a 16 mm panel's wall, and a bore that near lost its reflection:
-  // on the cup 3 random layouts in 12 ran 30-39 K RMS off T3 (experiments/thermal/coupled/README.md).
-  // Nor is that ball a bound on a sliver (the planes cut some): each sub-triangle is screened by
-  // its farthest corner from its centroid instead.
-  for (const Sub& sub : sub_) {
-    const TriangleSource& t = sub.source;
-    double reach = 0;
-    for (int k = 0; k < 3; ++k) reach = std::max(reach, (t.corner(k) - sub.centroid).norm());
-    if (distance(sub.centroid) < radius + reach &&
-        geometry::segment_triangle_distance(a, b, t.corner(0), t.corner(1), t.corner(2)) < radius)
-      return true;
+  // centroid) reached 5-8 mm beyond a 16 mm panel's wall, and a bore that near lost its
+  // reflection: on the cup 3 random layouts in 12 ran 30-39 K RMS off T3
+  // (experiments/thermal/coupled/README.md). Nor is that ball a bound on a sliver (the planes cut
+  // some): panels and sub-triangles are screened by their farthest corners instead.
+  for (std::size_t j = 0; j < panels(); ++j) {
+    if (distance(centroid_[j]) >= radius + corner_reach_[j]) continue;
+    for (std::size_t s = begin_[j]; s < begin_[j + 1]; ++s) {
+      const TriangleSource& t = sub_[s].source;
+      double reach = 0;
+      for (int k = 0; k < 3; ++k) reach = std::max(reach, (t.corner(k) - sub_[s].centroid).norm());
+      if (distance(sub_[s].centroid) < radius + reach &&
+          geometry::segment_triangle_distance(a, b, t.corner(0), t.corner(1), t.corner(2)) < radius)
+        return true;
+    }
   }
   return false;
 }

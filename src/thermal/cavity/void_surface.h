@@ -129,6 +129,7 @@ class VoidSurface {
   std::vector<std::size_t> begin_{0};          // panel j: sub_[begin_[j], begin_[j + 1])
   std::vector<Vec3> point_, normal_, centroid_;
   std::vector<double> area_, radius_, flux_;   // flux: area-weighted mean over the panel
+  std::vector<double> corner_reach_;           // the farthest sub-triangle corner from the centroid
   // By column and in float, for potential_row's pass: centroids (from the wall's lowest corner
   // `origin`), areas, the squared distance from which a panel is far, and the six entries and
   // trace of its second moment, the sum of area (c - centroid)(c - centroid)^T over its subs.
