@@ -395,16 +395,12 @@ bool VoidSurface::reaches(const Vec3& a, const Vec3& b, double radius) const {
   // centroid) reached 5-8 mm beyond a 16 mm panel's wall, and a bore that near lost its
   // reflection: on the cup 3 random layouts in 12 ran 30-39 K RMS off T3
   // (experiments/thermal/coupled/README.md). Nor is that ball a bound on a sliver (the planes cut
-  // some): panels and sub-triangles are screened by their farthest corners instead.
+  // some): a panel is screened by its farthest sub-triangle corner instead.
   for (std::size_t j = 0; j < panels(); ++j) {
     if (distance(centroid_[j]) >= radius + corner_reach_[j]) continue;
     for (std::size_t s = begin_[j]; s < begin_[j + 1]; ++s) {
       const TriangleSource& t = sub_[s].source;
-      double reach = 0;
-      for (int k = 0; k < 3; ++k) reach = std::max(reach, (t.corner(k) - sub_[s].centroid).norm());
-      if (distance(sub_[s].centroid) < radius + reach &&
-          geometry::segment_triangle_distance(a, b, t.corner(0), t.corner(1), t.corner(2)) < radius)
-        return true;
+      if (geometry::segment_triangle_distance(a, b, t.corner(0), t.corner(1), t.corner(2)) < radius) return true;
     }
   }
   return false;
