@@ -17,7 +17,7 @@ if [ -f build-asan/CMakeCache.txt ] && ! grep -qx "CMAKE_CXX_COMPILER:[A-Z]*=$CX
   rm -rf build-asan
 fi
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER="$CXX_ASAN" \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DMTCS_SANITIZE=ON >/dev/null
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DMTCS_SANITIZE=ON -DMTCS_BUILD_TESTS=ON -DMTCS_BUILD_BENCH=ON >/dev/null
 cmake --build build-asan -j2
 # OpenCASCADE's libraries (the STEP export) keep allocations for the process's life: suppressed.
 ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$PWD/scripts/lsan_suppressions.txt" \

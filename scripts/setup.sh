@@ -1,20 +1,39 @@
 #!/usr/bin/env bash
-# Installs every Debian package mtcs builds, tests and benchmarks with. Idempotent: packages
-# already present are skipped, so a second run costs one dpkg query.
+# Installs the Debian packages mtcs needs. Idempotent: packages already present are skipped, so
+# a second run costs one dpkg query.
+#   setup.sh            everything the tests, benchmarks and optional components use (the test
+#                       command's set)
+#   setup.sh --minimal  what building and running `mtcs` needs (the demo's set): no test
+#                       framework, peers, fuzzer, browser, MPI, OpenCASCADE or matplotlib
 set -euo pipefail
 
+minimal=0
+case "${1:-}" in
+  --minimal) minimal=1 ;;
+  "") ;;
+  *) echo "usage: setup.sh [--minimal]" >&2; exit 2 ;;
+esac
+
+# Building and running mtcs: the compiler and the libraries every module links.
 PACKAGES=(
-  build-essential cmake ccache pkg-config
+  build-essential cmake ccache pkg-config python3
   libeigen3-dev libnlopt-cxx-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
-  libyaml-cpp-dev libspdlog-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev
-  libsqlite3-dev libtbb-dev libfcl-dev libccd-dev libbenchmark-dev libpagmo-dev libabsl-dev
-  python3 python3-matplotlib
+  libyaml-cpp-dev libspdlog-dev libfmt-dev libcli11-dev nlohmann-json3-dev
+  libsqlite3-dev libtbb-dev libabsl-dev
+)
+# The tests, the benchmarks' peers (mtcs-bench) and the optional components: PNG plots
+# (matplotlib), the fuzzers (clang), the report's browser test (chromium, node), STEP export
+# (OpenCASCADE) and islands across MPI ranks (Open MPI).
+FULL=(
+  catch2 libfcl-dev libccd-dev libbenchmark-dev libpagmo-dev
+  python3-matplotlib
   clang-14 libfuzzer-14-dev
   nodejs chromium
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-ocaf-dev
   libocct-data-exchange-dev libocct-visualization-dev
   openmpi-bin libopenmpi-dev
 )
+if [ "$minimal" = 0 ]; then PACKAGES+=("${FULL[@]}"); fi
 
 # The report page's browser test: puppeteer-core (and three.js, which src/report/assets vendors),
 # pinned in web/package-lock.json, into web/node_modules; again only when the lock file changed.
@@ -36,7 +55,7 @@ for p in "${PACKAGES[@]}"; do
 done
 if [ ${#missing[@]} -eq 0 ]; then
   echo "setup: all ${#PACKAGES[@]} packages present"
-  web_packages
+  if [ "$minimal" = 0 ]; then web_packages; fi
   exit 0
 fi
 
@@ -55,5 +74,5 @@ fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
-web_packages
+if [ "$minimal" = 0 ]; then web_packages; fi
 echo "setup: done"
