@@ -32,7 +32,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Options {
+struct ComparePenaltiesOptions {
   std::string mold, config, out = "penalty-comparison", algorithm = "sms-emoa";
   std::vector<std::string> variants{"constrained_domination", "static_linear", "static_quadratic", "death"};
   int seeds = 5;
@@ -54,7 +54,7 @@ std::vector<mold::PenaltyVariant> parse_variants(const std::vector<std::string>&
   return out;
 }
 
-int run_compare(const Options& o) {
+int run_compare(const ComparePenaltiesOptions& o) {
   const std::vector<mold::PenaltyVariant> variants = parse_variants(o.variants);
   refuse_nonempty_folder(o.out);
   // One Scene for every variant: the variant is part of each run's config, not of the mold.
@@ -107,7 +107,7 @@ int run_compare(const Options& o) {
 }  // namespace
 
 Command add_compare_penalties_command(CLI::App& app) {
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<ComparePenaltiesOptions>();
   CLI::App* sub = app.add_subcommand(
       "compare-penalties",
       "Compare constraint-handling (penalty) variants on one mold: every variant runs on seeds 1..K with\n"

@@ -30,7 +30,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Options {
+struct OptimizeOptions {
   std::string mold, config, out = "mtcs-run", resume;
   std::optional<std::uint64_t> seed;
   std::optional<long> evaluations;
@@ -47,7 +47,7 @@ struct Options {
 
 // A built-in multi-objective test problem with SMS-EMOA: prints a JSON summary, and stores the
 // population every mu steps when --out is given.
-int run_test_problem(const Options& o) {
+int run_test_problem(const OptimizeOptions& o) {
   if (o.algorithm != "sms-emoa") throw option_error("--algorithm", "test problems run with --algorithm sms-emoa");
   if (!o.start.empty()) throw option_error("--start", "a mold's layout; test problems start from samples");
   std::unique_ptr<opt::Problem> problem;
@@ -67,7 +67,7 @@ int run_test_problem(const Options& o) {
   return 0;
 }
 
-int run_optimize(const Options& o) {
+int run_optimize(const OptimizeOptions& o) {
   std::optional<tbb::global_control> limit;
   if (const int threads = o.threads > 0 ? o.threads : run::threads_per_rank(); threads > 0)
     limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
@@ -91,7 +91,7 @@ int run_optimize(const Options& o) {
 }  // namespace
 
 Command add_optimize_command(CLI::App& app) {
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<OptimizeOptions>();
   CLI::App* sub = app.add_subcommand(
       "optimize",
       "Optimise the cooling bores of a mold: the evolution strategy (one weighted objective) or\n"

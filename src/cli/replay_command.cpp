@@ -23,14 +23,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Options {
+struct ReplayOptions {
   std::string dir, mold;
   run::ReplayChoice choice;
   bool verify = false;
   bool plots = true;
 };
 
-int run_replay(const Options& o) {
+int run_replay(const ReplayOptions& o) {
   const std::string db_path = (fs::path(o.dir) / "run.sqlite").string();
   if (!fs::exists(db_path)) throw io::InputError(db_path, 0, 0, "", "no stored run here");
   const store::RunStore db = store::RunStore::open(db_path);
@@ -65,7 +65,7 @@ int run_replay(const Options& o) {
 }  // namespace
 
 Command add_replay_command(CLI::App& app) {
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<ReplayOptions>();
   CLI::App* sub = app.add_subcommand(
       "replay",
       "Re-evaluate the populations of a stored mold run; for a sample of generations (--every,\n"

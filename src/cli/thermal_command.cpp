@@ -19,7 +19,7 @@
 namespace mtcs::cli {
 namespace {
 
-struct Options {
+struct ThermalOptions {
   std::string mold, layout, tier, samples, out, problem;
   double cell = 0;
   int elements = 0;
@@ -31,7 +31,7 @@ std::string extension(const std::string& path) { return std::filesystem::path(pa
 }  // namespace
 
 Command add_thermal_command(CLI::App& app) {
-  auto opt = std::make_shared<Options>();
+  auto opt = std::make_shared<ThermalOptions>();
   CLI::App* sub = app.add_subcommand(
       "thermal",
       "The cycle-averaged temperature of the cavity surface for one layout: mean, std and max\n"

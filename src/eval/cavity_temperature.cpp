@@ -11,6 +11,7 @@
 #include "mtcs/eval/part_coupling.h"
 #include "mtcs/eval/temperature_objectives.h"
 #include "mtcs/eval/thermal_model.h"
+#include "mtcs/eval/thermal_tiers.h"
 #include "mtcs/geometry/segment_distance.h"
 #include "mtcs/io/input_error.h"
 #include "mtcs/io/points_csv.h"
@@ -42,10 +43,6 @@ std::string describe(const geometry::Box& b) {
   s << "x " << b.min.x() << ".." << b.max.x() << ", y " << b.min.y() << ".." << b.max.y() << ", z " << b.min.z() << ".."
     << b.max.z() << " mm";
   return s.str();
-}
-
-thermal::Tier line_sink_tier(mold::ThermalTier t) {
-  return t == mold::ThermalTier::T1 ? thermal::Tier::T1 : t == mold::ThermalTier::T2 ? thermal::Tier::T2 : thermal::Tier::T2d;
 }
 
 }  // namespace

@@ -3,12 +3,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 namespace mtcs::eval {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using std::numbers::pi;
 constexpr double kMolarMass = 18.015e-3;  // kg/mol
 
 // Perry's 9th ed. Table 2-135, saturated liquid: T (K), density (mol/dm^3), c_p (kJ/(mol K)),
@@ -70,7 +71,7 @@ double tube_nusselt(double reynolds, double prandtl) {
 double coolant_film(double litres_per_minute, double diameter_mm, double celsius) {
   const WaterProperties w = water_properties(celsius);
   const double d = diameter_mm * 1e-3;                                // m
-  const double speed = litres_per_minute / 60e3 / (kPi * d * d / 4);  // m/s
+  const double speed = litres_per_minute / 60e3 / (pi * d * d / 4);  // m/s
   const double reynolds = w.density * speed * d / w.viscosity;
   const double film = tube_nusselt(reynolds, w.prandtl()) * w.conductivity / d;  // W/(m^2 K)
   return film * 1e-6;

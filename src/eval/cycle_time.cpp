@@ -3,18 +3,19 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace mtcs::eval {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using std::numbers::pi;
 constexpr double kTangentBelowEject = 1.0;  // K
 }  // namespace
 
 double cooling_time(double wall_thickness, const mold::Polymer& polymer, double wall_temperature) {
-  const double scale = wall_thickness * wall_thickness / (kPi * kPi * polymer.diffusivity);
+  const double scale = wall_thickness * wall_thickness / (pi * pi * polymer.diffusivity);
   const double melt = polymer.melt_temperature, eject = polymer.eject_temperature;
-  auto exact = [&](double t) { return scale * std::log(4 / kPi * (melt - t) / (eject - t)); };
+  auto exact = [&](double t) { return scale * std::log(4 / pi * (melt - t) / (eject - t)); };
   const double knee = eject - kTangentBelowEject;
   if (wall_temperature <= knee) return exact(wall_temperature);
   const double slope = scale * (1 / (eject - knee) - 1 / (melt - knee));

@@ -11,7 +11,7 @@
 namespace mtcs::eval {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 // Terms of the series: at Fo = 1e-4 the last kept term is below 1e-12 of the first.
 constexpr int kTerms = 400;
 }  // namespace
@@ -21,7 +21,7 @@ double slab_mean_fraction(double fourier) {
   double sum = 0;
   for (int k = 0; k < kTerms; ++k) {
     const double n = 2 * k + 1;
-    sum += 8 / (n * n * kPi * kPi) * std::exp(-n * n * kPi * kPi * fourier);
+    sum += 8 / (n * n * pi * pi) * std::exp(-n * n * pi * pi * fourier);
   }
   return sum;
 }
@@ -29,12 +29,12 @@ double slab_mean_fraction(double fourier) {
 double slab_odd_buildup(double fourier) {
   if (!(fourier > 0)) return 0;
   double sum = 0;
-  for (int m = 1; m <= kTerms; ++m) sum += -std::expm1(-4.0 * m * m * kPi * kPi * fourier) / (double(m) * m);
+  for (int m = 1; m <= kTerms; ++m) sum += -std::expm1(-4.0 * m * m * pi * pi * fourier) / (double(m) * m);
   // The tail, m > kTerms, as the integral from kTerms + 1/2 of (1 - exp(-a x^2)) / x^2:
   // (1 - exp(-a X^2)) / X + sqrt(pi a) erfc(sqrt(a) X).
-  const double a = 4 * kPi * kPi * fourier, X = kTerms + 0.5;
-  sum += -std::expm1(-a * X * X) / X + std::sqrt(kPi * a) * std::erfc(std::sqrt(a) * X);
-  return 6 / (kPi * kPi) * sum;
+  const double a = 4 * pi * pi * fourier, X = kTerms + 0.5;
+  sum += -std::expm1(-a * X * X) / X + std::sqrt(pi * a) * std::erfc(std::sqrt(a) * X);
+  return 6 / (pi * pi) * sum;
 }
 
 PartCoupling part_coupling(const mold::Polymer& polymer, double thickness, double in_mold, double cycle) {

@@ -9,7 +9,6 @@
 #include "mtcs/thermal/void_plane.h"
 
 namespace mtcs::eval {
-namespace {
 
 thermal::Tier line_sink_tier(mold::ThermalTier tier) {
   switch (tier) {
@@ -18,6 +17,8 @@ thermal::Tier line_sink_tier(mold::ThermalTier tier) {
     default: return thermal::Tier::T2d;
   }
 }
+
+namespace {
 
 // The model and its per-thread caches live as long as the solver (shared by its copies).
 struct LineSinks {

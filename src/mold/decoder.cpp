@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace mtcs::mold {
 
@@ -9,7 +10,7 @@ using geometry::Vec3;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using std::numbers::pi;
 
 bool contains(const std::vector<Face>& faces, Face f) {
   return std::find(faces.begin(), faces.end(), f) != faces.end();
@@ -114,7 +115,7 @@ Layout decode(const Scene& scene, const Genome& genome) {
     if (outlet_off > port_tol) layout.ports.push_back({int(c), false, outlet_off});
 
     const double D = circuit.diameter;
-    const double tip = 0.5 * D / std::tan(drill.tip_angle_deg * kPi / 360);
+    const double tip = 0.5 * D / std::tan(drill.tip_angle_deg * pi / 360);
     const double overshoot = tip + drill.min_overlap;
     const int n = int(pts.size()) - 1;  // flow segments
     const int first = int(layout.bores.size());
@@ -128,7 +129,7 @@ Layout decode(const Scene& scene, const Genome& genome) {
         k.near_flow = from;
         k.far_end = far_end;
         k.face = face_of_normal(e.normal);
-        k.angle_deg = std::acos(std::clamp(std::abs(dir.dot(e.normal.normalized())), 0.0, 1.0)) * 180 / kPi;
+        k.angle_deg = std::acos(std::clamp(std::abs(dir.dot(e.normal.normalized())), 0.0, 1.0)) * 180 / pi;
         k.allowed = contains(drill.allowed_faces, k.face);
         k.ok = k.allowed && k.angle_deg <= drill.max_angle_deg + 1e-9;
         k.plugged = !at_port;

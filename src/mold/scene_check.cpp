@@ -18,7 +18,7 @@ std::string size_text(const Vec3& s) {
   return out.str();
 }
 
-std::string mm(double v) {
+std::string length_text(double v) {
   std::ostringstream out;
   out.precision(6);
   out << v << " mm";
@@ -30,11 +30,11 @@ std::string mm(double v) {
 std::string leaves(const Box& inner, const Box& outer, double tol) {
   for (int k = 0; k < 3; ++k) {
     if (inner.min[k] < outer.min[k] - tol)
-      return std::string("reaches ") + kAxes[k] + " = " + mm(inner.min[k]) + ", beyond the block's -" + kAxes[k] +
-             " face at " + mm(outer.min[k]);
+      return std::string("reaches ") + kAxes[k] + " = " + length_text(inner.min[k]) + ", beyond the block's -" + kAxes[k] +
+             " face at " + length_text(outer.min[k]);
     if (inner.max[k] > outer.max[k] + tol)
-      return std::string("reaches ") + kAxes[k] + " = " + mm(inner.max[k]) + ", beyond the block's +" + kAxes[k] +
-             " face at " + mm(outer.max[k]);
+      return std::string("reaches ") + kAxes[k] + " = " + length_text(inner.max[k]) + ", beyond the block's +" + kAxes[k] +
+             " face at " + length_text(outer.max[k]);
   }
   return "";
 }
@@ -72,7 +72,7 @@ void check_scene(const io::YamlReader& r, const YAML::Node& root, const MoldSpec
   for (int k = 0; k < 3; ++k)
     if (!(size[k] <= kMaxBlockExtent)) {
       const YAML::Node at = pick(b, spec.block.mesh ? "scale" : "box", field, "block");
-      r.fail(at, field, "the block measures " + size_text(size) + ": more than " + mm(kMaxBlockExtent) + " along " +
+      r.fail(at, field, "the block measures " + size_text(size) + ": more than " + length_text(kMaxBlockExtent) + " along " +
                             kAxes[k] + " is no mold block in mm" + (spec.block.mesh ? "; " + kScaleHint : ""));
     }
   const double tol = 1e-6 * size.maxCoeff();

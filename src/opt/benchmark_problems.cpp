@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace mtcs::opt {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using std::numbers::pi;
 
 class Benchmark final : public Problem {
  public:
@@ -71,10 +72,10 @@ class Benchmark final : public Problem {
     const double n = double(x.size());
     double f1 = x[0], g = 0;
     if (name_ == "zdt4") {
-      for (std::size_t i = 1; i < x.size(); ++i) g += x[i] * x[i] - 10 * std::cos(4 * kPi * x[i]);
+      for (std::size_t i = 1; i < x.size(); ++i) g += x[i] * x[i] - 10 * std::cos(4 * pi * x[i]);
       g = 1 + 10 * (n - 1) + g;
     } else if (name_ == "zdt6") {
-      f1 = 1 - std::exp(-4 * x[0]) * std::pow(std::sin(6 * kPi * x[0]), 6);
+      f1 = 1 - std::exp(-4 * x[0]) * std::pow(std::sin(6 * pi * x[0]), 6);
       for (std::size_t i = 1; i < x.size(); ++i) g += x[i];
       g = 1 + 9 * std::pow(g / (n - 1), 0.25);
     } else {
@@ -83,7 +84,7 @@ class Benchmark final : public Problem {
     }
     double h;
     if (name_ == "zdt2" || name_ == "zdt6") h = 1 - std::pow(f1 / g, 2);
-    else if (name_ == "zdt3") h = 1 - std::sqrt(f1 / g) - (f1 / g) * std::sin(10 * kPi * f1);
+    else if (name_ == "zdt3") h = 1 - std::sqrt(f1 / g) - (f1 / g) * std::sin(10 * pi * f1);
     else h = 1 - std::sqrt(f1 / g);
     return {f1, g * h};
   }
@@ -97,7 +98,7 @@ class Benchmark final : public Problem {
       for (int i = m - 1; i < n; ++i) s += f(x[std::size_t(i)]);
       return s;
     };
-    if (id == 1 || id == 3) g = 100 * (k + tail([](double v) { return (v - 0.5) * (v - 0.5) - std::cos(20 * kPi * (v - 0.5)); }));
+    if (id == 1 || id == 3) g = 100 * (k + tail([](double v) { return (v - 0.5) * (v - 0.5) - std::cos(20 * pi * (v - 0.5)); }));
     else if (id == 6) g = tail([](double v) { return std::pow(v, 0.1); });
     else if (id == 7) g = 1 + 9 * tail([](double v) { return v; }) / k;
     else g = tail([](double v) { return (v - 0.5) * (v - 0.5); });
@@ -115,7 +116,7 @@ class Benchmark final : public Problem {
       double h = 0;
       for (int i = 0; i < m - 1; ++i) {
         f[std::size_t(i)] = x[std::size_t(i)];
-        h += x[std::size_t(i)] / (1 + g) * (1 + std::sin(3 * kPi * x[std::size_t(i)]));
+        h += x[std::size_t(i)] / (1 + g) * (1 + std::sin(3 * pi * x[std::size_t(i)]));
       }
       f[std::size_t(m - 1)] = (1 + g) * (m - h);
       return f;
@@ -124,9 +125,9 @@ class Benchmark final : public Problem {
     std::vector<double> theta(static_cast<std::size_t>(m - 1));
     for (int i = 0; i < m - 1; ++i) {
       const double xi = x[std::size_t(i)];
-      if (id == 4) theta[std::size_t(i)] = std::pow(xi, 100) * kPi / 2;
-      else if ((id == 5 || id == 6) && i > 0) theta[std::size_t(i)] = kPi / (4 * (1 + g)) * (1 + 2 * g * xi);
-      else theta[std::size_t(i)] = xi * kPi / 2;
+      if (id == 4) theta[std::size_t(i)] = std::pow(xi, 100) * pi / 2;
+      else if ((id == 5 || id == 6) && i > 0) theta[std::size_t(i)] = pi / (4 * (1 + g)) * (1 + 2 * g * xi);
+      else theta[std::size_t(i)] = xi * pi / 2;
     }
     for (int i = 0; i < m; ++i) {
       double v = 1 + g;

@@ -1,23 +1,15 @@
 #include "island_writer.h"
 
 #include <sys/resource.h>
-#include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
 
+#include "cpu_clock.h"
+
 namespace mtcs::run {
-namespace {
-
-double thread_cpu_seconds() {
-  timespec t{};
-  ::clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
-
-}  // namespace
 
 IslandWriter::IslandWriter(store::RunStore& db, std::function<void(store::IslandsGeneration&)> complete)
     : db_(db), complete_(std::move(complete)), thread_([this] { loop(); }) {}

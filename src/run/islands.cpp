@@ -2,7 +2,6 @@
 
 #include <spdlog/spdlog.h>
 #include <tbb/parallel_for.h>
-#include <time.h>
 
 #include <algorithm>
 #include <chrono>
@@ -15,6 +14,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "cpu_clock.h"
 #include "island_writer.h"
 #include "mtcs/io/input_error.h"
 #include "mtcs/run/progress_line.h"
@@ -227,14 +227,6 @@ std::string island_progress_line(const MoldOptimizer& base, const opt::Generatio
 }
 
 namespace {
-
-double cpu_seconds(clockid_t clock) {
-  timespec t{};
-  ::clock_gettime(clock, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
-double process_cpu_seconds() { return cpu_seconds(CLOCK_PROCESS_CPUTIME_ID); }
-double thread_cpu_seconds() { return cpu_seconds(CLOCK_THREAD_CPUTIME_ID); }
 
 // Where a process's wall time goes in run_islands, for the speed study (the --verbose log).
 // Also the CPU seconds of this thread between two meetings of the islands (its work: with one

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "mtcs/geometry/segment_distance.h"
 #include "mtcs/mold/decoder.h"
@@ -15,7 +16,7 @@ using mold::face_plane;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using std::numbers::pi;
 
 double nearest_wall(const mold::Layout& layout, const Vec3& p) {
   double best = std::numeric_limits<double>::infinity();
@@ -123,7 +124,7 @@ Reached circuit_reaching(const eval::Pipeline& pipeline, const ReachRequest& req
     // it by the least distance the cavity allows (the target is on the cavity's surface).
     const int leg = drillable[std::size_t(rng.below(int(drillable.size())))];
     const int i = (leg + 1) % 3, j = (leg + 2) % 3;
-    const double angle = 2 * kPi * rng.uniform();
+    const double angle = 2 * pi * rng.uniform();
     Vec3 away = Vec3::Zero();
     away[i] = std::cos(angle), away[j] = std::sin(angle);
     mold::Circuit c = u_through(spec, block, request.region, request.target,

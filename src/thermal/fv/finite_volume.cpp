@@ -20,8 +20,6 @@ using fv::kVoid;
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 // A conductance from a steel cell to a fixed temperature (a bore wall or the air), for the
 // heat balance.
 struct Sink {
@@ -238,7 +236,7 @@ FvResult solve_finite_volume(const Model& model, const Samples& samples, const F
   result.steel_cells = std::size_t(n);
 
   field.kind.resize(n_cells);
-  field.temperature.assign(n_cells, kNaN);
+  field.temperature.assign(n_cells, fv::kNoTemperature);
   for (int kk = 0; kk < field.cells[2]; ++kk)
     for (int j = 0; j < field.cells[1]; ++j)
       for (int i = 0; i < field.cells[0]; ++i) {

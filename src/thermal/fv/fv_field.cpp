@@ -14,12 +14,6 @@ using fv::face_plane_axes;
 using fv::kSteel;
 using fv::kVoid;
 
-namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-}  // namespace
-
 Vec3 FvField::centre(int i, int j, int k) const {
   return origin + Vec3((i + 0.5) * spacing.x(), (j + 0.5) * spacing.y(), (k + 0.5) * spacing.z());
 }
@@ -88,7 +82,7 @@ double FvField::interior_temperature(const Vec3& p) const {
   // No steel among the eight: the nearest steel centre within two cells.
   std::array<int, 3> home{};
   for (int a = 0; a < 3; ++a) home[a] = fv::clamped_floor((p[a] - origin[a]) / spacing[a], cells[a]);
-  double best = std::numeric_limits<double>::infinity(), value = kNaN;
+  double best = std::numeric_limits<double>::infinity(), value = fv::kNoTemperature;
   for (int dk = -2; dk <= 2; ++dk)
     for (int dj = -2; dj <= 2; ++dj)
       for (int di = -2; di <= 2; ++di) {
@@ -101,9 +95,9 @@ double FvField::interior_temperature(const Vec3& p) const {
 }
 
 double FvField::temperature_at(const Vec3& p) const {
-  if (!p.allFinite() || temperature.empty()) return kNaN;
+  if (!p.allFinite() || temperature.empty()) return fv::kNoTemperature;
   for (int a = 0; a < 3; ++a)  // more than a cell outside the block: nothing near
-    if (p[a] < origin[a] - spacing[a] || p[a] > origin[a] + (cells[a] + 1) * spacing[a]) return kNaN;
+    if (p[a] < origin[a] - spacing[a] || p[a] > origin[a] + (cells[a] + 1) * spacing[a]) return fv::kNoTemperature;
   for (int face = 0; face < 6; ++face) {
     const int a = face_axis(face);
     const double plane = origin[a] + (face_is_max(face) ? cells[a] * spacing[a] : 0.0);

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <unordered_map>
 #include <vector>
 
@@ -12,6 +13,8 @@
 namespace mtcs::thermal::fv {
 
 constexpr int kSteel = FvField::kSteel, kVoid = FvField::kCavity;  // a channel's cells hold its index
+// The temperature of a cell or point outside the steel.
+inline constexpr double kNoTemperature = std::numeric_limits<double>::quiet_NaN();
 
 // Face f of the block (BlockFace order) is normal to axis f / 2, at the max end when f is odd;
 // the direction dir of a link (-x, +x, -y, ...) uses the same numbering.

@@ -19,7 +19,6 @@ namespace mtcs::thermal {
 
 namespace {
 
-constexpr double kInf = kInfiniteFilm;
 // The heat tree's opening angle: a group of triangles takes its expansion beyond 1 / theta of
 // its radius. Against the direct sum, `mtcs thermal` on the bundled mesh molds moves by at most
 // 0.005 K (ribbed_box's max; experiments/thermal/heat_tree.md), its model built in 3.2 s
@@ -278,8 +277,8 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
   std::array<double, 6> sign{};
   for (int f = 0; f < 6; ++f) {
     const FaceCondition& fc = setting.faces[f];
-    sign[f] = fc.film == kInf ? -1 : 1;
-    if (fc.film == kInf) {
+    sign[f] = fc.film == kInfiniteFilm ? -1 : 1;
+    if (fc.film == kInfiniteFilm) {
       if (m.fixed_constant && *m.fixed_constant != fc.ambient)
         throw std::invalid_argument("line sinks: isothermal faces must share one ambient");
       m.fixed_constant = fc.ambient;
@@ -339,7 +338,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
   const int g = std::max(1, options.face_grid);
   for (int f = 0; f < 6; ++f) {
     const FaceCondition& fc = setting.faces[f];
-    if (!(fc.film > 0) || fc.film == kInf) continue;
+    if (!(fc.film > 0) || fc.film == kInfiniteFilm) continue;
     ConvectiveFace cf;
     cf.face = f;
     cf.film = fc.film;

@@ -20,8 +20,6 @@ namespace mtcs::thermal {
 
 namespace {
 
-constexpr double kInf = kInfiniteFilm;
-
 // The part of a channel's axis inside the block (Liang-Barsky); ends already inside are kept
 // bit for bit, so the cache keys of ordinary channels do not change. Empty: nothing inside.
 std::optional<geometry::Segment> clip_to_block(const Box& box, const geometry::Segment& s) {
@@ -228,9 +226,9 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
     const auto& b = *blocks[c];
     const Channel& ch = channels[c];
     const double R = b.axis.radius, h = ch.film;
-    const double w1 = h == kInf ? 1 : h * R / (k + h * R);
-    const double w2 = h == kInf ? 0 : 1 / (2 * std::numbers::pi * (k + h * R));
-    const double beta = h == kInf ? -1 : (k - h * R) / (k + h * R);
+    const double w1 = h == kInfiniteFilm ? 1 : h * R / (k + h * R);
+    const double w2 = h == kInfiniteFilm ? 0 : 1 / (2 * std::numbers::pi * (k + h * R));
+    const double beta = h == kInfiniteFilm ? -1 : (k - h * R) / (k + h * R);
     // The rows' fields, block by block: each channel's columns and each face's loss, near part
     // plus the far lattice (the rows' far kernel times the sources' moments); then each row
     // weighted as its condition needs.
