@@ -26,6 +26,6 @@ function(mtcs_module name)
   target_link_libraries(mtcs_${name} PUBLIC ${M_PUBLIC} PRIVATE ${M_PRIVATE})
   mtcs_target_defaults(mtcs_${name})
   if(MTCS_UNITY_BUILD)  # names private to a file must then be unique within its module
-    set_target_properties(mtcs_${name} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8)
+    set_target_properties(mtcs_${name} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 16)
   endif()
 endfunction()
