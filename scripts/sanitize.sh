@@ -7,6 +7,8 @@ cd "$(dirname "$0")/.."
 export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
 # Debug builds (-g) hash the working folder too unless told not to: clones would never hit.
 export CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
+# Ninja for a new tree, as scripts/build.sh.
+if command -v ninja >/dev/null 2>&1; then export CMAKE_GENERATOR="${CMAKE_GENERATOR:-Ninja}"; fi
 # -O1 and line tables only (what OSS-Fuzz builds with): stack traces keep file:line, and a cold
 # build takes ~2.5x less than -O2 -g (experiments/ci/README.md). clang++-14 (scripts/setup.sh
 # installs it for the fuzzers) compiles the tree in 0.67x gcc's time; MTCS_ASAN_CXX=c++ builds

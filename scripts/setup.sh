@@ -16,7 +16,7 @@ esac
 
 # Building and running mtcs: the compiler and the libraries every module links.
 PACKAGES=(
-  build-essential cmake ccache pkg-config python3
+  build-essential cmake ninja-build ccache pkg-config python3
   libeigen3-dev libnlopt-cxx-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libyaml-cpp-dev libspdlog-dev libfmt-dev libcli11-dev nlohmann-json3-dev
   libsqlite3-dev libtbb-dev libabsl-dev
