@@ -55,4 +55,7 @@ TEST_CASE("mtcs bench: runs mtcs-bench with the arguments and its exit code", "[
   const int code = WEXITSTATUS(std::system((alone.string() + " bench distance 2>" + err.string()).c_str()));
   CHECK(code == 127);
   CHECK(read_text(err).find("mtcs-bench") != std::string::npos);
+  // ... and how to get it on a machine the demo set up (scripts/setup.sh --minimal has no peers).
+  CHECK(read_text(err).find("scripts/setup.sh") != std::string::npos);
+  CHECK(read_text(err).find("-DMTCS_BUILD_BENCH=ON") != std::string::npos);
 }
