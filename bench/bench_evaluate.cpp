@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <stdexcept>
 
 #include "bench_evaluate.h"
 #include "mtcs/eval/pipeline.h"
@@ -50,6 +51,13 @@ mold::Circuit random_circuit(const mold::Scene& scene, opt::Rng& rng, int bores,
   std::vector<int> axes;
   for (const mold::Face f : spec.drilling.allowed_faces)
     if (std::find(axes.begin(), axes.end(), axis_of(f)) == axes.end()) axes.push_back(axis_of(f));
+  if (axes.size() < 2) {  // one drillable axis (the reference block): a straight bore through
+    if (axis_of(out) != axis_of(in))
+      throw std::runtime_error("random layouts: the inlet and outlet faces lie on different axes, and only one is drillable");
+    p[axis_of(out)] = mold::face_plane(b, out);
+    c.waypoints.back() = p;
+    return c;
+  }
   for (int leg = 1; leg + 1 < bores; ++leg) {
     std::vector<int> choice;
     for (const int k : axes)

@@ -125,6 +125,21 @@ TEST_CASE("mtcs bench thermal on a mold: the tau of cycle_time and of temperatur
   }
 }
 
+TEST_CASE("mtcs bench thermal on a mold drillable along one axis: random straight bores", "[cli][thermal]") {
+  // molds/thermal_block.yaml drills along x only: a random circuit is one bore through (it
+  // crashed drawing a second axis that is not there).
+  const fs::path out = scratch("thermal", "bench_thermal_block.json");
+  REQUIRE(run_mtcs("bench thermal --case " + std::string(MTCS_SOURCE_DIR) + "/molds/thermal_block.yaml --layouts 3 "
+                   "--reference-cell 4 --repeat 1 --tiers \"t2d M=4,fd h=4\" --json >" + out.string()) == 0);
+  const auto j = nlohmann::json::parse(read_text(out));
+  REQUIRE(j["tiers"].size() == 2);
+  for (const auto& t : j["tiers"]) {
+    REQUIRE(t["rms_k"].is_number());
+    if (t["tier"] == "fd h=4 mm") CHECK(t["rms_k"] == 0.0);
+    else CHECK(t["rms_k"].get<double>() < 1.0);  // line sinks against the finite volumes at 4 mm: 0.27 K
+  }
+}
+
 TEST_CASE("mtcs optimize with temperature objectives: the same run on 1 and 2 threads, replayed bit for bit", "[cli][thermal]") {
   // The line sinks keep a cache per thread; a cached evaluation must equal a cold one.
   std::string summary[2];
