@@ -205,7 +205,16 @@ struct Scored {
 
 Scored score(const Case& c, const Tier& tier) {
   Scored s;
+  // The finite volumes take seconds to minutes a layout on a mold: say how far they are.
+  const auto start = std::chrono::steady_clock::now();
+  auto said = start;
   for (const auto& layout : c.layouts) {
+    if (tier.name == "fd" && !s.ms_full.empty() && seconds_since(said) > 10) {
+      said = std::chrono::steady_clock::now();
+      const double spent = seconds_since(start), done = double(s.ms_full.size());
+      std::fprintf(stderr, "  fd h=%g mm: %zu of %zu layouts in %.0f s, ~%.0f s left\n", tier.cell, s.ms_full.size(),
+                   c.layouts.size(), spent, spent / done * (double(c.layouts.size()) - done));
+    }
     std::vector<double> t;
     if (tier.name == "t0") {
       const auto t0 = std::chrono::steady_clock::now();
@@ -309,6 +318,21 @@ std::string label(const Tier& t) {
 int bench_thermal(const ThermalBenchOptions& o) {
   const Case c = o.scene == "block" ? block_case(o.layouts, o.seed)
                                     : mold_case(o.scene, o.layouts, o.seed, o.circuits, !o.through_part, o.difference);
+  // A reference of more than 30 M cells is refused before any work: the finite volumes' memory
+  // and time a layout grow with the cells (the plate's block at 1 mm has 7.2 M).
+  const geometry::Vec3 size = c.setting.block.max - c.setting.block.min;
+  const double cells = std::ceil(size.x() / o.reference_cell) * std::ceil(size.y() / o.reference_cell) *
+                       std::ceil(size.z() / o.reference_cell);
+  constexpr double kMaxReferenceCells = 30e6;
+  if (cells > kMaxReferenceCells) {
+    const double coarser = o.reference_cell * std::cbrt(cells / kMaxReferenceCells);
+    std::fprintf(stderr,
+                 "mtcs bench thermal: --reference-cell: %g mm makes %.0f M cells of the %g x %g x %g mm block (at most "
+                 "%.0f M); use --reference-cell %.2g or coarser\n",
+                 o.reference_cell, cells * 1e-6, size.x(), size.y(), size.z(), kMaxReferenceCells * 1e-6,
+                 std::ceil(coarser * 100) / 100);
+    return 2;
+  }
   std::cerr << "bench thermal: " << c.layouts.size() << " layouts, " << c.count << " samples ("
             << c.samples.size() - c.count << " across the part); reference: finite volumes at " << o.reference_cell << " mm\n";
   const Tier reference{"fd", 0, o.reference_cell};

@@ -140,6 +140,17 @@ TEST_CASE("mtcs bench thermal on a mold drillable along one axis: random straigh
   }
 }
 
+TEST_CASE("mtcs bench thermal refuses a reference too fine for the block, before any work", "[cli][thermal]") {
+  const fs::path err = scratch("thermal", "bench_too_fine.err");
+  // 300 x 200 x 120 mm at 0.5 mm: 57.6 M cells.
+  CHECK(run_mtcs("bench thermal --case " + std::string(MTCS_SOURCE_DIR) + "/molds/plate.yaml --layouts 3 "
+                 "--reference-cell 0.5",
+                 err) == 2);
+  const std::string text = read_text(err);
+  CHECK(text.find("--reference-cell: 0.5 mm makes 58 M cells") != std::string::npos);
+  CHECK(text.find("use --reference-cell 0.63 or coarser") != std::string::npos);
+}
+
 TEST_CASE("mtcs optimize with temperature objectives: the same run on 1 and 2 threads, replayed bit for bit", "[cli][thermal]") {
   // The line sinks keep a cache per thread; a cached evaluation must equal a cold one.
   std::string summary[2];
