@@ -7,7 +7,8 @@
 #                                           with start and end: under 2 minutes for all 11)
 # Seeds come from fuzz/corpus/<target>/ (read only); what a run learns goes to
 # build-fuzz/corpus/<target>/, crashes to build-fuzz/artifacts/<target>/ and fail the script.
-# Without clang-14 or libFuzzer (libfuzzer-14-dev) it says so and exits 0.
+# Without clang-14 or libFuzzer (libfuzzer-14-dev) it says so and exits 0 (1 under the test
+# command, which sets MTCS_FUZZ_REQUIRED=1).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}" CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
@@ -20,13 +21,13 @@ if [ "${1:-}" = --smoke ]; then seconds="${MTCS_FUZZ_SMOKE_SECONDS:-7}"; shift
 elif [[ "${1:-}" =~ ^[0-9]+$ ]]; then seconds="$1"; shift; fi
 
 if ! command -v "$CXX_FUZZ" >/dev/null 2>&1; then
-  echo "fuzz: SKIPPED: $CXX_FUZZ not found (apt-get install clang-14 libfuzzer-14-dev)"; exit 0
+  echo "fuzz: SKIPPED: $CXX_FUZZ not found (apt-get install clang-14 libfuzzer-14-dev)"; exit "${MTCS_FUZZ_REQUIRED:-0}"
 fi
 probe=$(mktemp -d)
 trap 'rm -rf "$probe"' EXIT
 echo 'extern "C" int LLVMFuzzerTestOneInput(const unsigned char*, unsigned long) { return 0; }' > "$probe/p.cpp"
 if ! "$CXX_FUZZ" -fsanitize=fuzzer "$probe/p.cpp" -o "$probe/p" >/dev/null 2>&1; then
-  echo "fuzz: SKIPPED: $CXX_FUZZ cannot link -fsanitize=fuzzer (apt-get install libfuzzer-14-dev)"; exit 0
+  echo "fuzz: SKIPPED: $CXX_FUZZ cannot link -fsanitize=fuzzer (apt-get install libfuzzer-14-dev)"; exit "${MTCS_FUZZ_REQUIRED:-0}"
 fi
 
 # Each file compiled alone, not in the unity batches of the other trees: a file that uses a

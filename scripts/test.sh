@@ -3,6 +3,18 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
+# The tests of an optional component skip when it is missing (a user's machine may lack it);
+# here setup.sh installed them all, so a missing one is an error, not a quiet pass.
+absent=()
+/usr/bin/python3 -c 'import matplotlib' 2>/dev/null || absent+=("matplotlib (python3-matplotlib)")
+command -v chromium >/dev/null 2>&1 || absent+=("chromium")
+[ -d web/node_modules/puppeteer-core ] || absent+=("puppeteer-core (npm ci --prefix web)")
+command -v mpirun >/dev/null 2>&1 || absent+=("mpirun (openmpi-bin)")
+if [ ${#absent[@]} -gt 0 ]; then
+  echo "test.sh: missing after setup.sh: ${absent[*]}" >&2
+  exit 1
+fi
+export MTCS_FUZZ_REQUIRED=1  # fuzz.sh: no clang or libFuzzer is an error here
 # Three build trees (Release, the sanitizers', the fuzzers') take ~10 GB; a full disk fails the
 # compiler half-way with "No space left on device". Say so first.
 free_gb=$(df -Pk . | awk 'NR == 2 {print int($4 / 1048576)}')
