@@ -52,8 +52,8 @@ mold::Circuit random_circuit(const mold::Scene& scene, opt::Rng& rng, int bores,
   for (const mold::Face f : spec.drilling.allowed_faces)
     if (std::find(axes.begin(), axes.end(), axis_of(f)) == axes.end()) axes.push_back(axis_of(f));
   if (axes.size() < 2) {  // one drillable axis (the reference block): a straight bore through
-    if (axis_of(out) != axis_of(in))
-      throw std::runtime_error("random layouts: the inlet and outlet faces lie on different axes, and only one is drillable");
+    if (axis_of(out) != axis_of(in) || out == in)
+      throw std::runtime_error("random layouts: one drillable axis needs the inlet and outlet on its two opposite faces");
     p[axis_of(out)] = mold::face_plane(b, out);
     c.waypoints.back() = p;
     return c;

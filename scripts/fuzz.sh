@@ -21,22 +21,24 @@ if [ "${1:-}" = --smoke ]; then seconds="${MTCS_FUZZ_SMOKE_SECONDS:-7}"; shift
 elif [[ "${1:-}" =~ ^[0-9]+$ ]]; then seconds="$1"; shift; fi
 
 if ! command -v "$CXX_FUZZ" >/dev/null 2>&1; then
-  echo "fuzz: SKIPPED: $CXX_FUZZ not found (apt-get install clang-14 libfuzzer-14-dev)"; exit "${MTCS_FUZZ_REQUIRED:-0}"
+  echo "fuzz: $([ "${MTCS_FUZZ_REQUIRED:-0}" = 1 ] && echo FAILED || echo SKIPPED): $CXX_FUZZ not found (apt-get install clang-14 libfuzzer-14-dev)"
+  exit "${MTCS_FUZZ_REQUIRED:-0}"
 fi
 probe=$(mktemp -d)
 trap 'rm -rf "$probe"' EXIT
 echo 'extern "C" int LLVMFuzzerTestOneInput(const unsigned char*, unsigned long) { return 0; }' > "$probe/p.cpp"
 if ! "$CXX_FUZZ" -fsanitize=fuzzer "$probe/p.cpp" -o "$probe/p" >/dev/null 2>&1; then
-  echo "fuzz: SKIPPED: $CXX_FUZZ cannot link -fsanitize=fuzzer (apt-get install libfuzzer-14-dev)"; exit "${MTCS_FUZZ_REQUIRED:-0}"
+  echo "fuzz: $([ "${MTCS_FUZZ_REQUIRED:-0}" = 1 ] && echo FAILED || echo SKIPPED): $CXX_FUZZ cannot link -fsanitize=fuzzer (apt-get install libfuzzer-14-dev)"
+  exit "${MTCS_FUZZ_REQUIRED:-0}"
 fi
 
 # Each file compiled alone, not in the unity batches of the other trees: a file that uses a
-# header only a batch-mate includes fails here.
+# header only a batch-mate includes fails here. mtcs_cli too, so that every module's files are.
 # -O1 and line tables only, as OSS-Fuzz builds: a cold build ~2.5x faster than -O2 -g.
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER="$CXX_FUZZ" \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
   -DMTCS_FUZZ=ON -DMTCS_BUILD_TESTS=OFF -DMTCS_UNITY_BUILD=OFF >/dev/null
-cmake --build build-fuzz -j2 --target mtcs_fuzz
+cmake --build build-fuzz -j2 --target mtcs_fuzz mtcs_cli
 
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(mold_spec layout pairs_csv cylinders_csv points_csv front_file

@@ -14,12 +14,15 @@ if [ ! -f "$work/bookworm-pristine.tar" ]; then
   tar -C "$work/seed" -cf "$work/bookworm-pristine.tar" . && rm -rf "$work/seed"
 fi
 root="$work/bare"
-rm -rf "$root" && mkdir -p "$root"
+# A run killed before its trap could leave the host's /proc, /sys or /dev mounted in there:
+# unmount first, and never delete across a mount.
+for m in dev sys proc; do umount -l "$root/$m" 2>/dev/null || true; done
+trap 'for m in dev sys proc; do umount -l "$root/$m" 2>/dev/null || true; done' EXIT
+rm -rf --one-file-system "$root" && mkdir -p "$root"
 tar -C "$root" -xf "$work/bookworm-pristine.tar"
 cp /etc/resolv.conf "$root/etc/resolv.conf"
 git clone -q "$repo" "$root/root/mtcs"
 for m in proc sys dev; do mount --bind "/$m" "$root/$m"; done
-trap 'for m in dev sys proc; do umount -l "$root/$m" 2>/dev/null || true; done' EXIT
 start=$(date +%s)
 chroot "$root" /usr/bin/env -i HOME=/root PATH=/usr/sbin:/usr/bin:/sbin:/bin TERM=dumb \
   bash -c 'cd /root/mtcs && bash scripts/demo.sh' > "$log" 2>&1

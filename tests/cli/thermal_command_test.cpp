@@ -133,22 +133,20 @@ TEST_CASE("mtcs bench thermal on a mold drillable along one axis: random straigh
                    "--reference-cell 4 --repeat 1 --tiers \"t2d M=4,fd h=4\" --json >" + out.string()) == 0);
   const auto j = nlohmann::json::parse(read_text(out));
   REQUIRE(j["tiers"].size() == 2);
-  for (const auto& t : j["tiers"]) {
-    REQUIRE(t["rms_k"].is_number());
-    if (t["tier"] == "fd h=4 mm") CHECK(t["rms_k"] == 0.0);
-    else CHECK(t["rms_k"].get<double>() < 1.0);  // line sinks against the finite volumes at 4 mm: 0.27 K
-  }
+  for (const auto& t : j["tiers"])
+    if (t["tier"] == "t2d M=4") CHECK(t["rms_k"].get<double>() < 1.0);  // against the finite volumes at 4 mm: 0.27 K
 }
 
-TEST_CASE("mtcs bench thermal refuses a reference too fine for the block, before any work", "[cli][thermal]") {
+TEST_CASE("mtcs bench thermal refuses a reference too fine for the block, before solving", "[cli][thermal]") {
   const fs::path err = scratch("thermal", "bench_too_fine.err");
   // 300 x 200 x 120 mm at 0.5 mm: 57.6 M cells.
   CHECK(run_mtcs("bench thermal --case " + std::string(MTCS_SOURCE_DIR) + "/molds/plate.yaml --layouts 3 "
                  "--reference-cell 0.5",
                  err) == 2);
   const std::string text = read_text(err);
-  CHECK(text.find("--reference-cell: 0.5 mm makes 58 M cells") != std::string::npos);
-  CHECK(text.find("use --reference-cell 0.63 or coarser") != std::string::npos);
+  CHECK(text.find("--reference-cell: 0.5 mm makes 57.6 M cells") != std::string::npos);
+  CHECK(text.find("use 0.63 mm or coarser") != std::string::npos);  // 476 x 317 x 190 = 28.7 M
+
 }
 
 TEST_CASE("mtcs optimize with temperature objectives: the same run on 1 and 2 threads, replayed bit for bit", "[cli][thermal]") {

@@ -22,7 +22,9 @@
 // - Symmetric positive definite system; Eigen's conjugate gradient with an incomplete Cholesky
 //   preconditioner. Deterministic.
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <unordered_map>
 #include <vector>
@@ -42,6 +44,10 @@ struct FvOptions {
   int max_iterations = 20000;
   FvPreconditioner preconditioner = FvPreconditioner::IncompleteCholesky;
 };
+
+// The cells along a block edge of `length` mm at the target `cell` (the grid's spacing is then
+// length / cells: at most half a cell off the target).
+inline double fv_cells_along(double length, double cell) { return std::max(1.0, std::round(length / cell)); }
 
 // The solved temperature field, kept so that a writer can colour a surface.
 class FvField {

@@ -26,7 +26,7 @@ Grid::Grid(const Model& model, const FvOptions& options, FvField& field) : model
   if (!(model.setting.conductivity > 0) || !std::isfinite(model.setting.conductivity))
     throw std::invalid_argument("finite volume: the conductivity must be positive");
   for (int a = 0; a < 3; ++a) {
-    const double n = std::max(1.0, std::round(size[a] / options.cell));
+    const double n = fv_cells_along(size[a], options.cell);
     if (n > 1e5) throw std::invalid_argument("finite volume: too many cells");
     field.cells[a] = int(n);
     field.spacing[a] = size[a] / n;
