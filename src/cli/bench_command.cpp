@@ -29,9 +29,8 @@ int run_bench_program(int argc, char** argv) {
   ::execv(program.c_str(), args.data());
   const int err = errno;  // execv returns only on failure
   std::cerr << "mtcs: bench: cannot run " << program << ": " << std::strerror(err)
-            << "\n(the benchmarks are a separate program with their peers, FCL and pagmo, which the "
-               "demo's packages leave out: bash scripts/setup.sh installs them, then cmake -S . -B build "
-               "-DMTCS_BUILD_BENCH=ON && cmake --build build --target mtcs-bench)\n";
+            << "\n(a separate program with its peers FCL and pagmo: bash scripts/setup.sh installs them, "
+               "then cmake -S . -B build -DMTCS_BUILD_BENCH=ON && cmake --build build --target mtcs-bench)\n";
   return err == ENOENT ? 127 : 126;
 }
 
