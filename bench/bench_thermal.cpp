@@ -315,10 +315,10 @@ std::string label(const Tier& t) {
 
 constexpr double kMaxFvCells = 30e6;
 
-// Why the finite volumes at `cell` are too fine for the block, naming a cell that fits; nothing
-// when they fit.
-std::optional<std::string> too_fine(const geometry::Box& block, double cell, const std::string& what) {
-  const geometry::Vec3 size = block.max - block.min;
+// Why a reference at `cell` is too fine for the block, naming a cell that fits; nothing when it
+// fits.
+std::optional<std::string> too_fine(const geometry::Box& block, double cell) {
+  const geometry::Vec3 size = block.size();
   auto cells_at = [&](double h) {
     return thermal::fv_cells_along(size.x(), h) * thermal::fv_cells_along(size.y(), h) *
            thermal::fv_cells_along(size.z(), h);
@@ -328,8 +328,10 @@ std::optional<std::string> too_fine(const geometry::Box& block, double cell, con
   double coarser = std::ceil(cell * std::cbrt(cells / kMaxFvCells) * 100) / 100;  // rounding may leave it too fine
   while (cells_at(coarser) > kMaxFvCells) coarser += 0.01;
   char buf[320];
-  std::snprintf(buf, sizeof buf, "%s: %g mm makes %.1f M cells of the %g x %g x %g mm block (at most %.0f M); use %.2f mm or coarser",
-                what.c_str(), cell, cells * 1e-6, size.x(), size.y(), size.z(), kMaxFvCells * 1e-6, coarser);
+  std::snprintf(buf, sizeof buf,
+                "--reference-cell: %g mm makes %.1f M cells of the %g x %g x %g mm block (at most %.0f M); "
+                "use %.2f mm or coarser",
+                cell, cells * 1e-6, size.x(), size.y(), size.z(), kMaxFvCells * 1e-6, coarser);
   return std::string(buf);
 }
 
@@ -341,7 +343,7 @@ int bench_thermal(const ThermalBenchOptions& o) {
   // A reference of more than 30 M cells is refused before the solves: the finite volumes'
   // memory and time a layout grow with the cells (the plate's block at 1 mm has 7.2 M and took
   // ~4 min a layout here).
-  if (const std::optional<std::string> why = too_fine(c.setting.block, o.reference_cell, "--reference-cell")) {
+  if (const std::optional<std::string> why = too_fine(c.setting.block, o.reference_cell)) {
     std::cerr << "mtcs bench thermal: " << *why << "\n";
     return 2;
   }
