@@ -1,7 +1,7 @@
 // The coupled cavity against an independent solver: FreeFem++ 3-D (tetgen, P2) on the bundled
-// cup's block and part, with Robin bores, the part's film on the cavity and convecting faces
-// (experiments/thermal/freefem_coupled: its scripts, meshes, convergence). The stored samples
-// against T3 and the spec's line-sink tier on the same problem.
+// cup's, gear's and L-bracket's blocks and parts, with Robin bores, the part's film on the
+// cavity and convecting faces (experiments/thermal/freefem_coupled: its scripts, meshes,
+// convergence). The stored samples against T3 and the spec's line-sink tier on the same problem.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -68,10 +68,11 @@ struct Compared {
 };
 Compared against_freefem(const mold::Scene& scene, const std::string& mold) {
   const auto reference = read_rows(MTCS_TEST_DATA + "/thermal/freefem_coupled_" + mold + ".csv");
-  const thermal::Samples samples = eval::thermal_samples(scene);
-  REQUIRE(samples.size() == reference.size());
-  for (std::size_t i = 0; i < samples.size(); ++i)
-    REQUIRE((samples.points[i] - Vec3(reference[i][0], reference[i][1], reference[i][2])).norm() < 1e-5);
+  // At FreeFem++'s own points (the cavity samples of the day: points of the cavity's surface),
+  // whatever the sampler makes of the part now.
+  thermal::Samples samples;
+  for (const auto& r : reference) samples.points.emplace_back(r[0], r[1], r[2]), samples.weights.push_back(1);
+  REQUIRE(samples.size() > 1000);
   const thermal::Model model{eval::thermal_setting(scene), stored_channels(mold)};
   const thermal::FvResult fv = thermal::solve_finite_volume(model, samples, {2.0});
   thermal::LineSinkOptions options;
@@ -114,4 +115,20 @@ TEST_CASE("coupled cavity: the gear's samples as FreeFem++ P2 has them", "[eval]
   // On this part the line sinks beat the grid.
   CHECK(c.t3.rms < 1.6);
   CHECK(c.line_sinks.rms < 0.8);
+}
+
+TEST_CASE("coupled cavity: the L-bracket's samples as FreeFem++ P2 has them", "[eval][coupling]") {
+  // FreeFem++ solved the bracket at one 6 mm wall with the film its problem JSON gave (the
+  // cycle's fixed point for that wall): the same here by the explicit override.
+  const mold::Scene scene(mold::load_mold_spec(mtcs_test::bundled_variant(
+      "l_bracket", {{kLocalWall, "wall_thickness: 6"},
+                    {"cavity_condition: coupled",
+                     "cavity_condition: coupled\n  part_film: 76.92727490677034\n  part_temperature: 230"}})));
+  const Compared c = against_freefem(scene, "l_bracket");
+  INFO(describe(c));
+  // Measured: T3 at 2 mm RMS 0.10 K (max 0.37 K), at 1 mm 0.08 K (max 0.17 K, 110 s: not here);
+  // t2d with the void's 12 mm panels 0.42 K (max 4.0 K, at the inner corner). A part of flat
+  // faces the grid draws well: the FreeFem++ levels agree to 0.012 K.
+  CHECK(c.t3.rms < 0.2);
+  CHECK(c.line_sinks.rms < 0.6);
 }

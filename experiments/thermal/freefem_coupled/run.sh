@@ -1,7 +1,7 @@
 #!/bin/bash
-# FreeFem++ 3-D reference for the coupled cavity condition (cup and gear), from the spec
-# copies to tests/data/thermal/freefem_coupled_MOLD.csv. Re-runnable; ~1 h on 2 idle cores
-# (the gear's P2 solves take ~10 and ~20 min).
+# FreeFem++ 3-D reference for the coupled cavity condition (cup, gear, L-bracket), from the spec
+# copies to tests/data/thermal/freefem_coupled_MOLD.csv. Re-runnable; ~1.3 h on 2 idle cores
+# (the gear's P2 solves take ~10 and ~20 min, the L-bracket's ~3 and ~5).
 #   bash experiments/thermal/freefem_coupled/run.sh [cup|gear ...]
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -12,7 +12,7 @@ command -v FreeFem++ >/dev/null || apt-get install -y freefem++ libfreefem++
 export FF_LOADPATH=/usr/lib/freefem++     # Debian's /etc/freefem++.pref points at a missing folder
 mkdir -p "$here/work" && cd "$here/work"
 
-molds=${*:-cup gear}
+molds=${*:-cup gear l_bracket}
 for mold in $molds; do
   # 1. the conduction problem (block, faces, cavity triangles, samples) as mtcs sees it; the
   #    bundled layout only satisfies the CLI: its bores are replaced by the channel CSV.
