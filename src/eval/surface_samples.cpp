@@ -42,9 +42,8 @@ SurfaceSamples sample_box(const geometry::Box& box, double spacing) {
 
 SurfaceSamples sample_mesh(const mesh::TriangleMesh& mesh, double spacing) {
   struct Cell {
-    Vec3 sum = Vec3::Zero();
-    double weight = 0;
     std::vector<Vec3> pieces;
+    std::vector<double> area;           // of each piece
     std::vector<std::size_t> triangle;  // of each piece
   };
   std::map<std::tuple<long, long, long>, Cell> cells;  // ordered: deterministic output
@@ -64,23 +63,57 @@ SurfaceSamples sample_mesh(const mesh::TriangleMesh& mesh, double spacing) {
         for (int m = 0; m < n; ++m) {
           const Vec3 q = (cs[m] - origin) / spacing;
           Cell& cell = cells[{long(std::floor(q.x())), long(std::floor(q.y())), long(std::floor(q.z()))}];
-          cell.sum += area * cs[m];
-          cell.weight += area;
           cell.pieces.push_back(cs[m]);
+          cell.area.push_back(area);
           cell.triangle.push_back(t);
         }
       }
     }
   }
+  std::vector<Vec3> normals(mesh.triangles.size());
+  for (std::size_t t = 0; t < normals.size(); ++t)
+    normals[t] = (mesh.corner(t, 1) - mesh.corner(t, 0)).cross(mesh.corner(t, 2) - mesh.corner(t, 0)).normalized();
+  const auto normal_of = [&](std::size_t t) -> const Vec3& { return normals[t]; };
   SurfaceSamples s;
+  std::vector<int> side;
+  std::vector<std::size_t> first;  // per triangle of the cell, its first piece
   for (const auto& [key, cell] : cells) {
-    const Vec3 mean = cell.sum / cell.weight;
-    std::size_t best = 0;
-    for (std::size_t i = 1; i < cell.pieces.size(); ++i)
-      if ((cell.pieces[i] - mean).squaredNorm() < (cell.pieces[best] - mean).squaredNorm()) best = i;
-    const std::size_t t = cell.triangle[best];
-    const Vec3 normal = (mesh.corner(t, 1) - mesh.corner(t, 0)).cross(mesh.corner(t, 2) - mesh.corner(t, 0)).normalized();
-    push(s, cell.pieces[best], cell.weight, normal);
+    // A wall thinner than the cube puts both its faces in it: one sample would stand for the
+    // other face's area at this face's temperature. Faces turned against each other (more than
+    // 120 degrees apart) are split: each piece goes with the face its normal is nearer, or where
+    // it is turned from both alike (an edge's rim), with the one it lies on the side of.
+    first.clear();
+    for (std::size_t i = 0; i < cell.pieces.size(); ++i)
+      if (i == 0 || cell.triangle[i] != cell.triangle[i - 1]) first.push_back(i);  // pieces come triangle by triangle
+    std::size_t a = 0, b = 0;
+    double opposed = -0.5;
+    for (std::size_t i = 0; i < first.size(); ++i)
+      for (std::size_t j = i + 1; j < first.size(); ++j)
+        if (const double d = normal_of(cell.triangle[first[i]]).dot(normal_of(cell.triangle[first[j]])); d < opposed)
+          opposed = d, a = first[i], b = first[j];
+    side.assign(cell.pieces.size(), 0);
+    if (a != b) {
+      const Vec3 across = (normal_of(cell.triangle[a]) - normal_of(cell.triangle[b])).normalized();
+      const Vec3 middle = 0.5 * (cell.pieces[a] + cell.pieces[b]);
+      for (std::size_t i = 0; i < cell.pieces.size(); ++i) {
+        const double turned = normal_of(cell.triangle[i]).dot(across);
+        side[i] = (std::abs(turned) >= 0.5 ? turned : (cell.pieces[i] - middle).dot(across)) >= 0 ? 0 : 1;
+      }
+    }
+    for (int k = 0; k < (a != b ? 2 : 1); ++k) {
+      Vec3 sum = Vec3::Zero();
+      double weight = 0;
+      for (std::size_t i = 0; i < cell.pieces.size(); ++i)
+        if (side[i] == k) sum += cell.area[i] * cell.pieces[i], weight += cell.area[i];
+      if (weight <= 0) continue;
+      const Vec3 mean = sum / weight;
+      std::size_t best = cell.pieces.size();
+      for (std::size_t i = 0; i < cell.pieces.size(); ++i)
+        if (side[i] == k && (best == cell.pieces.size() ||
+                             (cell.pieces[i] - mean).squaredNorm() < (cell.pieces[best] - mean).squaredNorm()))
+          best = i;
+      push(s, cell.pieces[best], weight, normal_of(cell.triangle[best]));
+    }
   }
   return s;
 }

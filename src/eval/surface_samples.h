@@ -20,7 +20,8 @@ struct SurfaceSamples {
 // A box: a grid on each face, cells at most `spacing` wide, one sample at each cell's centre.
 SurfaceSamples sample_box(const geometry::Box& box, double spacing);
 // A mesh: triangles subdivided finer than `spacing`, the pieces gathered into cubes of side
-// `spacing`, one sample per cube at the piece nearest the cube's area-weighted centre.
+// `spacing`, one sample per cube at the piece nearest the cube's area-weighted centre; two where
+// both faces of a wall thinner than the cube meet in it, one per face.
 SurfaceSamples sample_mesh(const mesh::TriangleMesh& mesh, double spacing);
 // A patch (a flat box on a block face): a grid of cells at most `spacing` wide on the
 // rectangle, one sample at each cell's centre, the first in-plane axis (x, y, z order) fastest.
