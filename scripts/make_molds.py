@@ -243,6 +243,7 @@ cavity:
   box: {min: [50, 25, 105], max: [250, 175, 108]}
   sample_spacing: 5.5
   wall_thickness: 3
+  parting: {core: +z, at: 108}  # opens along z at the top face, the core half's
 keep_outs:
 %sdrilling:
   diameters: [6, 8, 10]
@@ -265,6 +266,7 @@ cavity:
   mesh: meshes/cup.off
   sample_spacing: 4
   wall_thickness: local  # from the mesh: each place its own wall, corners and bosses thicker
+  parting: {core: +z, at: 80}  # opens along z at the rim: the core half forms the inside
 drilling:
   diameters: [8, 10]
   axis_parallel: true
@@ -297,6 +299,7 @@ cavity:
   mesh: meshes/ribbed_box.off
   sample_spacing: 4
   wall_thickness: local  # from the mesh: each place its own wall, corners and bosses thicker
+  parting: {core: +z, at: 80}  # opens along z at the rim: the core half forms the inside
 drilling:
   diameters: [6, 8]
   axis_parallel: true

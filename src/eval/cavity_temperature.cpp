@@ -161,12 +161,15 @@ CavityTemperature solve_once(const mold::Scene& scene, const mold::MoldSpec& spe
 
 }  // namespace
 
-// Splits the points asked for from those across the part (after them), and finds the difference.
-void split_across(CavityTemperature& r, std::size_t asked, const thermal::Samples& samples,
+// Splits the points asked for from those across the part (after them), and finds the difference
+// and, with the mold's parting, each side's summary.
+void split_across(const mold::Scene& scene, CavityTemperature& r, std::size_t asked, const thermal::Samples& samples,
                   const std::vector<std::optional<Vec3>>& across) {
   const std::vector<double> at_across(r.at_points.begin() + std::ptrdiff_t(asked), r.at_points.end());
   r.at_points.resize(asked);
   r.across = wall_difference(r.at_samples, at_across, samples, across);
+  if (const std::vector<PartSide> sides = part_sides(scene, samples); !sides.empty())
+    r.sides = side_summaries(r.at_samples, samples, sides);
 }
 
 CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layout& layout, const ThermalQuery& query,
@@ -182,7 +185,7 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
   CavityTemperature r = solve_once(scene, scene.spec(), layout, query, points, field_edge);
   const mold::ThermalSpec& t = scene.spec().thermal;
   if (t.cavity_condition != mold::CavityCondition::Coupled || t.cycle.cooling || t.part_film) {
-    split_across(r, asked.size(), samples, across);
+    split_across(scene, r, asked.size(), samples, across);
     return r;
   }
   // The film was derived for the nominal cycle; the solution needs its own: the cooling time
@@ -204,7 +207,7 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
       if (c == cooling) r = s;
     r.cycle_iterations = int(solved.size());
   }
-  split_across(r, asked.size(), samples, across);
+  split_across(scene, r, asked.size(), samples, across);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

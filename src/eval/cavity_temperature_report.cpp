@@ -62,6 +62,20 @@ std::string across_text(const CavityTemperature& r) {
   return s.str();
 }
 
+std::string sides_text(const CavityTemperature& r) {
+  if (!r.sides) return "";
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(1) << "per side (cavity.parting), area-weighted:\n";
+  for (const auto& [name, side] : {std::pair{"core", r.sides->core}, std::pair{"cavity", r.sides->cavity}})
+    s << "  " << name << " side: mean " << side.mean << " degC, std " << side.std << " K, max " << side.max
+      << " degC over " << std::setprecision(0) << side.area << std::setprecision(1) << " mm^2\n";
+  return s.str();
+}
+
+nlohmann::json side_json(const SideSummary& s) {
+  return {{"area", s.area}, {"mean", s.mean}, {"std", s.std}, {"max", s.max}};
+}
+
 nlohmann::ordered_json condition_json(const CavityConditionUsed& c) {
   if (c.model == "coupled")
     return {{"model", c.model}, {"part_film", c.part_film}, {"part_temperature", c.part_temperature},
@@ -80,7 +94,7 @@ void write_cavity_temperature_text(std::ostream& out, const CavityTemperature& r
       << "  mean " << s.mean << " degC, std " << s.std << " K, max " << s.max << " degC at ("
       << std::setprecision(1) << r.hottest.x() << ", " << r.hottest.y() << ", " << r.hottest.z() << ") mm\n"
       << std::setprecision(1) << "cavity condition: " << condition_text(r.condition) << "\n"
-      << cycle_text(r) << across_text(r)
+      << cycle_text(r) << across_text(r) << sides_text(r)
       << std::setprecision(3) << "heat balance\n  in " << r.balance.in << " W = bores "
       << r.balance.to_channels << " W + outer faces " << r.balance.to_faces << " W (residual "
       << std::scientific << std::setprecision(1) << r.balance.residual() << " W)\n"
@@ -95,7 +109,7 @@ void write_cavity_temperature_field(std::ostream& out, const CavityTemperature& 
 }
 
 void write_cavity_temperature_json(std::ostream& out, const CavityTemperature& r) {
-  const nlohmann::ordered_json j{{"tier", r.tier},
+  nlohmann::ordered_json j{{"tier", r.tier},
                                  {"cavity_condition", condition_json(r.condition)},
                                  {"mean", r.summary.mean},
                                  {"std", r.summary.std},
@@ -116,6 +130,7 @@ void write_cavity_temperature_json(std::ostream& out, const CavityTemperature& r
                                   {{"pairs", r.across.pairs}, {"paired_area", r.across.paired_area},
                                    {"mean", r.across.mean}, {"max", r.across.max}}},
                                  {"seconds", r.seconds}};
+  if (r.sides) j["sides"] = {{"core", side_json(r.sides->core)}, {"cavity", side_json(r.sides->cavity)}};
   out << j.dump(2) << "\n";
 }
 

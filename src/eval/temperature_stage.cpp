@@ -11,6 +11,7 @@
 #include "mtcs/eval/across_part.h"
 #include "mtcs/eval/cycle_time.h"
 #include "mtcs/eval/part_coupling.h"
+#include "mtcs/eval/part_sides.h"
 #include "mtcs/eval/temperature_objectives.h"
 #include "mtcs/eval/thermal_model.h"
 #include "exact_cache.h"
@@ -53,6 +54,9 @@ class TemperatureStage final : public Stage {
                                     [](const mold::HeatRegion& r) { return r.flux > 0; })),
         samples_count_(samples_.size()) {
     const auto& use = spec_.objectives.use;
+    // temperature_std_side: each sample's half of the mold (before the points across join).
+    if (std::find(use.begin(), use.end(), mold::Objective::TemperatureStdSide) != use.end())
+      sides_ = part_sides(scene, samples_);
     // temperature_difference: the part's other face across from each sample joins the points
     // solved for, with no weight (after the samples: their summary is unchanged).
     if (std::find(use.begin(), use.end(), mold::Objective::TemperatureDifference) != use.end()) {
@@ -78,7 +82,7 @@ class TemperatureStage final : public Stage {
     constexpr double kNoCooling = std::numeric_limits<double>::infinity();
     if (channels.empty()) {
       TemperatureObjectives none{kNoCooling, kNoCooling, kNoCooling, kNoCooling, kNoCooling};
-      none.difference = kNoCooling;
+      none.difference = none.std_side = kNoCooling;
       // Coupled, the whole mold goes to the part's temperature: the part never sets.
       if (coupled_)
         out.violations.push_back({ViolationKind::Eject, {"cavity"}, part_temperature_,
@@ -110,6 +114,7 @@ class TemperatureStage final : public Stage {
     t.resize(samples_count_);
     TemperatureObjectives o = temperature_objectives(t, samples_, spec_);
     if (!across_.empty()) o.difference = wall_difference(t, across, samples_, across_).mean;
+    if (!sides_.empty()) o.std_side = side_summaries(t, samples_, sides_).larger_std();
     return o;
   }
 
@@ -151,6 +156,7 @@ class TemperatureStage final : public Stage {
         case mold::Objective::TemperatureMax: v = o.max; break;
         case mold::Objective::CycleTime: v = o.cycle_time; break;
         case mold::Objective::TemperatureDifference: v = o.difference; break;
+        case mold::Objective::TemperatureStdSide: v = o.std_side; break;
         case mold::Objective::CostPerPart: {
           const mold::Objectives& s = spec_.objectives;
           v = drilling_cost(layout, s) / s.production->parts + s.production->machine_rate * o.cycle_time / 3600;
@@ -171,6 +177,7 @@ class TemperatureStage final : public Stage {
   bool bounded_above_;  // no region adds a fixed flux: nothing can heat the steel above T_p
   std::size_t samples_count_;                              // the samples (the points across after them)
   std::vector<std::optional<geometry::Vec3>> across_;       // per sample, the point across the part
+  std::vector<PartSide> sides_;                             // per sample, its half (temperature_std_side)
   TemperatureSolver solve_;
   ExactCache<std::vector<double>, TemperatureObjectives> solved_{256};
   std::vector<std::pair<mold::Objective, std::size_t>> slots_;

@@ -200,7 +200,8 @@ double surface_sample_estimate(const Cavity& c) {
 }
 
 Cavity parse_cavity(const YamlReader& r, const YAML::Node& n, const Box& block) {
-  r.expect_map(n, "cavity", {"mesh", "translate", "scale", "rotate", "box", "patch", "sample_spacing", "wall_thickness"});
+  r.expect_map(n, "cavity",
+               {"mesh", "translate", "scale", "rotate", "box", "patch", "sample_spacing", "wall_thickness", "parting"});
   mesh_only(r, n, "cavity");
   Cavity c;
   if (int(bool(n["mesh"])) + int(bool(n["box"])) + int(bool(n["patch"])) > 1)
@@ -222,6 +223,17 @@ Cavity parse_cavity(const YamlReader& r, const YAML::Node& n, const Box& block) 
     c.local_thickness = true;
   } else if (w) {
     c.wall_thickness = r.number(w, "cavity.wall_thickness", 1e-6, kHuge);
+  }
+  if (const YAML::Node p = n["parting"]) {
+    if (c.is_patch()) r.fail(p, "cavity.parting", "a patch is one face of the part: it has no two sides to part");
+    r.expect_map(p, "cavity.parting", {"core", "at"});
+    if (!p["core"]) r.fail(p, "cavity.parting.core", "the block face on the core half's side is needed (e.g. +z)");
+    if (!p["at"]) r.fail(p, "cavity.parting.at", "the parting plane's coordinate along that axis is needed (mm)");
+    Parting parting;
+    parting.core = parse_face(r, p["core"], "cavity.parting.core");
+    const int axis = axis_of(parting.core);
+    parting.at = r.number(p["at"], "cavity.parting.at", block.min[axis], block.max[axis]);
+    c.parting = parting;
   }
   return c;
 }
@@ -338,7 +350,7 @@ Objectives parse_objectives(const YamlReader& r, const YAML::Node& n) {
     const YAML::Node& s = n["scales"];
     r.expect_map(s, "objectives.scales", {"uniformity", "worst_covered", "cost", "temperature_mean", "temperature_std",
                                           "temperature_max", "cycle_time", "cost_per_part",
-                                          "temperature_difference"});
+                                          "temperature_difference", "temperature_std_side"});
     auto scale = [&](const char* key, double& into) {
       if (s[key]) into = r.number(s[key], std::string("objectives.scales.") + key, 1e-12, kHuge);
     };
@@ -351,6 +363,7 @@ Objectives parse_objectives(const YamlReader& r, const YAML::Node& n) {
     scale("cycle_time", o.scale_cycle_time);
     scale("cost_per_part", o.scale_cost_per_part);
     scale("temperature_difference", o.scale_temperature_difference);
+    scale("temperature_std_side", o.scale_temperature_std_side);
   }
   if (n["target_wall_distance"])
     o.target_wall_distance = parse_length(r, n["target_wall_distance"], "objectives.target_wall_distance");
@@ -579,6 +592,10 @@ MoldSpec load_mold_spec(const std::string& path) {
       if (s.objectives.use[i] != Objective::Cost)
         r.fail(root["objectives"]["use"][i], at("objectives.use", i),
                "'" + to_string(s.objectives.use[i]) + "' is taken on the part's surface: give a cavity, or use only cost");
+  for (std::size_t i = 0; i < s.objectives.use.size(); ++i)
+    if (s.objectives.use[i] == Objective::TemperatureStdSide && s.cavity && !s.cavity->parting)
+      r.fail(root["objectives"]["use"][i], at("objectives.use", i),
+             "temperature_std_side needs the mold's two sides: cavity.parting: {core: +z, at: MM}");
   if (root["thermal"]) s.thermal = parse_thermal(r, root["thermal"]);
   // A mesh cavity (a part) is a void the line sinks must see: without it they rank its layouts
   // no better than the wall distances do (experiments/thermal/void_surface.md).
@@ -643,6 +660,7 @@ std::string to_string(Objective o) {
     case Objective::CycleTime: return "cycle_time";
     case Objective::CostPerPart: return "cost_per_part";
     case Objective::TemperatureDifference: return "temperature_difference";
+    case Objective::TemperatureStdSide: return "temperature_std_side";
   }
   return "?";
 }
@@ -650,14 +668,15 @@ std::string to_string(Objective o) {
 std::optional<Objective> objective_named(const std::string& name) {
   for (const auto o : {Objective::Uniformity, Objective::WorstCovered, Objective::Cost, Objective::TemperatureMean,
                        Objective::TemperatureStd, Objective::TemperatureMax, Objective::CycleTime,
-                       Objective::CostPerPart, Objective::TemperatureDifference})
+                       Objective::CostPerPart, Objective::TemperatureDifference, Objective::TemperatureStdSide})
     if (to_string(o) == name) return o;
   return std::nullopt;
 }
 
 bool is_temperature_objective(Objective o) {
   return o == Objective::TemperatureMean || o == Objective::TemperatureStd || o == Objective::TemperatureMax ||
-         o == Objective::CycleTime || o == Objective::CostPerPart || o == Objective::TemperatureDifference;
+         o == Objective::CycleTime || o == Objective::CostPerPart || o == Objective::TemperatureDifference ||
+         o == Objective::TemperatureStdSide;
 }
 
 std::string to_string(ObjectiveSurface s) { return s == ObjectiveSurface::Heated ? "heated" : "all"; }

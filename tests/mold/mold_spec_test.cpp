@@ -88,6 +88,20 @@ TEST_CASE("mold spec: bad input names file, line, column and field", "[mold][err
   SECTION("a face that is not one") {
     CHECK(error_of(kBlock + "circuits: {inlet_faces: [top]}\n").field() == "circuits.inlet_faces[0]");
   }
+  SECTION("a parting the part cannot have") {
+    const std::string cup = "cavity:\n  box: {min: [10, 10, 10], max: [90, 90, 40]}\n";
+    CHECK(error_of(kBlock + cup + "  parting: {core: +z}\n").field() == "cavity.parting.at");
+    CHECK(error_of(kBlock + cup + "  parting: {at: 40}\n").field() == "cavity.parting.core");
+    CHECK(error_of(kBlock + cup + "  parting: {core: up, at: 40}\n").field() == "cavity.parting.core");
+    const auto outside = error_of(kBlock + cup + "  parting: {core: +z, at: 60}\n");  // the block ends at z = 50
+    CHECK(outside.field() == "cavity.parting.at");
+    CHECK(outside.line() == 4);
+    const auto patch = error_of(kBlock + "cavity:\n  patch: {face: +z, min: [10, 10], max: [90, 90]}\n  parting: {core: +z, at: 50}\n");
+    CHECK(patch.field() == "cavity.parting");
+    const auto unparted = error_of(kBlock + cup + "objectives: {use: [temperature_std_side, cost]}\n");
+    CHECK(unparted.field() == "objectives.use[0]");
+    CHECK_THAT(unparted.what(), Catch::Contains("cavity.parting"));
+  }
   SECTION("a bad per-diameter length") {
     CHECK(error_of(kBlock + "clearances: {bore_cavity: 2xD}\n").field() == "clearances.bore_cavity");
   }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mtcs/eval/across_part.h"
+#include "mtcs/eval/part_sides.h"
 #include "mtcs/mesh/surface_field.h"
 #include "mtcs/mold/layout.h"
 #include "mtcs/mold/scene.h"
@@ -62,6 +63,7 @@ struct CavityTemperature {
   double slowest_wall = 0;                          // mm, the part's wall there
   int cycle_iterations = 1;          // solves of the coupled cycle's fixed point
   WallDifference across;             // the core/cavity difference
+  std::optional<SideSummaries> sides;  // each side of the part on its own (cavity.parting)
   double seconds = 0;                // the solve (and the model's construction)
   mesh::SurfaceField field;          // filled when a field was asked for
 };

@@ -30,6 +30,7 @@ struct TemperatureObjectives {
   bool finite = true;     // every temperature a number (a tier's defect otherwise)
   double difference = 0;  // K: the area-weighted mean |T - T across the part's wall| over the
                           // samples paired with the part's other face (eval::across_part)
+  double std_side = 0;    // K: the larger of the core side's and the cavity side's spread (eval::part_sides)
 };
 
 TemperatureObjectives temperature_objectives(const std::vector<double>& temperature, const thermal::Samples& samples,

@@ -50,6 +50,14 @@ struct Block {
 // reader says to raise sample_spacing instead of exhausting memory or overflowing counts.
 inline constexpr double kMaxSurfaceSamples = 2e7;
 
+// Where the mold opens (cavity.parting): the parting plane, `at` mm along the axis of `core`,
+// and the block face on the core half's side. Straight pull: the part's two sides, for the
+// spread per side (eval/part_sides.h).
+struct Parting {
+  Face core = Face::PosZ;
+  double at = 0;  // mm
+};
+
 struct Cavity {
   std::optional<Box> box;
   std::optional<MeshSource> mesh;
@@ -57,6 +65,7 @@ struct Cavity {
   double sample_spacing = 3.0;      // mm between cavity-surface samples
   double wall_thickness = 2.5;      // mm; with local_thickness, the thickest wall (the Scene sets it)
   bool local_thickness = false;     // `wall_thickness: local`: per place, from the mesh (mesh/wall_thickness.h)
+  std::optional<Parting> parting;
 
   bool is_patch() const { return patch_face.has_value(); }
   Box bounds() const { return box ? *box : mesh->mesh.bounds(); }
@@ -113,14 +122,15 @@ enum class Objective {
   TemperatureMax,
   CycleTime,
   CostPerPart,           // the drilling cost over the lot plus the machine's time per part
-  TemperatureDifference  // the core/cavity difference across the part's wall (warpage)
+  TemperatureDifference, // the core/cavity difference across the part's wall (warpage)
+  TemperatureStdSide     // the in-plane spread of the core or cavity side, the larger (cavity.parting)
 };
 std::string to_string(Objective o);
 // The objective of that name (as to_string spells it), or none.
 std::optional<Objective> objective_named(const std::string& name);
 inline const std::string kObjectiveNames =
-    "uniformity, worst_covered, cost, temperature_mean, temperature_std, temperature_max, cycle_time, cost_per_part "
-    "or temperature_difference";
+    "uniformity, worst_covered, cost, temperature_mean, temperature_std, temperature_max, cycle_time, cost_per_part, "
+    "temperature_difference or temperature_std_side";
 // Needs a thermal solve (not the tier-0 wall distances).
 bool is_temperature_objective(Objective o);
 
@@ -134,6 +144,7 @@ struct Objectives {
   double scale_cycle_time = 10;                                                               // s
   double scale_cost_per_part = 0.1;          // the cost units per part
   double scale_temperature_difference = 1;   // K
+  double scale_temperature_std_side = 1;     // K
   Length target_wall_distance{2.0, true};
   double cost_setup = 20, cost_per_mm = 0.05, cost_deep_factor = 0.02, cost_plug = 5;
   // objectives.production, which cost_per_part needs: the lot the mold makes and what an hour
@@ -156,6 +167,7 @@ struct Objectives {
       case Objective::CycleTime: return scale_cycle_time;
       case Objective::CostPerPart: return scale_cost_per_part;
       case Objective::TemperatureDifference: return scale_temperature_difference;
+      case Objective::TemperatureStdSide: return scale_temperature_std_side;
     }
     return 1;
   }
