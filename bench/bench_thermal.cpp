@@ -14,6 +14,7 @@
 
 #include "bench_evaluate.h"
 #include "mtcs/eval/across_part.h"
+#include "mtcs/eval/part_sides.h"
 #include "mtcs/eval/temperature_objectives.h"
 #include "mtcs/eval/thermal_model.h"
 #include "mtcs/mold/decoder.h"
@@ -35,6 +36,7 @@ struct Case {
   std::optional<mold::MoldSpec> spec;       // a mold: its cycle time and difference
   std::size_t count = 0;                    // the samples (the points across after them)
   std::vector<std::optional<Vec3>> across;  // per sample, the point across the part
+  std::vector<eval::PartSide> sides;        // per sample, its half of the mold (cavity.parting)
 };
 
 // shared/cases/thermal/block3d_case.txt: a 120 x 80 x 60 mm block, 0.05 W/mm^2 into the patch
@@ -89,8 +91,9 @@ double cavity_gap(const std::vector<Channel>& layout, const thermal::Samples& sa
 Case mold_case(const std::string& path, int count, std::uint64_t seed, int circuits, bool clear_of_part,
                bool difference) {
   const mold::Scene scene(mold::load_mold_spec(path));
-  Case c{eval::thermal_setting(scene), eval::thermal_samples(scene), {}, scene.spec(), 0, {}};
+  Case c{eval::thermal_setting(scene), eval::thermal_samples(scene), {}, scene.spec(), 0, {}, {}};
   c.count = c.samples.size();
+  c.sides = eval::part_sides(scene, c.samples);  // empty without cavity.parting (its tau NaN)
   const double spacing = scene.spec().thermal.sample_spacing.value_or(scene.spec().cavity->sample_spacing);
   for (std::uint64_t batch = 0; int(c.layouts.size()) < count; ++batch) {
     if (batch == 1000)
@@ -132,6 +135,7 @@ struct Row {
   double ms_full = 0, ms_incremental = 0, rms = 0, max = 0;
   double tau_std = 0, tau_mean = 0, tau_max = 0, tau_better_half = 0;
   double tau_cycle = 0, tau_difference = 0;  // a mold's (NaN on the block)
+  double tau_std_side = 0;                    // a parted mold's (NaN without cavity.parting)
   int top10 = 0;
 };
 
@@ -182,7 +186,8 @@ double wall_distance_uniformity(const std::vector<Channel>& layout, const therma
 // Temperatures of every layout by one tier, with its times per layout.
 struct Scored {
   std::vector<std::vector<double>> temperature;  // at the samples; empty for t0
-  std::vector<double> score_std, score_mean, score_max, score_cycle, score_difference, ms_full, ms_incremental;
+  std::vector<double> score_std, score_mean, score_max, score_cycle, score_difference, score_std_side, ms_full,
+      ms_incremental;
 
   // The objectives of one layout's temperatures at the samples and the points across, as the
   // temperature stage computes them (a mold's at the nominal cycle's films: the bench does not
@@ -195,11 +200,12 @@ struct Scored {
     if (c.spec) {
       score_cycle.push_back(eval::temperature_objectives(t, c.samples, *c.spec).cycle_time);
       if (!c.across.empty()) score_difference.push_back(eval::wall_difference(t, at_across, c.samples, c.across).mean);
+      if (!c.sides.empty()) score_std_side.push_back(eval::side_summaries(t, c.samples, c.sides).larger_std());
     }
     temperature.push_back(std::move(t));
   }
   void add_score(double u) {  // t0: one ranking score for every objective
-    for (auto* v : {&score_std, &score_mean, &score_max, &score_cycle, &score_difference}) v->push_back(u);
+    for (auto* v : {&score_std, &score_mean, &score_max, &score_cycle, &score_difference, &score_std_side}) v->push_back(u);
   }
 };
 
@@ -291,6 +297,7 @@ Row judge(const Tier& tier, const Scored& s, const Scored& ref) {
   r.tau_max = kendall(s.score_max, ref.score_max, all);
   r.tau_cycle = ref.score_cycle.empty() ? std::nan("") : kendall(s.score_cycle, ref.score_cycle, all);
   r.tau_difference = ref.score_difference.empty() ? std::nan("") : kendall(s.score_difference, ref.score_difference, all);
+  r.tau_std_side = ref.score_std_side.empty() ? std::nan("") : kendall(s.score_std_side, ref.score_std_side, all);
   // The better half by the reference's std: where an optimiser spends its time.
   std::vector<std::size_t> by_ref = all, by_tier = all;
   std::sort(by_ref.begin(), by_ref.end(), [&](auto a, auto b) { return ref.score_std[a] < ref.score_std[b]; });
@@ -399,18 +406,20 @@ int bench_thermal(const ThermalBenchOptions& o) {
       auto num = [](double v) { return std::isfinite(v) ? std::to_string(v) : std::string("null"); };
       std::printf("%s\n  {\"tier\": \"%s\", \"elements\": %d, \"cell_mm\": %g, \"ms_full\": %.5f, \"ms_incremental\": %.5f, "
                   "\"rms_k\": %s, \"max_k\": %s, \"tau_std\": %.4f, \"tau_mean\": %.4f, \"tau_max\": %.4f, \"tau_better_half\": %.4f, \"top10\": %d, "
-                  "\"tau_cycle\": %s, \"tau_difference\": %s}",
+                  "\"tau_cycle\": %s, \"tau_difference\": %s, \"tau_std_side\": %s}",
                   i ? "," : "", label(r.tier).c_str(), r.tier.elements, r.tier.cell, r.ms_full, r.ms_incremental,
                   num(r.rms).c_str(), num(r.max).c_str(), r.tau_std, r.tau_mean, r.tau_max, r.tau_better_half, r.top10,
-                  num(r.tau_cycle).c_str(), num(r.tau_difference).c_str());
+                  num(r.tau_cycle).c_str(), num(r.tau_difference).c_str(), num(r.tau_std_side).c_str());
     }
     std::printf("\n]}\n");
     return 0;
   }
-  std::printf("tier,ms_full,ms_incremental,rms_k,max_k,tau_std,tau_mean,tau_max,tau_better_half,top10,tau_cycle,tau_difference\n");
+  std::printf("tier,ms_full,ms_incremental,rms_k,max_k,tau_std,tau_mean,tau_max,tau_better_half,top10,tau_cycle,tau_difference,"
+              "tau_std_side\n");
   for (const Row& r : rows)
-    std::printf("%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%d,%.4f,%.4f\n", label(r.tier).c_str(), r.ms_full, r.ms_incremental,
-                r.rms, r.max, r.tau_std, r.tau_mean, r.tau_max, r.tau_better_half, r.top10, r.tau_cycle, r.tau_difference);
+    std::printf("%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%d,%.4f,%.4f,%.4f\n", label(r.tier).c_str(), r.ms_full,
+                r.ms_incremental, r.rms, r.max, r.tau_std, r.tau_mean, r.tau_max, r.tau_better_half, r.top10, r.tau_cycle,
+                r.tau_difference, r.tau_std_side);
   return 0;
 }
 

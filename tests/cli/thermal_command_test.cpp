@@ -107,10 +107,12 @@ TEST_CASE("mtcs bench thermal --json: every tier judged against the finite volum
     if (t["tier"] == "fd h=4 mm") fd_self = t["rms_k"].get<double>() == 0 && t["tau_std"].get<double>() == 1;
   }
   CHECK(fd_self);
-  for (const auto& t : j["tiers"]) CHECK((t["tau_cycle"].is_null() && t["tau_difference"].is_null()));  // no part, no cycle
+  for (const auto& t : j["tiers"])  // no part, no cycle, no sides
+    CHECK((t["tau_cycle"].is_null() && t["tau_difference"].is_null() && t["tau_std_side"].is_null()));
 }
 
-TEST_CASE("mtcs bench thermal on a mold: the tau of cycle_time and of temperature_difference", "[cli][thermal]") {
+TEST_CASE("mtcs bench thermal on a mold: the tau of cycle_time\, temperature_difference and temperature_std_side",
+          "[cli][thermal]") {
   const fs::path out = scratch("thermal", "bench_plate.json");
   REQUIRE(run_mtcs("bench thermal --case " + std::string(MTCS_SOURCE_DIR) + "/molds/plate.yaml --layouts 5 --reference-cell 4 "
                    "--repeat 1 --tiers \"t0,fd h=4\" --difference --json >" + out.string()) == 0);
@@ -119,9 +121,11 @@ TEST_CASE("mtcs bench thermal on a mold: the tau of cycle_time and of temperatur
   for (const auto& t : j["tiers"]) {
     REQUIRE(t["tau_cycle"].is_number());
     REQUIRE(t["tau_difference"].is_number());
+    REQUIRE(t["tau_std_side"].is_number());  // the plate is parted at its top face
     // The reference judged against itself ranks alike (and the layouts differ: a tau of 0 would
     // say every score tied).
-    if (t["tier"] == "fd h=4 mm") CHECK((t["tau_cycle"] == 1.0 && t["tau_difference"] == 1.0));
+    if (t["tier"] == "fd h=4 mm")
+      CHECK((t["tau_cycle"] == 1.0 && t["tau_difference"] == 1.0 && t["tau_std_side"] == 1.0));
   }
 }
 
