@@ -66,13 +66,19 @@ std::string sides_text(const CavityTemperature& r) {
   if (!r.sides) return "";
   std::ostringstream s;
   s << std::fixed << std::setprecision(1) << "per side (cavity.parting), area-weighted:\n";
-  for (const auto& [name, side] : {std::pair{"core", r.sides->core}, std::pair{"cavity", r.sides->cavity}})
+  for (const auto& [name, side] : {std::pair{"core", r.sides->core}, std::pair{"cavity", r.sides->cavity}}) {
+    if (side.area <= 0) {  // e.g. the plate's top: no heat enters it, not among the heated samples
+      s << "  " << name << " side: no samples of the " << r.surface << " surface\n";
+      continue;
+    }
     s << "  " << name << " side: mean " << side.mean << " degC, std " << side.std << " K, max " << side.max
       << " degC over " << std::setprecision(0) << side.area << std::setprecision(1) << " mm^2\n";
+  }
   return s.str();
 }
 
 nlohmann::json side_json(const SideSummary& s) {
+  if (s.area <= 0) return {{"area", 0}, {"mean", nullptr}, {"std", nullptr}, {"max", nullptr}};
   return {{"area", s.area}, {"mean", s.mean}, {"std", s.std}, {"max", s.max}};
 }
 

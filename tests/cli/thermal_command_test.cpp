@@ -44,6 +44,21 @@ TEST_CASE("mtcs thermal --json: the reference block as FreeFem++ has it", "[cli]
   CHECK(j["seconds"].get<double>() > 0);
 }
 
+TEST_CASE("mtcs thermal --json: each side of a parted mold, none on an unparted one", "[cli][thermal]") {
+  const fs::path plate = scratch("thermal", "plate_sides.json"), block = scratch("thermal", "block_sides.json");
+  REQUIRE(run_mtcs("thermal " + MTCS_SOURCE_DIR + "/molds/plate.yaml --layout " + MTCS_SOURCE_DIR +
+                   "/molds/plate.layout.yaml --json >" + plate.string()) == 0);
+  const auto j = nlohmann::json::parse(read_text(plate));
+  // The plate is parted at its top face, which takes no heat (not among the heated samples): the
+  // cavity side is every heated sample, the bottom and the rim, 200 x 150 + 2 (200 + 150) 3 mm^2.
+  CHECK(j["sides"]["core"]["area"] == 0);
+  CHECK(j["sides"]["core"]["std"].is_null());
+  CHECK(j["sides"]["cavity"]["area"].get<double>() == Approx(32100));
+  CHECK(j["sides"]["cavity"]["std"].get<double>() == Approx(j["std"].get<double>()));
+  REQUIRE(run_mtcs("thermal " + kMold + " --layout " + kLayout + " --json >" + block.string()) == 0);
+  CHECK_FALSE(nlohmann::json::parse(read_text(block)).contains("sides"));
+}
+
 TEST_CASE("mtcs thermal --samples: temperatures at the user's points", "[cli][thermal]") {
   const fs::path out = scratch("thermal", "T.csv");
   REQUIRE(run_mtcs("thermal " + kMold + " --layout " + kLayout + " --tier fd --cell 2 --samples " + kSamples +
