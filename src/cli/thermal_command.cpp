@@ -50,7 +50,7 @@ Command add_thermal_command(CLI::App& app) {
   sub->add_option("--samples", opt->samples, "CSV of points (columns x,y,z, mm): their temperatures go to --out");
   sub->add_option("--out", opt->out, "field.vtp, field.ply, field.png, or with --samples a CSV");
   sub->add_option("--problem", opt->problem, "also the conduction problem as JSON, for a solver outside mtcs (SI films, mm)");
-  sub->add_flag("--json", opt->json, "one JSON object on stdout: {tier, cavity_condition, mean, std, max, hottest, surface, samples, heat_in, heat_to_bores, heat_to_faces, cooling_time, cycle_time (s), ejectable, seconds}");
+  sub->add_flag("--json", opt->json, "one JSON object on stdout: {tier, cavity_condition, mean, std, max, hottest, surface, samples, heat_in, heat_to_bores, heat_to_faces, cooling_time, cycle_time (s), ejectable, temperature_difference, seconds; sides with cavity.parting}");
   return {sub, [opt] {
             const std::string ext = extension(opt->out);
             if (!opt->out.empty() && opt->samples.empty() && ext != ".vtp" && ext != ".ply" && ext != ".png") {
