@@ -22,6 +22,7 @@
 #include "run_mtcs.h"
 #include "stored_run.h"
 #include "support/paths.h"
+#include "support/skipped.h"
 
 using mtcs::store::RunStore;
 using namespace mtcs_test;
@@ -100,7 +101,7 @@ TEST_CASE("run store faults: a full disk (file size limit) stops the run naming 
 TEST_CASE("run store faults: a full tmpfs stops the run naming the store, it resumes to the same end",
           "[cli][store][faults][disk]") {
   if (std::system("unshare -rm true 2>/dev/null") != 0) {
-    WARN("no user namespace to mount a small tmpfs in: the file-size-limit test covers the full disk");
+    mtcs_test::skipped("no user namespace to mount a small tmpfs in (the file-size-limit case covers the full disk)");
     return;
   }
   const fs::path full = uninterrupted();
