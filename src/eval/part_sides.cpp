@@ -47,9 +47,10 @@ std::vector<PartSide> part_sides(const mold::Scene& scene, const thermal::Sample
     const PartSide own = above > 0 ? PartSide::Core : PartSide::Cavity;
     const PartSide other = above > 0 ? PartSide::Cavity : PartSide::Core;
     const Vec3 to_plane = above > 0 ? Vec3(-to_core) : to_core;
-    const bool behind = part_ahead(scene, q, -to_plane) < kNone;
-    const bool free_to_plane = !(part_ahead(scene, q, to_plane) <= std::abs(above));
-    sides[i] = has_normal && behind && free_to_plane ? other : own;
+    // A sample with no normal (no steel side known) keeps the side of the plane it lies on.
+    const bool reaches_in = has_normal && part_ahead(scene, q, -to_plane) < kNone &&
+                            !(part_ahead(scene, q, to_plane) <= std::abs(above));
+    sides[i] = reaches_in ? other : own;
   }
   return sides;
 }

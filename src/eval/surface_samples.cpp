@@ -1,5 +1,6 @@
 #include "surface_samples.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -75,43 +76,59 @@ SurfaceSamples sample_mesh(const mesh::TriangleMesh& mesh, double spacing) {
     normals[t] = (mesh.corner(t, 1) - mesh.corner(t, 0)).cross(mesh.corner(t, 2) - mesh.corner(t, 0)).normalized();
   const auto normal_of = [&](std::size_t t) -> const Vec3& { return normals[t]; };
   SurfaceSamples s;
-  std::vector<int> side;
-  std::vector<std::size_t> first;  // per triangle of the cell, its first piece
+  std::vector<std::vector<std::size_t>> groups;  // of a cube's pieces, still to split or emit
+  std::vector<std::size_t> directions;           // pieces of a group with distinct normals
   for (const auto& [key, cell] : cells) {
     // A wall thinner than the cube puts both its faces in it: one sample would stand for the
-    // other face's area at this face's temperature. Faces turned against each other (more than
-    // 120 degrees apart) are split: each piece goes with the face its normal is nearer, or where
-    // it is turned from both alike (an edge's rim), with the one it lies on the side of.
-    first.clear();
-    for (std::size_t i = 0; i < cell.pieces.size(); ++i)
-      if (i == 0 || cell.triangle[i] != cell.triangle[i - 1]) first.push_back(i);  // pieces come triangle by triangle
-    std::size_t a = 0, b = 0;
-    double opposed = -0.5;
-    for (std::size_t i = 0; i < first.size(); ++i)
-      for (std::size_t j = i + 1; j < first.size(); ++j)
-        if (const double d = normal_of(cell.triangle[first[i]]).dot(normal_of(cell.triangle[first[j]])); d < opposed)
-          opposed = d, a = first[i], b = first[j];
-    side.assign(cell.pieces.size(), 0);
-    if (a != b) {
-      const Vec3 across = (normal_of(cell.triangle[a]) - normal_of(cell.triangle[b])).normalized();
-      const Vec3 middle = 0.5 * (cell.pieces[a] + cell.pieces[b]);
-      for (std::size_t i = 0; i < cell.pieces.size(); ++i) {
-        const double turned = normal_of(cell.triangle[i]).dot(across);
-        side[i] = (std::abs(turned) >= 0.5 ? turned : (cell.pieces[i] - middle).dot(across)) >= 0 ? 0 : 1;
+    // other face's area at this face's temperature. While a group of the cube's pieces holds
+    // faces turned more than 120 degrees from each other it is split in two: each piece goes
+    // with the face its normal is nearer, or where it is turned from both alike (the rim of an
+    // edge), with the one it lies on the side of. An edge of a thin wall holds four faces: two
+    // splits. Each group left is a sample at its own centre with its own area.
+    groups.assign(1, std::vector<std::size_t>(cell.pieces.size()));
+    std::iota(groups[0].begin(), groups[0].end(), std::size_t(0));
+    while (!groups.empty()) {
+      const std::vector<std::size_t> group = std::move(groups.back());
+      groups.pop_back();
+      directions.clear();
+      for (const std::size_t i : group)
+        if (std::none_of(directions.begin(), directions.end(), [&](std::size_t j) {
+              return normal_of(cell.triangle[i]).dot(normal_of(cell.triangle[j])) > 0.999;
+            }))
+          directions.push_back(i);
+      std::size_t a = 0, b = 0;
+      double opposed = -0.5;
+      for (std::size_t i = 0; i < directions.size(); ++i)
+        for (std::size_t j = i + 1; j < directions.size(); ++j)
+          if (const double d = normal_of(cell.triangle[directions[i]]).dot(normal_of(cell.triangle[directions[j]]));
+              d < opposed)
+            opposed = d, a = directions[i], b = directions[j];
+      if (a != b) {
+        const Vec3 across = (normal_of(cell.triangle[a]) - normal_of(cell.triangle[b])).normalized();
+        // Between the two faces: the midpoint of the centres of the pieces turned to either.
+        Vec3 centre[2] = {Vec3::Zero(), Vec3::Zero()};
+        double area[2] = {0, 0};
+        for (const std::size_t i : group)
+          if (const double turned = normal_of(cell.triangle[i]).dot(across); std::abs(turned) >= 0.5)
+            centre[turned > 0 ? 0 : 1] += cell.area[i] * cell.pieces[i], area[turned > 0 ? 0 : 1] += cell.area[i];
+        const Vec3 middle = 0.5 * (centre[0] / area[0] + centre[1] / area[1]);
+        std::vector<std::size_t> halves[2];
+        for (const std::size_t i : group) {
+          const double turned = normal_of(cell.triangle[i]).dot(across);
+          halves[(std::abs(turned) >= 0.5 ? turned : (cell.pieces[i] - middle).dot(across)) >= 0 ? 0 : 1].push_back(i);
+        }
+        groups.push_back(std::move(halves[0]));  // both hold a piece (a's, b's): each split shrinks
+        groups.push_back(std::move(halves[1]));
+        continue;
       }
-    }
-    for (int k = 0; k < (a != b ? 2 : 1); ++k) {
       Vec3 sum = Vec3::Zero();
       double weight = 0;
-      for (std::size_t i = 0; i < cell.pieces.size(); ++i)
-        if (side[i] == k) sum += cell.area[i] * cell.pieces[i], weight += cell.area[i];
+      for (const std::size_t i : group) sum += cell.area[i] * cell.pieces[i], weight += cell.area[i];
       if (weight <= 0) continue;
       const Vec3 mean = sum / weight;
-      std::size_t best = cell.pieces.size();
-      for (std::size_t i = 0; i < cell.pieces.size(); ++i)
-        if (side[i] == k && (best == cell.pieces.size() ||
-                             (cell.pieces[i] - mean).squaredNorm() < (cell.pieces[best] - mean).squaredNorm()))
-          best = i;
+      std::size_t best = group.front();
+      for (const std::size_t i : group)
+        if ((cell.pieces[i] - mean).squaredNorm() < (cell.pieces[best] - mean).squaredNorm()) best = i;
       push(s, cell.pieces[best], weight, normal_of(cell.triangle[best]));
     }
   }

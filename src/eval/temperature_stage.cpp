@@ -55,8 +55,15 @@ class TemperatureStage final : public Stage {
         samples_count_(samples_.size()) {
     const auto& use = spec_.objectives.use;
     // temperature_std_side: each sample's half of the mold (before the points across join).
-    if (std::find(use.begin(), use.end(), mold::Objective::TemperatureStdSide) != use.end())
+    if (std::find(use.begin(), use.end(), mold::Objective::TemperatureStdSide) != use.end()) {
       sides_ = part_sides(scene, samples_);
+      const SideSummaries area = side_summaries(std::vector<double>(samples_.size(), 0.0), samples_, sides_);
+      for (const auto& [name, side] : {std::pair{"core", area.core}, std::pair{"cavity", area.cavity}})
+        if (side.area <= 0)  // the larger spread would be the other side's: temperature_std under another name
+          throw std::invalid_argument(std::string("temperature_std_side: the ") + name + " side has no samples of the " +
+                                      mold::to_string(spec_.thermal.objective_surface) +
+                                      " surface (cavity.parting, thermal.objective_surface: all takes every face)");
+    }
     // temperature_difference: the part's other face across from each sample joins the points
     // solved for, with no weight (after the samples: their summary is unchanged).
     if (std::find(use.begin(), use.end(), mold::Objective::TemperatureDifference) != use.end()) {

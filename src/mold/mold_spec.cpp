@@ -595,7 +595,8 @@ MoldSpec load_mold_spec(const std::string& path) {
   for (std::size_t i = 0; i < s.objectives.use.size(); ++i)
     if (s.objectives.use[i] == Objective::TemperatureStdSide && s.cavity && !s.cavity->parting)
       r.fail(root["objectives"]["use"][i], at("objectives.use", i),
-             "temperature_std_side needs the mold's two sides: cavity.parting: {core: +z, at: MM}");
+             s.cavity->is_patch() ? "temperature_std_side needs a part with two sides: a patch is one face"
+                                  : "temperature_std_side needs the mold's two sides: cavity.parting: {core: +z, at: MM}");
   if (root["thermal"]) s.thermal = parse_thermal(r, root["thermal"]);
   // A mesh cavity (a part) is a void the line sinks must see: without it they rank its layouts
   // no better than the wall distances do (experiments/thermal/void_surface.md).

@@ -43,7 +43,7 @@ namespace fs = std::filesystem;
 std::string objective_unit(const std::string& name) {
   if (name == "uniformity" || name == "worst_covered") return "mm";
   if (name == "temperature_mean" || name == "temperature_max") return "\u00b0C";
-  if (name == "temperature_std" || name == "temperature_difference") return "K";
+  if (name == "temperature_std" || name == "temperature_difference" || name == "temperature_std_side") return "K";
   if (name == "cycle_time") return "s";
   if (name == "cost_per_part") return "per part";
   return "";  // cost: the spec's cost units

@@ -126,7 +126,7 @@ TEST_CASE("mtcs bench thermal --json: every tier judged against the finite volum
     CHECK((t["tau_cycle"].is_null() && t["tau_difference"].is_null() && t["tau_std_side"].is_null()));
 }
 
-TEST_CASE("mtcs bench thermal on a mold: the tau of cycle_time\, temperature_difference and temperature_std_side",
+TEST_CASE("mtcs bench thermal on a mold: the tau of cycle_time, temperature_difference and temperature_std_side",
           "[cli][thermal]") {
   const fs::path out = scratch("thermal", "bench_plate.json");
   REQUIRE(run_mtcs("bench thermal --case " + std::string(MTCS_SOURCE_DIR) + "/molds/plate.yaml --layouts 5 --reference-cell 4 "

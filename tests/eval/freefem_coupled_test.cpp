@@ -73,6 +73,8 @@ Compared against_freefem(const mold::Scene& scene, const std::string& mold) {
   thermal::Samples samples;
   for (const auto& r : reference) samples.points.emplace_back(r[0], r[1], r[2]), samples.weights.push_back(1);
   REQUIRE(samples.size() > 1000);
+  for (const Vec3& p : samples.points)  // on this part's surface (the CSV's 6 decimals)
+    REQUIRE(scene.cavity_bvh()->segment_distance(p, p, 1) < 1e-5);
   const thermal::Model model{eval::thermal_setting(scene), stored_channels(mold)};
   const thermal::FvResult fv = thermal::solve_finite_volume(model, samples, {2.0});
   thermal::LineSinkOptions options;

@@ -41,10 +41,10 @@ TEST_CASE("part sides: each of the cup's samples goes to the half whose steel is
     (sides[i] == eval::PartSide::Core ? core : cavity) += samples.weights[i];
   }
   // The faces' areas: core = inner floor 115 x 75 + inner walls 2 (115 + 75) 37.5 + rim
-  // (9 600 - 8 625); cavity = floor 120 x 80 + outer walls 2 (120 + 80) 40. A cube at an edge
-  // gives its pieces to one face: a few %.
-  CHECK(core == Approx(8625 + 14250 + 975).epsilon(0.04));
-  CHECK(cavity == Approx(9600 + 16000).epsilon(0.04));
+  // (9 600 - 8 625); cavity = floor 120 x 80 + outer walls 2 (120 + 80) 40. Each piece of a
+  // cube goes to its own face's sample, at the thin walls' edges (four faces a cube) too.
+  CHECK(core == Approx(8625 + 14250 + 975).epsilon(1e-9));
+  CHECK(cavity == Approx(9600 + 16000).epsilon(1e-9));
 }
 
 TEST_CASE("part sides: a thin wall's two faces get samples of their own, each with its face's area", "[eval][thermal]") {
@@ -57,8 +57,10 @@ TEST_CASE("part sides: a thin wall's two faces get samples of their own, each wi
     if (samples.normals[i].z() < -0.9) below += samples.weights[i];
     if (samples.normals[i].z() > 0.9) above += samples.weights[i];
   }
-  CHECK(below == Approx(9600).epsilon(0.1));         // the floor's underside
-  CHECK(above == Approx(8625 + 975).epsilon(0.1));   // the inner floor and the rim
+  // By the samples' normals: a sample at an edge stands for both faces of its side there (the
+  // underside and the outer wall are not turned against each other), with one face's normal.
+  CHECK(below == Approx(9600).epsilon(0.04));        // the floor's underside
+  CHECK(above == Approx(8625 + 975).epsilon(0.04));  // the inner floor and the rim
 }
 
 TEST_CASE("part sides: the plate parted at its top face: the top is the core's, the rest the cavity's", "[eval][thermal]") {
@@ -105,4 +107,13 @@ TEST_CASE("part sides: mtcs thermal's sides and the temperature_std_side objecti
   const eval::Evaluation e = eval::Pipeline(scene).evaluate(layout);
   CHECK(e.objectives[0] == Approx(r.sides->larger_std()).epsilon(1e-9));
   CHECK(e.objectives[1] == Approx(r.summary.std).epsilon(1e-9));
+}
+
+TEST_CASE("part sides: temperature_std_side refuses a side without samples (the plate's unheated top)", "[eval][thermal]") {
+  // The plate's top takes no heat, so the heated samples are all the cavity side's: the larger
+  // spread would be temperature_std under another name.
+  const std::string spec = mtcs_test::bundled_variant("plate", "use: [temperature_std, cycle_time, cost]",
+                                                      "use: [temperature_std_side, cost]");
+  const mold::Scene scene(mold::load_mold_spec(spec));
+  CHECK_THROWS_WITH(eval::Pipeline(scene), Catch::Contains("the core side has no samples of the heated surface"));
 }

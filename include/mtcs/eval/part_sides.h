@@ -3,6 +3,7 @@
 // forms (cavity.parting). A spread over the whole cavity mixes each side's in-plane spread with
 // the offset between the halves (temperature_difference measures that); per side it does not.
 
+#include <cmath>
 #include <vector>
 
 #include "mtcs/mold/scene.h"
@@ -29,7 +30,7 @@ struct SideSummary {
 };
 struct SideSummaries {
   SideSummary core, cavity;
-  double larger_std() const { return core.std > cavity.std ? core.std : cavity.std; }  // K
+  double larger_std() const { return core.std > cavity.std || std::isnan(core.std) ? core.std : cavity.std; }  // K, NaN kept
 };
 SideSummaries side_summaries(const std::vector<double>& temperature, const thermal::Samples& samples,
                              const std::vector<PartSide>& sides);
