@@ -243,7 +243,7 @@ cavity:
   box: {min: [50, 25, 105], max: [250, 175, 108]}
   sample_spacing: 5.5
   wall_thickness: 3
-  parting: {core: +z, at: 108}  # opens along z at the top face, the core half's
+  parting: {core: +z, at: 108}  # opens along z at the top face (the core's; no heat enters it)
 keep_outs:
 %sdrilling:
   diameters: [6, 8, 10]
