@@ -78,7 +78,8 @@ SurfaceSamples sample_mesh(const mesh::TriangleMesh& mesh, double spacing) {
   SurfaceSamples s;
   std::vector<std::vector<std::size_t>> groups;  // of a cube's pieces, still to split or emit
   std::vector<std::size_t> directions;           // pieces of a group with distinct normals
-  for (const auto& [key, cell] : cells) {
+  for (const auto& entry : cells) {
+    const Cell& cell = entry.second;  // not a structured binding: clang 14's lambdas cannot capture one
     // A wall thinner than the cube puts both its faces in it: one sample would stand for the
     // other face's area at this face's temperature. While a group of the cube's pieces holds
     // faces turned more than 120 degrees from each other it is split in two: each piece goes
