@@ -161,9 +161,9 @@ CavityTemperature solve_once(const mold::Scene& scene, const mold::MoldSpec& spe
 
 }  // namespace
 
-// Splits the points asked for from those across the part (after them), and finds the difference
-// and, with the mold's parting, each side's summary.
-void split_across(const mold::Scene& scene, CavityTemperature& r, std::size_t asked, const thermal::Samples& samples,
+// Splits the points asked for from those across the part (after them); the summaries of the
+// part's two faces: the difference across its wall and, with the mold's parting, each side's.
+void summarize_faces(const mold::Scene& scene, CavityTemperature& r, std::size_t asked, const thermal::Samples& samples,
                   const std::vector<std::optional<Vec3>>& across) {
   const std::vector<double> at_across(r.at_points.begin() + std::ptrdiff_t(asked), r.at_points.end());
   r.at_points.resize(asked);
@@ -185,7 +185,7 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
   CavityTemperature r = solve_once(scene, scene.spec(), layout, query, points, field_edge);
   const mold::ThermalSpec& t = scene.spec().thermal;
   if (t.cavity_condition != mold::CavityCondition::Coupled || t.cycle.cooling || t.part_film) {
-    split_across(scene, r, asked.size(), samples, across);
+    summarize_faces(scene, r, asked.size(), samples, across);
     return r;
   }
   // The film was derived for the nominal cycle; the solution needs its own: the cooling time
@@ -207,7 +207,7 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
       if (c == cooling) r = s;
     r.cycle_iterations = int(solved.size());
   }
-  split_across(scene, r, asked.size(), samples, across);
+  summarize_faces(scene, r, asked.size(), samples, across);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
