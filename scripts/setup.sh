@@ -19,7 +19,7 @@ PACKAGES=(
   build-essential cmake ninja-build ccache pkg-config python3
   libeigen3-dev libnlopt-cxx-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libyaml-cpp-dev libspdlog-dev libfmt-dev libcli11-dev nlohmann-json3-dev
-  libsqlite3-dev libtbb-dev libabsl-dev
+  libsqlite3-dev libtbb-dev libabsl-dev libxxhash-dev
 )
 # The tests, the benchmarks' peers (mtcs-bench) and the optional components: PNG plots
 # (matplotlib), the fuzzers (clang), the report's browser test (chromium, node), STEP export

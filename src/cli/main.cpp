@@ -6,6 +6,7 @@
 
 #include "log.h"
 #include "mtcs/cli/commands.h"
+#include "mtcs/io/disk_cache.h"
 #include "mtcs/io/input_error.h"
 #include "mtcs/version.h"
 #include "option_error.h"
@@ -39,6 +40,12 @@ int main(int argc, char** argv) {
       mtcs::cli::add_access_map_command(app),
       mtcs::cli::add_hypervolume_command(app),
   };
+  // A part's precomputes (its void's panel matrix) are kept between commands, unless --no-cache.
+  mtcs::io::set_cache_folder(mtcs::io::default_cache_folder());
+  for (const char* name : {"optimize", "evaluate", "thermal", "replay", "report", "compare-penalties"})
+    app.get_subcommand(name)->add_flag_callback("--no-cache", [] { mtcs::io::set_cache_folder(std::nullopt); },
+                                                "neither read nor keep the part's precomputes (default: kept in "
+                                                "$MTCS_CACHE_DIR, else ~/.cache/mtcs)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -11,6 +11,7 @@
 #include <tbb/parallel_for.h>
 
 #include "mtcs/geometry/triangle_distance.h"
+#include "thermal/cavity/panel_matrix_cache.h"
 #include "thermal/kernels/cpu_features.h"
 #include "thermal/linalg/skinny_product.h"
 
@@ -205,17 +206,52 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
     begin_.push_back(sub_.size());
   }
 
-  // A = 1/2 - K', row by row in parallel (each row its own).
+  // A = 1/2 - K', row by row in parallel (each row its own); kept by the panels' geometry and
+  // the images (panel_matrix_cache.h).
   const std::size_t n = panels();
   const auto N = Eigen::Index(n);
-  Eigen::MatrixXd A(N, N);
+  Eigen::MatrixXd A;
+  if (on_block_face) {
+    A = Eigen::MatrixXd::Identity(N, N);
+  } else {
+    io::CacheKey key = panel_matrix_key();
+    key.add_value(panel_).add_values(std::span<const std::size_t>(begin_));
+    for (const Sub& s : sub_)
+      for (int k = 0; k < 3; ++k) key.add_values(std::span<const double>(s.source.corner(k).data(), 3));
+    for (const Image& g : images_)
+      key.add_values(std::span<const double>(g.mult.data(), 3)).add_values(std::span<const double>(g.offset.data(), 3)).add_value(g.sign);
+    A = kept_panel_matrix(key, N, [&](Eigen::MatrixXd& a) { assemble(a); });
+  }
+  // The heat input's sheets (q / k per panel) seen from the void side: (1/2 + K') q / k = (I - A) q / k.
+  Eigen::VectorXd q(N);
+  for (std::size_t j = 0; j < n; ++j) q[Eigen::Index(j)] = flux_[j] / conductivity;
+  heat_d_ = on_block_face ? Eigen::VectorXd::Zero(N) : Eigen::VectorXd(q - A * q);
+  film_over_k_ = Eigen::Map<const Eigen::VectorXd>(film.data(), N) / conductivity;
+  part_ = Eigen::Map<const Eigen::VectorXd>(part.data(), N);
+  robin_ = film_over_k_.maxCoeff() > 0;
+  if (robin_) {
+    if (!far.kernel) throw std::invalid_argument("cavity void: a wall with a film needs the far lattice");
+    moments_.resize(4, N);
+    Eigen::MatrixXd F(N, 4);
+    for (std::size_t j = 0; j < n; ++j) {
+      moments_.col(Eigen::Index(j)) << conductivity * area_[j], conductivity * area_[j] * (centroid_[j] - far.center);
+      F.row(Eigen::Index(j)) = far.kernel(point_[j]).transpose();
+    }
+    A += film_over_k_.asDiagonal() * (potentials(point_) + F * moments_);
+  }
+  lu_.compute(A);
+  heat_tau_ = lu_.solve(heat_d_);
+  inverse_transposed_ = lu_.inverse().transpose().cast<float>();
+}
+
+void VoidSurface::assemble(Eigen::MatrixXd& A) const {
+  const std::size_t n = panels();
   const double inv4pi = 1 / (4 * std::numbers::pi);
   // Near pairs: the flux through panel i (its sub-triangles' centroids, area-weighted; graded
   // toward a panel across an edge of the wall), not the normal derivative at one point: across
   // a thin shell's void, the two faces' panels see each other at nearly a half space, and only
   // the flux keeps the small difference that matters.
-  if (on_block_face) A.setIdentity();
-  else tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+  tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
     for (std::size_t j = 0; j < n; ++j) {
       const double reach = kExact * radius_[j] + radius_[i];
       double v;
@@ -238,26 +274,6 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
     }
     A(Eigen::Index(i), Eigen::Index(i)) += 0.5;
   });
-  // The heat input's sheets (q / k per panel) seen from the void side: (1/2 + K') q / k = (I - A) q / k.
-  Eigen::VectorXd q(N);
-  for (std::size_t j = 0; j < n; ++j) q[Eigen::Index(j)] = flux_[j] / conductivity;
-  heat_d_ = on_block_face ? Eigen::VectorXd::Zero(N) : Eigen::VectorXd(q - A * q);
-  film_over_k_ = Eigen::Map<const Eigen::VectorXd>(film.data(), N) / conductivity;
-  part_ = Eigen::Map<const Eigen::VectorXd>(part.data(), N);
-  robin_ = film_over_k_.maxCoeff() > 0;
-  if (robin_) {
-    if (!far.kernel) throw std::invalid_argument("cavity void: a wall with a film needs the far lattice");
-    moments_.resize(4, N);
-    Eigen::MatrixXd F(N, 4);
-    for (std::size_t j = 0; j < n; ++j) {
-      moments_.col(Eigen::Index(j)) << conductivity * area_[j], conductivity * area_[j] * (centroid_[j] - far.center);
-      F.row(Eigen::Index(j)) = far.kernel(point_[j]).transpose();
-    }
-    A += film_over_k_.asDiagonal() * (potentials(point_) + F * moments_);
-  }
-  lu_.compute(A);
-  heat_tau_ = lu_.solve(heat_d_);
-  inverse_transposed_ = lu_.inverse().transpose().cast<float>();
 }
 
 double VoidSurface::distance_to_panel(std::size_t j, const Vec3& x) const {

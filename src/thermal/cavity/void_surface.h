@@ -107,6 +107,8 @@ class VoidSurface {
     Vec3 centroid;
     double area, flux, film, part;
   };
+  // A = 1/2 - K' into A (panels x panels), rows in parallel.
+  void assemble(Eigen::MatrixXd& A) const;
   // The gradient's component along `normal` of panel j's unit layer at p, images summed, free
   // of 1/(4 pi) (the potential: potential_row).
   double panel_gradient(std::size_t j, const Vec3& p, const Vec3& normal) const;

@@ -1,0 +1,58 @@
+#include "thermal/cavity/panel_matrix_cache.h"
+
+#include <chrono>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <utility>
+
+#include <spdlog/spdlog.h>
+
+#include "thermal/cavity/panel_matrix_source.h"  // generated: kPanelMatrixSource
+#include "thermal/kernels/cpu_features.h"
+
+namespace mtcs::thermal {
+namespace {
+
+using Digest = std::array<unsigned char, 16>;
+std::mutex kept_mutex;
+std::deque<std::pair<Digest, std::shared_ptr<const Eigen::MatrixXd>>> kept;  // newest first
+
+std::span<std::byte> bytes_of(Eigen::MatrixXd& m) {
+  return std::as_writable_bytes(std::span(m.data(), std::size_t(m.size())));
+}
+
+}  // namespace
+
+io::CacheKey panel_matrix_key() {
+  io::CacheKey key("panel-matrix");
+  key.add(std::string_view(kPanelMatrixSource));
+  key.add_value(int(has_avx2_fma()));
+  return key;
+}
+
+Eigen::MatrixXd kept_panel_matrix(const io::CacheKey& key, Eigen::Index n,
+                                  const std::function<void(Eigen::MatrixXd&)>& assemble) {
+  const Digest digest = key.digest();
+  {
+    const std::lock_guard lock(kept_mutex);
+    for (const auto& [d, m] : kept)
+      if (d == digest && m->rows() == n) return *m;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  auto m = std::make_shared<Eigen::MatrixXd>(n, n);
+  if (io::cache_read(key, bytes_of(*m))) {
+    spdlog::debug("void panels: {} x {} matrix read from the cache in {:.3f} s", n, n, seconds());
+  } else {
+    assemble(*m);
+    spdlog::debug("void panels: {} x {} matrix assembled in {:.1f} s", n, n, seconds());
+    io::cache_write(key, std::as_bytes(std::span(m->data(), std::size_t(m->size()))));
+  }
+  const std::lock_guard lock(kept_mutex);
+  kept.emplace_front(digest, m);
+  if (kept.size() > 2) kept.pop_back();
+  return *m;
+}
+
+}  // namespace mtcs::thermal
