@@ -24,6 +24,6 @@ cmake --build build-asan -j2
 # OpenCASCADE's libraries (the STEP export) keep allocations for the process's life: suppressed.
 ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$PWD/scripts/lsan_suppressions.txt" \
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
-  ctest --test-dir build-asan --output-on-failure -j2 -R "CSV|mutated|bad numbers|run store faults|mesh reader|hypervolume|mtcs distance|mtcs evaluate|stiff|segments|circle|mold spec|layout|pipeline|meshes|cylinder-triangle|cylinder vs box|triangle-triangle|interference:|mtcs clearance|mtcs interfere|mtcs thermal|thermal spec|wall thickness|part sides|molding over a whole face|access-map (rewrites|errors|MESH)"
+  ctest --test-dir build-asan --output-on-failure -j2 -R "CSV|mutated|bad numbers|run store faults|mesh reader|hypervolume|mtcs distance|mtcs evaluate|stiff|segments|circle|mold spec|layout|pipeline|meshes|cylinder-triangle|cylinder vs box|triangle-triangle|interference:|mtcs clearance|mtcs interfere|mtcs thermal|thermal spec|wall thickness|part sides|disk cache|panel matrix|molding over a whole face|access-map (rewrites|errors|MESH)"
 # Coverage-guided fuzzing of every reader, a few seconds a target (skipped without clang/libFuzzer).
 if [ "${MTCS_SKIP_FUZZ:-0}" != 1 ]; then bash scripts/fuzz.sh --smoke; fi
