@@ -1,6 +1,8 @@
 #include "mtcs/io/disk_cache.h"
 
 #include <atomic>
+#include <cctype>
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -38,15 +40,34 @@ void warn_once(const std::string& what) {
   if (!warned.exchange(true)) spdlog::warn("cache: {} (going on without it; --no-cache silences this)", what);
 }
 
-// Least recently used first (a hit touches its file), until the folder fits the budget.
+// Whether a file name is one of ours: kind-<32 hex>.bin, or a temporary of one (kept > 10 min:
+// a writer killed mid-file). The folder may be one the user shares with other files: nothing
+// else in it is counted or removed.
+bool kept_file(const std::string& name) {
+  const std::size_t dot = name.find(".bin");
+  if (dot == std::string::npos || dot < 34 || name[dot - 33] != '-') return false;
+  for (std::size_t i = dot - 32; i < dot; ++i)
+    if (!std::isxdigit(static_cast<unsigned char>(name[i]))) return false;
+  return name.size() == dot + 4 || name.compare(dot + 4, 5, ".tmp.") == 0;
+}
+
+// Least recently used first (a hit touches its file), until the folder's files fit the budget;
+// a stale temporary first of all.
 void trim(const fs::path& dir, std::uintmax_t budget) {
   std::error_code ec;
   std::vector<std::pair<fs::file_time_type, fs::directory_entry>> files;
   std::uintmax_t total = 0;
+  const auto stale = fs::file_time_type::clock::now() - std::chrono::minutes(10);
   for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
-    if (!e.is_regular_file(ec) || e.path().extension() != ".bin") continue;
+    const std::string name = e.path().filename().string();
+    if (!e.is_regular_file(ec) || !kept_file(name)) continue;
+    const fs::file_time_type time = e.last_write_time(ec);
+    if (name.find(".tmp.") != std::string::npos) {
+      if (time < stale) fs::remove(e.path(), ec);
+      continue;
+    }
     total += e.file_size(ec);
-    files.emplace_back(e.last_write_time(ec), e);
+    files.emplace_back(time, e);
   }
   if (total <= budget) return;
   std::sort(files.begin(), files.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -55,6 +76,15 @@ void trim(const fs::path& dir, std::uintmax_t budget) {
     const std::uintmax_t size = e.file_size(ec);
     if (fs::remove(e.path(), ec)) total -= size;
   }
+}
+
+// A temporary's name of its own per host, process and write: two writers of one key, threads or
+// MPI ranks on hosts sharing the folder, each rename a whole file.
+std::string temporary_suffix() {
+  static std::atomic<unsigned> count{0};
+  char host[256] = {};
+  if (::gethostname(host, sizeof host - 1) != 0) host[0] = '\0';
+  return ".tmp." + std::string(host) + "." + std::to_string(::getpid()) + "." + std::to_string(count++);
 }
 
 }  // namespace
@@ -100,8 +130,14 @@ std::optional<fs::path> default_cache_folder() {
     if (v && *v) return fs::path(v);
     return std::nullopt;
   };
-  if (auto dir = env("MTCS_CACHE_DIR")) return dir;
-  if (auto dir = env("XDG_CACHE_HOME")) return *dir / "mtcs";
+  std::error_code ec;
+  if (auto dir = env("MTCS_CACHE_DIR")) {
+    fs::path absolute = fs::absolute(*dir, ec);
+    if (ec) return std::nullopt;
+    return absolute;
+  }
+  // A relative XDG_CACHE_HOME is to be ignored (the XDG base directory specification).
+  if (auto dir = env("XDG_CACHE_HOME"); dir && dir->is_absolute()) return *dir / "mtcs";
   if (auto dir = env("HOME")) return *dir / ".cache" / "mtcs";
   return std::nullopt;
 }
@@ -133,9 +169,7 @@ void cache_write(const CacheKey& key, std::span<const std::byte> data, std::uint
   std::error_code ec;
   fs::create_directories(*dir, ec);
   const fs::path path = *dir / key.file_name();
-  // A name of its own per process and thread: two writers of one key each rename a whole file.
-  static std::atomic<unsigned> count{0};
-  const fs::path tmp = path.string() + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(count++);
+  const fs::path tmp = path.string() + temporary_suffix();
   {
     std::ofstream out(tmp, std::ios::binary);
     char header[kHeader];

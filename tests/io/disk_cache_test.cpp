@@ -119,6 +119,14 @@ TEST_CASE("disk cache: the folder keeps to its budget, the least recently used o
     mtcs::io::cache_write(key_of(k), bytes(blob), budget);
     fs::last_write_time(file(k), t0 + std::chrono::minutes(k));  // written in the order 0, 1, 2
   }
+  // A folder the user shares: files not the cache's are neither counted nor removed, however
+  // old; a temporary a killed writer left is removed once stale.
+  const fs::path user = dir / "user.bin", mine = dir / "notes-0123456789abcdef0123456789abcdef.bin.txt";
+  const fs::path left = dir / (key_of(7).file_name() + ".tmp.host.1.0");
+  for (const fs::path& p : {user, mine, left}) {
+    std::ofstream(p) << std::string(20000, 'x');
+    fs::last_write_time(p, t0 - std::chrono::hours(1));
+  }
   std::vector<double> out(1000);
   REQUIRE(mtcs::io::cache_read(key_of(0), bytes(out)));  // 0 used last now
   mtcs::io::cache_write(key_of(3), bytes(blob), budget);
@@ -126,6 +134,9 @@ TEST_CASE("disk cache: the folder keeps to its budget, the least recently used o
   CHECK_FALSE(fs::exists(file(1)));  // the least recently used
   CHECK(fs::exists(file(2)));
   CHECK(fs::exists(file(3)));
+  CHECK(fs::exists(user));
+  CHECK(fs::exists(mine));
+  CHECK_FALSE(fs::exists(left));
 }
 
 TEST_CASE("disk cache: the default folder follows MTCS_CACHE_DIR, XDG_CACHE_HOME, HOME", "[io][cache]") {
@@ -138,10 +149,15 @@ TEST_CASE("disk cache: the default folder follows MTCS_CACHE_DIR, XDG_CACHE_HOME
   CHECK(mtcs::io::default_cache_folder() == fs::path("/a/mtcs"));
   ::unsetenv("MTCS_CACHE_DIR");
   CHECK(mtcs::io::default_cache_folder() == fs::path("/b/mtcs"));
+  ::setenv("XDG_CACHE_HOME", "relative", 1);  // ignored, as the XDG specification says
+  CHECK(mtcs::io::default_cache_folder() == fs::path("/c/.cache/mtcs"));
   ::unsetenv("XDG_CACHE_HOME");
   CHECK(mtcs::io::default_cache_folder() == fs::path("/c/.cache/mtcs"));
   ::unsetenv("HOME");
   CHECK_FALSE(mtcs::io::default_cache_folder());
+  ::setenv("MTCS_CACHE_DIR", "here", 1);  // made absolute
+  CHECK(mtcs::io::default_cache_folder() == fs::current_path() / "here");
+  ::unsetenv("MTCS_CACHE_DIR");
   for (std::size_t i = 0; i < 3; ++i)
     if (saved[i]) ::setenv(names[i], saved[i]->c_str(), 1);
 }

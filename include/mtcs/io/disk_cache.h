@@ -56,7 +56,9 @@ class CacheKey {
 // The folder the cache lives in; none: off.
 void set_cache_folder(std::optional<std::filesystem::path> folder);
 std::optional<std::filesystem::path> cache_folder();
-// $MTCS_CACHE_DIR, else $XDG_CACHE_HOME/mtcs, else $HOME/.cache/mtcs; none without any of them.
+// $MTCS_CACHE_DIR (made absolute), else $XDG_CACHE_HOME/mtcs (when absolute), else
+// $HOME/.cache/mtcs; none without any of them. Only the cache's own files in it are ever counted
+// or removed (kind-<32 hex>.bin, and a temporary of one left by a killed writer).
 std::optional<std::filesystem::path> default_cache_folder();
 
 // The bytes kept under key, exactly out.size() of them, into out: false when the cache is off or

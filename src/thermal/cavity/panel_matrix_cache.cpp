@@ -1,11 +1,13 @@
 #include "thermal/cavity/panel_matrix_cache.h"
 
+#include <algorithm>
 #include <chrono>
 #include <deque>
 #include <memory>
 #include <mutex>
 #include <utility>
 
+#include <gnu/libc-version.h>
 #include <spdlog/spdlog.h>
 
 #include "thermal/cavity/panel_matrix_source.h"  // generated: kPanelMatrixSource
@@ -27,7 +29,7 @@ std::span<std::byte> bytes_of(Eigen::MatrixXd& m) {
 io::CacheKey panel_matrix_key() {
   io::CacheKey key("panel-matrix");
   key.add(std::string_view(kPanelMatrixSource));
-  key.add_value(int(has_avx2_fma()));
+  key.add_value(int(has_avx2_fma())).add(std::string_view(gnu_get_libc_version()));
   return key;
 }
 
@@ -49,9 +51,12 @@ Eigen::MatrixXd kept_panel_matrix(const io::CacheKey& key, Eigen::Index n,
     spdlog::debug("void panels: {} x {} matrix assembled in {:.1f} s", n, n, seconds());
     io::cache_write(key, std::as_bytes(std::span(m->data(), std::size_t(m->size()))));
   }
+  // Two threads that missed together both assembled (the same bits): one entry is kept.
   const std::lock_guard lock(kept_mutex);
-  kept.emplace_front(digest, m);
-  if (kept.size() > 2) kept.pop_back();
+  if (std::none_of(kept.begin(), kept.end(), [&](const auto& k) { return k.first == digest; })) {
+    kept.emplace_front(digest, m);
+    if (kept.size() > 2) kept.pop_back();
+  }
   return *m;
 }
 

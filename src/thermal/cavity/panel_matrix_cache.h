@@ -16,8 +16,9 @@
 
 namespace mtcs::thermal {
 
-// A key for the panel matrix: "panel-matrix", the sources' digest and the CPU's kernel set
-// (libm's results may differ between its FMA and plain paths); the caller adds the inputs.
+// A key for the panel matrix: "panel-matrix", the sources' digest, the CPU's kernel set and
+// glibc's version (libm's log and atan2 may differ between its FMA and plain paths and between
+// releases); the caller adds the inputs.
 io::CacheKey panel_matrix_key();
 
 // The n x n matrix of key: kept, or assembled by assemble(A) into A (sized n x n) and kept.
