@@ -14,6 +14,7 @@
 #include "mtcs/mold/decoder.h"
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/run/session.h"
+#include "option_error.h"
 #include "python_plot.h"
 
 namespace mtcs::cli {
@@ -25,8 +26,6 @@ struct ThermalOptions {
   int elements = 0;
   bool json = false;
 };
-
-std::string extension(const std::string& path) { return std::filesystem::path(path).extension().string(); }
 
 }  // namespace
 
@@ -47,20 +46,14 @@ Command add_thermal_command(CLI::App& app) {
   sub->add_option("--tier", opt->tier, "t1, t2, t2d or fd (default: the spec's)")->check(CLI::IsMember({"t1", "t2", "t2d", "fd"}));
   sub->add_option("--cell", opt->cell, "mm, the finite volumes' cell (default: the spec's cell_size)")->check(CLI::Range(0.1, 100.0));
   sub->add_option("--elements", opt->elements, "line-sink elements per bore (default: the spec's)")->check(CLI::Range(1, 64));
-  sub->add_option("--samples", opt->samples, "CSV of points (columns x,y,z, mm): their temperatures go to --out");
-  sub->add_option("--out", opt->out, "field.vtp, field.ply, field.png, or with --samples a CSV");
+  CLI::Option* out = sub->add_option("--out", opt->out, "field.vtp, field.ply, field.png, or with --samples a CSV");
+  sub->add_option("--samples", opt->samples, "CSV of points (columns x,y,z, mm): their temperatures go to --out")->needs(out);
   sub->add_option("--problem", opt->problem, "also the conduction problem as JSON, for a solver outside mtcs (SI films, mm)");
   sub->add_flag("--json", opt->json, "one JSON object on stdout: {tier, cavity_condition, mean, std, max, hottest, surface, samples, heat_in, heat_to_bores, heat_to_faces, cooling_time, cycle_time (s), ejectable, temperature_difference, seconds; sides with cavity.parting}");
   return {sub, [opt] {
-            const std::string ext = extension(opt->out);
-            if (!opt->out.empty() && opt->samples.empty() && ext != ".vtp" && ext != ".ply" && ext != ".png") {
-              std::cerr << "mtcs thermal: --out " << opt->out << ": a field is written as .vtp, .ply or .png (or give --samples for a CSV)\n";
-              return 2;
-            }
-            if (!opt->samples.empty() && opt->out.empty()) {
-              std::cerr << "mtcs thermal: --samples needs --out T.csv for the temperatures\n";
-              return 2;
-            }
+            const std::string ext = std::filesystem::path(opt->out).extension().string();
+            if (!opt->out.empty() && opt->samples.empty() && ext != ".vtp" && ext != ".ply" && ext != ".png")
+              throw option_error("--out " + opt->out, "a field is written as .vtp, .ply or .png (or give --samples for a CSV)");
             // The scene alone: the temperatures below build their own model (not the pipeline's).
             const run::Session session(opt->mold, {}, eval::PipelineScope::constraints);
             const mold::Layout layout = mold::decode(session.scene(), session.read_layout(opt->layout));
