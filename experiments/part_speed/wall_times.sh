@@ -7,8 +7,8 @@
 set -euo pipefail
 old=$1 new=$2
 shift 2
-molds=("${@:-cup gear l_bracket ribbed_box plate}")
-read -r -a molds <<<"${molds[*]}"
+molds=("$@")
+[ ${#molds[@]} -gt 0 ] || molds=(cup gear l_bracket ribbed_box plate)
 root=$(cd "$(dirname "$0")/../.." && pwd)
 cache=$(mktemp -d)
 trap 'rm -rf "$cache" "$cache.time"' EXIT

@@ -164,7 +164,7 @@ CavityTemperature solve_once(const mold::Scene& scene, const mold::MoldSpec& spe
 // Splits the points asked for from those across the part (after them); the summaries of the
 // part's two faces: the difference across its wall and, with the mold's parting, each side's.
 void summarize_faces(const mold::Scene& scene, CavityTemperature& r, std::size_t asked, const thermal::Samples& samples,
-                  const std::vector<std::optional<Vec3>>& across) {
+                     const std::vector<std::optional<Vec3>>& across) {
   const std::vector<double> at_across(r.at_points.begin() + std::ptrdiff_t(asked), r.at_points.end());
   r.at_points.resize(asked);
   r.across = wall_difference(r.at_samples, at_across, samples, across);
