@@ -19,6 +19,7 @@ namespace {
 using Digest = std::array<unsigned char, 16>;
 std::mutex kept_mutex;
 std::deque<std::pair<Digest, std::shared_ptr<const Eigen::MatrixXd>>> kept;  // newest first
+std::size_t kept_bytes = 0;
 
 std::span<std::byte> bytes_of(Eigen::MatrixXd& m) {
   return std::as_writable_bytes(std::span(m.data(), std::size_t(m.size())));
@@ -26,36 +27,46 @@ std::span<std::byte> bytes_of(Eigen::MatrixXd& m) {
 
 }  // namespace
 
-io::CacheKey panel_matrix_key() {
-  io::CacheKey key("panel-matrix");
+io::CacheKey panel_matrix_key(std::string_view kind) {
+  io::CacheKey key(kind);
   key.add(std::string_view(kPanelMatrixSource));
   key.add_value(int(has_avx2_fma())).add(std::string_view(gnu_get_libc_version()));
   return key;
 }
 
-Eigen::MatrixXd kept_panel_matrix(const io::CacheKey& key, Eigen::Index n,
-                                  const std::function<void(Eigen::MatrixXd&)>& assemble) {
+Eigen::MatrixXd kept_panel_matrix(const io::CacheKey& key, Eigen::Index rows, Eigen::Index cols,
+                                  const std::function<void(Eigen::MatrixXd&)>& compute) {
+  const std::size_t bytes = sizeof(double) * std::size_t(rows) * std::size_t(cols);
+  if (bytes > kKeptBytes / 2) {  // a copy kept would double a big part's memory
+    Eigen::MatrixXd m(rows, cols);
+    compute(m);
+    return m;
+  }
   const Digest digest = key.digest();
   {
     const std::lock_guard lock(kept_mutex);
     for (const auto& [d, m] : kept)
-      if (d == digest && m->rows() == n) return *m;
+      if (d == digest && m->rows() == rows && m->cols() == cols) return *m;
   }
   const auto t0 = std::chrono::steady_clock::now();
   auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
-  auto m = std::make_shared<Eigen::MatrixXd>(n, n);
+  auto m = std::make_shared<Eigen::MatrixXd>(rows, cols);
   if (io::cache_read(key, bytes_of(*m))) {
-    spdlog::debug("void panels: {} x {} matrix read from the cache in {:.3f} s", n, n, seconds());
+    spdlog::debug("void panels: {} x {} matrix read from the cache in {:.3f} s", rows, cols, seconds());
   } else {
-    assemble(*m);
-    spdlog::debug("void panels: {} x {} matrix assembled in {:.1f} s", n, n, seconds());
+    compute(*m);
+    spdlog::debug("void panels: {} x {} matrix built in {:.1f} s", rows, cols, seconds());
     io::cache_write(key, std::as_bytes(std::span(m->data(), std::size_t(m->size()))));
   }
-  // Two threads that missed together both assembled (the same bits): one entry is kept.
+  // Two threads that missed together both built it (the same bits): one entry is kept.
   const std::lock_guard lock(kept_mutex);
   if (std::none_of(kept.begin(), kept.end(), [&](const auto& k) { return k.first == digest; })) {
     kept.emplace_front(digest, m);
-    if (kept.size() > 2) kept.pop_back();
+    kept_bytes += bytes;
+    while (kept.size() > 1 && kept_bytes > kKeptBytes) {
+      kept_bytes -= sizeof(double) * std::size_t(kept.back().second->size());
+      kept.pop_back();
+    }
   }
   return *m;
 }

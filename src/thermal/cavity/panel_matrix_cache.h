@@ -2,13 +2,16 @@
 // The void's panel matrix A = 1/2 - K' (void_surface.h) depends on the wall's geometry, the
 // block's images and the panels alone: not on the heat, the film or the coolant. It is most of
 // a mesh part's model (the gear's 911 panels: 14 of its 17 s on a loaded machine), and the same
-// part in the same block gives the same matrix. So it is kept: in memory, the newest two (a
-// command that solves one part at several films, as `mtcs thermal`'s cycle does), and in the
-// disk cache (mtcs/io/disk_cache.h) under a key of every input and of the digest of the sources
-// that compute it, so a kept matrix is bit for bit what a fresh assembly gives.
+// part in the same block gives the same matrix. So do the panels' potentials at the model's
+// samples, at the faces and at their own points (most of what a film's model builds again:
+// `mtcs thermal`'s cycle solves the part at 3-5 films). So they are kept: in memory, the newest
+// few (kKeptBytes), and in the disk cache (mtcs/io/disk_cache.h) under a key of every input and
+// of the digest of the sources that compute them, so a kept matrix is bit for bit what a fresh
+// build gives.
 // Private to src/thermal.
 
 #include <Eigen/Dense>
+#include <cstddef>
 #include <functional>
 #include <string_view>
 
@@ -16,13 +19,17 @@
 
 namespace mtcs::thermal {
 
-// A key for the panel matrix: "panel-matrix", the sources' digest, the CPU's kernel set and
-// glibc's version (libm's log and atan2 may differ between its FMA and plain paths and between
-// releases); the caller adds the inputs.
-io::CacheKey panel_matrix_key();
+// A key for one of the void's matrices: `kind` (a file-name prefix), the sources' digest, the
+// CPU's kernel set and glibc's version (libm's log and atan2 may differ between its FMA and plain
+// paths and between releases); the caller adds the inputs.
+io::CacheKey panel_matrix_key(std::string_view kind);
 
-// The n x n matrix of key: kept, or assembled by assemble(A) into A (sized n x n) and kept.
-Eigen::MatrixXd kept_panel_matrix(const io::CacheKey& key, Eigen::Index n,
-                                  const std::function<void(Eigen::MatrixXd&)>& assemble);
+// The matrices kept in memory take at most this many bytes (the newest always kept).
+constexpr std::size_t kKeptBytes = std::size_t(256) << 20;
+
+// The rows x cols matrix of key: kept, or computed by compute(M) into M (sized rows x cols) and
+// kept. One of more than kKeptBytes / 2 is computed each time and never kept.
+Eigen::MatrixXd kept_panel_matrix(const io::CacheKey& key, Eigen::Index rows, Eigen::Index cols,
+                                  const std::function<void(Eigen::MatrixXd&)>& compute);
 
 }  // namespace mtcs::thermal

@@ -214,13 +214,9 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
   if (on_block_face) {
     A = Eigen::MatrixXd::Identity(N, N);
   } else {
-    io::CacheKey key = panel_matrix_key();
-    key.add_value(panel_).add_values(std::span<const std::size_t>(begin_));
-    for (const Sub& s : sub_)
-      for (int k = 0; k < 3; ++k) key.add_values(std::span<const double>(s.source.corner(k).data(), 3));
-    for (const Image& g : images_)
-      key.add_values(std::span<const double>(g.mult.data(), 3)).add_values(std::span<const double>(g.offset.data(), 3)).add_value(g.sign);
-    A = kept_panel_matrix(key, N, [&](Eigen::MatrixXd& a) { assemble(a); });
+    io::CacheKey key = panel_matrix_key("panel-matrix");
+    add_panels(key);
+    A = kept_panel_matrix(key, N, N, [&](Eigen::MatrixXd& a) { assemble(a); });
   }
   // The heat input's sheets (q / k per panel) seen from the void side: (1/2 + K') q / k = (I - A) q / k.
   Eigen::VectorXd q(N);
@@ -237,11 +233,19 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
       moments_.col(Eigen::Index(j)) << conductivity * area_[j], conductivity * area_[j] * (centroid_[j] - far.center);
       F.row(Eigen::Index(j)) = far.kernel(point_[j]).transpose();
     }
-    A += film_over_k_.asDiagonal() * (potentials(point_) + F * moments_);
+    A += film_over_k_.asDiagonal() * (kept_potentials(point_) + F * moments_);
   }
   lu_.compute(A);
   heat_tau_ = lu_.solve(heat_d_);
   inverse_transposed_ = lu_.inverse().transpose().cast<float>();
+}
+
+void VoidSurface::add_panels(io::CacheKey& key) const {
+  key.add_value(panel_).add_values(std::span<const std::size_t>(begin_));
+  for (const Sub& s : sub_)
+    for (int k = 0; k < 3; ++k) key.add_values(std::span<const double>(s.source.corner(k).data(), 3));
+  for (const Image& g : images_)
+    key.add_values(std::span<const double>(g.mult.data(), 3)).add_values(std::span<const double>(g.offset.data(), 3)).add_value(g.sign);
 }
 
 void VoidSurface::assemble(Eigen::MatrixXd& A) const {
@@ -435,6 +439,14 @@ Eigen::MatrixXd VoidSurface::potentials(std::span<const Vec3> targets) const {
   if (t > 64) tbb::parallel_for(std::size_t(0), t, row);
   else for (std::size_t i = 0; i < t; ++i) row(i);
   return S;
+}
+
+Eigen::MatrixXd VoidSurface::kept_potentials(std::span<const Vec3> targets) const {
+  io::CacheKey key = panel_matrix_key("void-potentials");
+  add_panels(key);
+  for (const Vec3& p : targets) key.add_values(std::span<const double>(p.data(), 3));
+  return kept_panel_matrix(key, Eigen::Index(targets.size()), Eigen::Index(panels()),
+                           [&](Eigen::MatrixXd& s) { s = potentials(targets); });
 }
 
 Eigen::MatrixXf VoidSurface::layer(const Eigen::MatrixXf& d) const {

@@ -30,6 +30,10 @@
 #include "thermal/kernels/line_sink_fields.h"
 #include "mtcs/thermal/model.h"
 
+namespace mtcs::io {
+class CacheKey;
+}
+
 namespace mtcs::thermal {
 
 // The far lattice of the images not summed exactly: a charge and first moment about `center`
@@ -96,6 +100,9 @@ class VoidSurface {
   // potentials(targets) tau, potentials (targets x panels) = (1/4 pi) S.
   Eigen::MatrixXf layer(const Eigen::MatrixXf& d) const;
   Eigen::MatrixXd potentials(std::span<const Vec3> targets) const;
+  // potentials(targets), kept by the panels and the targets (panel_matrix_cache.h): for the
+  // fixed targets a model builds again at each film (its samples, the faces' points).
+  Eigen::MatrixXd kept_potentials(std::span<const Vec3> targets) const;
 
   // Whether the cylinder of `radius` about a -> b reaches the wall (a bore through the part, or
   // touching it: an illegal layout, whose columns keep no reflection, as without the void).
@@ -109,6 +116,9 @@ class VoidSurface {
   };
   // A = 1/2 - K' into A (panels x panels), rows in parallel.
   void assemble(Eigen::MatrixXd& A) const;
+  // Every input of the panels' matrices: their width and grouping, the sub-triangles' corners
+  // and the images.
+  void add_panels(io::CacheKey& key) const;
   // The gradient's component along `normal` of panel j's unit layer at p, images summed, free
   // of 1/(4 pi) (the potential: potential_row).
   double panel_gradient(std::size_t j, const Vec3& p, const Vec3& normal) const;

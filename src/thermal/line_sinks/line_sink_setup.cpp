@@ -225,7 +225,7 @@ void LineSinkModel::Impl::build_robin_fields(const std::vector<Vec3>& face_point
   const std::size_t n = v.panels(), nf = m.faces.size();
   const auto N = Eigen::Index(n);
   const VectorXd& H = v.film_over_k();
-  m.void_face_potentials = m.face_average * v.potentials(face_points);
+  m.void_face_potentials = m.face_average * v.kept_potentials(face_points);
   m.far_panels.resize(N, 4);
   MatrixXd far_fixed(N, 4);  // the far lattice of the sources summed to `images` levels
   VectorXd heat(N);
@@ -521,11 +521,11 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
         m.void_pairs.close_target();
       }
     m.void_pairs.make_slots(), m.void_pairs.make_chunk_boxes();
-    m.void_potentials = v.potentials(samples.points);
+    m.void_potentials = v.kept_potentials(samples.points);
     m.void_potentials_ft = m.void_potentials.transpose().cast<float>();
     std::vector<Vec3> face_points;
     for (const ConvectiveFace& f : m.faces) face_points.insert(face_points.end(), f.cool.begin(), f.cool.end());
-    m.void_faces = v.times_inverse(m.face_average * v.potentials(face_points));
+    m.void_faces = v.times_inverse(m.face_average * v.kept_potentials(face_points));
     MatrixXd d(Eigen::Index(v.panels()), Eigen::Index(nf));
     for (std::size_t i = 0; i < v.panels(); ++i)
       for (std::size_t f = 0; f < nf; ++f)
