@@ -75,7 +75,7 @@ PartCoupling cavity_coupling(const mold::MoldSpec& spec) {
 }
 
 double consistent_cooling(const std::function<double(double)>& need, double start, double tolerance,
-                          int max_evaluations, int* evaluations) {
+                          int max_evaluations, int* evaluations, std::optional<std::pair<double, double>> known) {
   // In logarithms (u = ln c, misfit ln need - u): the steep need of a mold near its eject
   // temperature is closer to a straight line there (the L-bracket's case: 4 evaluations to 1 %
   // instead of 7).
@@ -92,7 +92,16 @@ double consistent_cooling(const std::function<double(double)>& need, double star
   };
   double a = std::log(start), fa = misfit(a, start);
   if (!done) {
-    double b = a + fa, fb = misfit(b, std::exp(b));  // at need(start): the other side, need decreasing
+    double b, fb;
+    if (known && known->first > 0 && known->second > 0 &&
+        (std::log(known->second / known->first) > 0) != (fa > 0)) {
+      const double relative = std::abs(known->second - known->first) / known->first;
+      if (relative < best_misfit) best = known->first, best_misfit = relative;
+      b = a, fb = fa;
+      a = std::log(known->first), fa = std::log(known->second) - a;
+    } else {
+      b = a + fa, fb = misfit(b, std::exp(b));  // at need(start): the other side, need decreasing
+    }
     while (!done && fa * fb < 0) {
       const double c = b - fb * (b - a) / (fb - fa), fc = misfit(c, std::exp(c));
       if (fc * fb < 0) a = b, fa = fb;

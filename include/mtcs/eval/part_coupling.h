@@ -26,7 +26,9 @@
 // Units: mm, s, W, degrees C (films W/(mm^2 K)), as the thermal module.
 
 #include <functional>
+#include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "mtcs/mold/mold_spec.h"
@@ -70,9 +72,12 @@ PartCoupling cavity_coupling(const mold::MoldSpec& spec);
 // s); regula falsi (Illinois) in logarithms on the bracket [c0, need(c0)] converges in a few
 // evaluations (need > 0). Stops
 // when |need(c) - c| <= tolerance c or after max_evaluations of need (then the c with the least
-// misfit). `evaluations` (optional) counts them.
+// misfit). `evaluations` (optional) counts them. `known` (optional): a cooling time and its
+// need, already evaluated (`start` predicted from it): when the two bracket the root, the
+// search starts from that bracket (one evaluation fewer than a substitution step).
 double consistent_cooling(const std::function<double(double)>& need, double start, double tolerance,
-                          int max_evaluations, int* evaluations = nullptr);
+                          int max_evaluations, int* evaluations = nullptr,
+                          std::optional<std::pair<double, double>> known = {});
 
 // The cycle a solution needs, from that one solve (the optimiser's linearisation of the fixed
 // point mtcs thermal iterates with whole solves; docs/thermal-model.md, "The cycle in the
