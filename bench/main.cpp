@@ -3,6 +3,8 @@
 // binary links none of the peers.
 
 #include <CLI/CLI.hpp>
+#include <spdlog/sinks/stdout_sinks.h>
+#include <spdlog/spdlog.h>
 #include <iostream>
 #include <memory>
 
@@ -13,6 +15,7 @@
 #include "bench_hypervolume.h"
 #include "bench_interfere.h"
 #include "bench_optimize.h"
+#include "bench_part.h"
 #include "bench_sms.h"
 #include "bench_thermal.h"
 #include "mtcs/io/input_error.h"
@@ -21,6 +24,8 @@ namespace mtcs::bench {
 namespace {
 
 int run(int argc, char** argv) {
+  // Log lines (a model's build) on stderr: stdout is the benchmark's CSV.
+  spdlog::set_default_logger(spdlog::stderr_logger_st("mtcs-bench"));
   CLI::App app{"mtcs bench - benchmarks of the kernels, against peers measured in the same run.", "mtcs bench"};
   app.require_subcommand(1);
 
@@ -76,6 +81,26 @@ int run(int argc, char** argv) {
   evaluate->add_option("--seed", eo->seed, "seed of the random layouts")->capture_default_str();
   evaluate->add_flag("--mutations", eo->mutations, "time children of mutations of random parents, not random layouts");
   evaluate->add_option("--config", eo->config, "RUN.yaml whose mutation rates make the children (default: the defaults)");
+
+  CLI::App* part = app.add_subcommand(
+      "part",
+      "What a designer waits for on a mold with a part: mtcs evaluate and mtcs thermal of its layout\n"
+      "as a user runs them (a process each; cold: an empty cache folder, warm: the folder the cold\n"
+      "run filled), wall time and peak memory, with every --peer binary's commands run in turn in the\n"
+      "same run (old and new builds on one machine state); then in this process on one thread: the\n"
+      "first score of the layout (session and model, cache warm), children of the optimiser's\n"
+      "mutations of it per second, random layouts (3 circuits of 5 legs) per second. CSV on stdout:\n"
+      "  mold,program,measure,value,unit\n"
+      "Example: mtcs bench part molds/cup.yaml --peer /tmp/mtcs-old --repeat 3");
+  auto po = std::make_shared<PartBenchOptions>();
+  part->add_option("mold", po->mold, "mold spec")->required();
+  part->add_option("--layout", po->layout, "layout (default: MOLD.layout.yaml beside the mold)");
+  part->add_option("--peer", po->peers, "another mtcs binary whose commands run in the same run");
+  part->add_option("--repeat", po->repeat, "runs of each command (the median)")->capture_default_str()->check(CLI::Range(1, 100));
+  part->add_option("--children", po->children, "children timed")->capture_default_str()->check(CLI::Range(1, 1000000));
+  part->add_option("--randoms", po->randoms, "random layouts timed")->capture_default_str()->check(CLI::Range(1, 1000000));
+  part->add_option("--seed", po->seed, "seed of the children and random layouts")->capture_default_str();
+  part->add_flag("--optimize", po->optimize, "also the default mtcs optimize --seed 1 (wall time, peak memory)");
 
   CLI::App* optimize = app.add_subcommand(
       "optimize",
@@ -256,6 +281,7 @@ int run(int argc, char** argv) {
   if (hv->parsed()) return bench_hypervolume(ho->fronts, ho->repeat, ho->max_contribution_n);
   if (sms->parsed()) return bench_sms(so->problem, so->algorithms, so->seeds, so->evaluations);
   if (optimize->parsed()) return bench_optimize(*oo);
+  if (part->parsed()) return bench_part(*po);
   if (evaluate->parsed())
     return bench_evaluate_rows(eo->mold, eo->threads, eo->evaluations, eo->circuits, eo->bores, eo->seed,
                                eo->mutations, eo->config);

@@ -5,6 +5,10 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "cli/run_mtcs.h"
 #include "support/paths.h"
@@ -58,4 +62,40 @@ TEST_CASE("mtcs bench: runs mtcs-bench with the arguments and its exit code", "[
   // ... and how to get it on a machine the demo set up (scripts/setup.sh --minimal has no peers).
   CHECK(read_text(err).find("scripts/setup.sh") != std::string::npos);
   CHECK(read_text(err).find("-DMTCS_BUILD_BENCH=ON") != std::string::npos);
+}
+
+TEST_CASE("mtcs bench part: each command cold and warm for mtcs and a peer binary, then the rates", "[cli][bench]") {
+  // The peer: this mtcs under another name (its rows must carry that name, its commands run).
+  const fs::path peer = scratch("bench_part", "mtcs-peer");
+  fs::remove(peer);
+  fs::create_symlink(MTCS_BINARY, peer);
+  const fs::path out = scratch("bench_part", "part.csv");
+  REQUIRE(run_mtcs("bench part " + std::string(MTCS_SOURCE_DIR) + "/molds/plate.yaml --children 4 --randoms 2 --peer " +
+                   peer.string() + " > " + out.string() + " 2>/dev/null") == 0);
+  std::istringstream csv(read_text(out));
+  std::string line;
+  std::getline(csv, line);
+  CHECK(line == "mold,program,measure,value,unit");
+  std::map<std::string, int> rows;  // program's kind, measure
+  while (std::getline(csv, line)) {
+    std::vector<std::string> f;
+    std::istringstream fields(line);
+    for (std::string s; std::getline(fields, s, ',');) f.push_back(s);
+    REQUIRE(f.size() == 5);
+    INFO(line);
+    CHECK(std::stod(f[3]) > 0);
+    ++rows[(f[1] == peer.string() ? "peer " : "mtcs ") + f[2]];
+  }
+  for (const std::string program : {"mtcs ", "peer "})
+    for (const std::string command : {"evaluate_", "thermal_"})
+      for (const std::string when : {"cold", "warm"}) {
+        CHECK(rows[program + command + when] == 1);
+        CHECK(rows[program + command + when + "_peak"] == 1);
+      }
+  for (const std::string in_process : {"first_layout", "child", "random", "in_process_peak"}) {
+    CHECK(rows["mtcs " + in_process] == 1);
+    CHECK(rows["peer " + in_process] == 0);
+  }
+  // A peer that fails is an error, not a row.
+  CHECK(run_mtcs("bench part " + std::string(MTCS_SOURCE_DIR) + "/molds/plate.yaml --peer /bin/false 2>/dev/null") != 0);
 }
