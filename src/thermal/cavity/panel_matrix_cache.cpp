@@ -34,7 +34,7 @@ io::CacheKey panel_matrix_key(std::string_view kind) {
   return key;
 }
 
-Eigen::MatrixXd kept_panel_matrix(const io::CacheKey& key, Eigen::Index rows, Eigen::Index cols,
+Eigen::MatrixXd kept_panel_matrix(const io::CacheKey& key, Eigen::Index rows, Eigen::Index cols, Keep keep,
                                   const std::function<void(Eigen::MatrixXd&)>& compute) {
   const std::size_t bytes = sizeof(double) * std::size_t(rows) * std::size_t(cols);
   if (bytes > kKeptBytes / 2) {  // a copy kept would double a big part's memory
@@ -51,12 +51,12 @@ Eigen::MatrixXd kept_panel_matrix(const io::CacheKey& key, Eigen::Index rows, Ei
   const auto t0 = std::chrono::steady_clock::now();
   auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   auto m = std::make_shared<Eigen::MatrixXd>(rows, cols);
-  if (io::cache_read(key, bytes_of(*m))) {
+  if (keep == Keep::disk && io::cache_read(key, bytes_of(*m))) {
     spdlog::debug("void panels: {} x {} matrix read from the cache in {:.3f} s", rows, cols, seconds());
   } else {
     compute(*m);
     spdlog::debug("void panels: {} x {} matrix built in {:.1f} s", rows, cols, seconds());
-    io::cache_write(key, std::as_bytes(std::span(m->data(), std::size_t(m->size()))));
+    if (keep == Keep::disk) io::cache_write(key, std::as_bytes(std::span(m->data(), std::size_t(m->size()))));
   }
   // Two threads that missed together both built it (the same bits): one entry is kept.
   const std::lock_guard lock(kept_mutex);

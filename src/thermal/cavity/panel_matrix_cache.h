@@ -4,10 +4,10 @@
 // a mesh part's model (the gear's 911 panels: 14 of its 17 s on a loaded machine), and the same
 // part in the same block gives the same matrix. So do the panels' potentials at the model's
 // samples, at the faces and at their own points (most of what a film's model builds again:
-// `mtcs thermal`'s cycle solves the part at 3-5 films). So they are kept: in memory, the newest
-// few (kKeptBytes), and in the disk cache (mtcs/io/disk_cache.h) under a key of every input and
-// of the digest of the sources that compute them, so a kept matrix is bit for bit what a fresh
-// build gives.
+// `mtcs thermal`'s cycle solves the part at 2-3 films). So they are kept: in memory, the newest
+// few (kKeptBytes), and the panel matrix in the disk cache (mtcs/io/disk_cache.h) too, under a
+// key of every input and of the digest of the sources that compute them, so a kept matrix is bit
+// for bit what a fresh build gives.
 // Private to src/thermal.
 
 #include <Eigen/Dense>
@@ -27,9 +27,13 @@ io::CacheKey panel_matrix_key(std::string_view kind);
 // The matrices kept in memory take at most this many bytes (the newest always kept).
 constexpr std::size_t kKeptBytes = std::size_t(256) << 20;
 
+// Where a matrix is kept: in memory for this process, or on disk as well (the panel matrix:
+// seconds to build, milliseconds to read; the potentials are about as fast to compute as to read).
+enum class Keep { memory, disk };
+
 // The rows x cols matrix of key: kept, or computed by compute(M) into M (sized rows x cols) and
 // kept. One of more than kKeptBytes / 2 is computed each time and never kept.
-Eigen::MatrixXd kept_panel_matrix(const io::CacheKey& key, Eigen::Index rows, Eigen::Index cols,
+Eigen::MatrixXd kept_panel_matrix(const io::CacheKey& key, Eigen::Index rows, Eigen::Index cols, Keep keep,
                                   const std::function<void(Eigen::MatrixXd&)>& compute);
 
 }  // namespace mtcs::thermal

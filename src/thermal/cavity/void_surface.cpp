@@ -216,7 +216,7 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
   } else {
     io::CacheKey key = panel_matrix_key("panel-matrix");
     add_panels(key);
-    A = kept_panel_matrix(key, N, N, [&](Eigen::MatrixXd& a) { assemble(a); });
+    A = kept_panel_matrix(key, N, N, Keep::disk, [&](Eigen::MatrixXd& a) { assemble(a); });
   }
   // The heat input's sheets (q / k per panel) seen from the void side: (1/2 + K') q / k = (I - A) q / k.
   Eigen::VectorXd q(N);
@@ -445,7 +445,7 @@ Eigen::MatrixXd VoidSurface::kept_potentials(std::span<const Vec3> targets) cons
   io::CacheKey key = panel_matrix_key("void-potentials");
   add_panels(key);
   for (const Vec3& p : targets) key.add_values(std::span<const double>(p.data(), 3));
-  return kept_panel_matrix(key, Eigen::Index(targets.size()), Eigen::Index(panels()),
+  return kept_panel_matrix(key, Eigen::Index(targets.size()), Eigen::Index(panels()), Keep::memory,
                            [&](Eigen::MatrixXd& s) { s = potentials(targets); });
 }
 

@@ -100,8 +100,8 @@ class VoidSurface {
   // potentials(targets) tau, potentials (targets x panels) = (1/4 pi) S.
   Eigen::MatrixXf layer(const Eigen::MatrixXf& d) const;
   Eigen::MatrixXd potentials(std::span<const Vec3> targets) const;
-  // potentials(targets), kept by the panels and the targets (panel_matrix_cache.h): for the
-  // fixed targets a model builds again at each film (its samples, the faces' points).
+  // potentials(targets), kept in memory by the panels and the targets (panel_matrix_cache.h):
+  // for the fixed targets a model builds again at each film (its samples, the faces' points).
   Eigen::MatrixXd kept_potentials(std::span<const Vec3> targets) const;
 
   // Whether the cylinder of `radius` about a -> b reaches the wall (a bore through the part, or
