@@ -72,12 +72,12 @@ ThermalQuery thermal_query(const mold::MoldSpec& spec) {
 
 namespace {
 
-// One solve with `spec`'s thermal section (the scene's, or another cycle's).
+// One solve with `spec`'s thermal section (the scene's, or another cycle's) at the scene's samples.
 CavityTemperature solve_once(const mold::Scene& scene, const mold::MoldSpec& spec, const mold::Layout& layout,
-                             const ThermalQuery& query, const std::vector<Vec3>& points, double field_edge) {
+                             const ThermalQuery& query, const thermal::Samples& samples, const std::vector<Vec3>& points,
+                             double field_edge) {
   const auto t0 = std::chrono::steady_clock::now();
   const thermal::Setting setting = thermal_setting(scene, spec);
-  const thermal::Samples samples = thermal_samples(scene);
   const std::vector<thermal::Channel> channels = thermal_channels(layout, spec);
   CavityTemperature out;
   out.tier = mold::to_string(query.tier);
@@ -182,7 +182,7 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
   std::vector<Vec3> points = asked;
   for (const auto& q : across)
     if (q) points.push_back(*q);
-  CavityTemperature r = solve_once(scene, scene.spec(), layout, query, points, field_edge);
+  CavityTemperature r = solve_once(scene, scene.spec(), layout, query, samples, points, field_edge);
   const mold::ThermalSpec& t = scene.spec().thermal;
   if (t.cavity_condition != mold::CavityCondition::Coupled || t.cycle.cooling || t.part_film) {
     summarize_faces(scene, r, asked.size(), samples, across);
@@ -198,7 +198,7 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
       for (const auto& [c, s] : solved)
         if (c == cooling) return s.cooling_time;
       spec.thermal.cycle.cooling = cooling;
-      solved.emplace_back(cooling, solve_once(scene, spec, layout, query, points, field_edge));
+      solved.emplace_back(cooling, solve_once(scene, spec, layout, query, samples, points, field_edge));
       return solved.back().second.cooling_time;
     };
     // From the cycle the nominal solve predicts (each place's share of the span rescaled with

@@ -94,21 +94,23 @@ struct Tables {
 };
 
 // `key` followed by every number of the setting a kept build depends on: the block, its faces'
-// conditions, the heated triangles.
-std::vector<double> setting_key(const Setting& setting, std::vector<double> key) {
+// conditions, the heated triangles (and their film and part temperature: `with_film`).
+std::vector<double> setting_key(const Setting& setting, std::vector<double> key, bool with_film = true) {
   key.push_back(setting.conductivity);
   for (const Vec3& v : {setting.block.min, setting.block.max}) key.insert(key.end(), v.data(), v.data() + 3);
   for (const FaceCondition& f : setting.faces) key.push_back(f.film), key.push_back(f.ambient);
   for (const HeatedTriangle& t : setting.heat_in) {
     for (const Vec3& v : {t.a, t.b, t.c}) key.insert(key.end(), v.data(), v.data() + 3);
-    key.push_back(t.flux), key.push_back(t.film), key.push_back(t.part_temperature);
+    key.push_back(t.flux);
+    if (with_film) key.push_back(t.film), key.push_back(t.part_temperature);
   }
   return key;
 }
 
-// Every number the tables depend on, in order: equal keys, equal tables.
+// Every number the tables depend on, in order: equal keys, equal tables. Not the part's film:
+// the tables hold the heat input's flux and the images (mtcs thermal's cycle reuses them).
 std::vector<double> tables_key(const Setting& setting, const LineSinkOptions& options) {
-  return setting_key(setting, {double(options.images), double(options.far_images), options.heat_grid});
+  return setting_key(setting, {double(options.images), double(options.far_images), options.heat_grid}, false);
 }
 
 std::mutex tables_mutex;
