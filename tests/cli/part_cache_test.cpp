@@ -1,5 +1,5 @@
-// mtcs keeps a part's panel matrix between commands (mtcs/io/disk_cache.h): a second run reads
-// it and scores the layout as the first did, bit for bit; the kept matrix is what that run uses
+// mtcs keeps a part's panel matrix (and its potentials at the panels) between commands
+// (mtcs/io/disk_cache.h): a second run reads them and scores the layout as the first did, bit for bit; the kept matrix is what that run uses
 // (a valid file holding another matrix changes the score); a damaged file is rebuilt as it was;
 // --no-cache reads and keeps nothing.
 
@@ -48,10 +48,15 @@ void write_bytes(const fs::path& p, const std::string& bytes) { std::ofstream(p,
 TEST_CASE("mtcs evaluate keeps the part's panel matrix between runs", "[cli][cache]") {
   const fs::path cache = scratch("part_cache", "cache");
   const nlohmann::json first = evaluate(cache);
-  // The panel matrix alone (the potentials are kept in memory only).
-  const std::vector<fs::path> kept = files_in(cache);
+  // The panel matrix, and the panels' potentials at their own points (the film's part of the
+  // matrix; the potentials at the samples are kept in memory only).
+  std::vector<fs::path> kept, potentials;
+  for (const fs::path& f : files_in(cache))
+    (f.filename().string().rfind("panel-matrix-", 0) == 0 ? kept : potentials).push_back(f);
   REQUIRE(kept.size() == 1);
-  CHECK(kept[0].filename().string().rfind("panel-matrix-", 0) == 0);
+  REQUIRE(potentials.size() == 1);
+  CHECK(potentials[0].filename().string().rfind("void-potentials-", 0) == 0);
+  CHECK(fs::file_size(potentials[0]) == 48 + 8 * 378 * 378);
   const std::string original = bytes_of(kept[0]);
   // The L-bracket's 378 panels: 378^2 doubles after a 48-byte header.
   CHECK(original.size() == 48 + 8 * 378 * 378);
@@ -79,6 +84,12 @@ TEST_CASE("mtcs evaluate keeps the part's panel matrix between runs", "[cli][cac
   write_bytes(kept[0], changed);
   CHECK(evaluate(cache) == first);
   CHECK(bytes_of(kept[0]) == original);
+  const std::string potentials_bytes = bytes_of(potentials[0]);  // likewise the potentials
+  changed = potentials_bytes;
+  changed[48 + 8 * 1000] ^= 4;
+  write_bytes(potentials[0], changed);
+  CHECK(evaluate(cache) == first);
+  CHECK(bytes_of(potentials[0]) == potentials_bytes);
 
   // --no-cache: the same score, nothing kept.
   const fs::path none = scratch("part_cache", "none");

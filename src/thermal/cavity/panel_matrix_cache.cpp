@@ -34,19 +34,19 @@ io::CacheKey panel_matrix_key(std::string_view kind) {
   return key;
 }
 
-Eigen::MatrixXd kept_panel_matrix(const io::CacheKey& key, Eigen::Index rows, Eigen::Index cols, Keep keep,
+std::shared_ptr<const Eigen::MatrixXd> kept_panel_matrix(const io::CacheKey& key, Eigen::Index rows, Eigen::Index cols, Keep keep,
                                   const std::function<void(Eigen::MatrixXd&)>& compute) {
   const std::size_t bytes = sizeof(double) * std::size_t(rows) * std::size_t(cols);
   if (bytes > kKeptBytes / 2) {  // a copy kept would double a big part's memory
-    Eigen::MatrixXd m(rows, cols);
-    compute(m);
+    auto m = std::make_shared<Eigen::MatrixXd>(rows, cols);
+    compute(*m);
     return m;
   }
   const Digest digest = key.digest();
   {
     const std::lock_guard lock(kept_mutex);
     for (const auto& [d, m] : kept)
-      if (d == digest && m->rows() == rows && m->cols() == cols) return *m;
+      if (d == digest && m->rows() == rows && m->cols() == cols) return m;
   }
   const auto t0 = std::chrono::steady_clock::now();
   auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
@@ -68,7 +68,7 @@ Eigen::MatrixXd kept_panel_matrix(const io::CacheKey& key, Eigen::Index rows, Ei
       kept.pop_back();
     }
   }
-  return *m;
+  return m;
 }
 
 }  // namespace mtcs::thermal

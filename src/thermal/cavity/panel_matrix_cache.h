@@ -13,6 +13,7 @@
 #include <Eigen/Dense>
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <string_view>
 
 #include "mtcs/io/disk_cache.h"
@@ -32,8 +33,9 @@ constexpr std::size_t kKeptBytes = std::size_t(256) << 20;
 enum class Keep { memory, disk };
 
 // The rows x cols matrix of key: kept, or computed by compute(M) into M (sized rows x cols) and
-// kept. One of more than kKeptBytes / 2 is computed each time and never kept.
-Eigen::MatrixXd kept_panel_matrix(const io::CacheKey& key, Eigen::Index rows, Eigen::Index cols, Keep keep,
+// kept (shared, not copied: a model holds the samples' potentials as kept). One of more than
+// kKeptBytes / 2 is computed each time and never kept.
+std::shared_ptr<const Eigen::MatrixXd> kept_panel_matrix(const io::CacheKey& key, Eigen::Index rows, Eigen::Index cols, Keep keep,
                                   const std::function<void(Eigen::MatrixXd&)>& compute);
 
 }  // namespace mtcs::thermal

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <numbers>
 #include <stdexcept>
@@ -167,6 +168,9 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
   }
   if (cells.empty()) throw std::invalid_argument("cavity void: the wall has no area");
   std::vector<double> film, part;
+  std::size_t subs = 0;
+  for (const auto& [key, cut] : cells) subs += cut.subs.size();
+  sub_.reserve(subs);
   for (auto& [key, cut] : cells) {
     double area = 0, heat = 0, conductance = 0, drive = 0;
     Vec3 weighted = Vec3::Zero();
@@ -202,7 +206,7 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
     far_.xx.push_back(float(second(0, 0))), far_.yy.push_back(float(second(1, 1))), far_.zz.push_back(float(second(2, 2)));
     far_.xy.push_back(float(second(0, 1))), far_.xz.push_back(float(second(0, 2))), far_.yz.push_back(float(second(1, 2)));
     far_.trace.push_back(float(second.trace()));
-    sub_.insert(sub_.end(), cut.subs.begin(), cut.subs.end());
+    sub_.insert(sub_.end(), std::make_move_iterator(cut.subs.begin()), std::make_move_iterator(cut.subs.end()));
     begin_.push_back(sub_.size());
   }
 
@@ -216,7 +220,7 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
   } else {
     io::CacheKey key = panel_matrix_key("panel-matrix");
     add_panels(key);
-    A = kept_panel_matrix(key, N, N, Keep::disk, [&](Eigen::MatrixXd& a) { assemble(a); });
+    A = *kept_panel_matrix(key, N, N, Keep::disk, [&](Eigen::MatrixXd& a) { assemble(a); });
   }
   // The heat input's sheets (q / k per panel) seen from the void side: (1/2 + K') q / k = (I - A) q / k.
   Eigen::VectorXd q(N);
@@ -233,7 +237,7 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
       moments_.col(Eigen::Index(j)) << conductivity * area_[j], conductivity * area_[j] * (centroid_[j] - far.center);
       F.row(Eigen::Index(j)) = far.kernel(point_[j]).transpose();
     }
-    A += film_over_k_.asDiagonal() * (kept_potentials(point_) + F * moments_);
+    A += film_over_k_.asDiagonal() * (*kept_potentials(point_, Keep::disk) + F * moments_);
   }
   lu_.compute(A);
   heat_tau_ = lu_.solve(heat_d_);
@@ -441,11 +445,11 @@ Eigen::MatrixXd VoidSurface::potentials(std::span<const Vec3> targets) const {
   return S;
 }
 
-Eigen::MatrixXd VoidSurface::kept_potentials(std::span<const Vec3> targets) const {
+std::shared_ptr<const Eigen::MatrixXd> VoidSurface::kept_potentials(std::span<const Vec3> targets, Keep keep) const {
   io::CacheKey key = panel_matrix_key("void-potentials");
   add_panels(key);
   for (const Vec3& p : targets) key.add_values(std::span<const double>(p.data(), 3));
-  return kept_panel_matrix(key, Eigen::Index(targets.size()), Eigen::Index(panels()), Keep::memory,
+  return kept_panel_matrix(key, Eigen::Index(targets.size()), Eigen::Index(panels()), keep,
                            [&](Eigen::MatrixXd& s) { s = potentials(targets); });
 }
 

@@ -27,12 +27,9 @@
 #include <span>
 #include <vector>
 
+#include "thermal/cavity/panel_matrix_cache.h"
 #include "thermal/kernels/line_sink_fields.h"
 #include "mtcs/thermal/model.h"
-
-namespace mtcs::io {
-class CacheKey;
-}
 
 namespace mtcs::thermal {
 
@@ -100,9 +97,10 @@ class VoidSurface {
   // potentials(targets) tau, potentials (targets x panels) = (1/4 pi) S.
   Eigen::MatrixXf layer(const Eigen::MatrixXf& d) const;
   Eigen::MatrixXd potentials(std::span<const Vec3> targets) const;
-  // potentials(targets), kept in memory by the panels and the targets (panel_matrix_cache.h):
-  // for the fixed targets a model builds again at each film (its samples, the faces' points).
-  Eigen::MatrixXd kept_potentials(std::span<const Vec3> targets) const;
+  // potentials(targets), kept by the panels and the targets (panel_matrix_cache.h): for the
+  // fixed targets a model builds again at each film (its samples, the faces' points), in memory;
+  // at the panels' own points (nearly all pairs near, as costly as the panel matrix) on disk too.
+  std::shared_ptr<const Eigen::MatrixXd> kept_potentials(std::span<const Vec3> targets, Keep keep = Keep::memory) const;
 
   // Whether the cylinder of `radius` about a -> b reaches the wall (a bore through the part, or
   // touching it: an illegal layout, whose columns keep no reflection, as without the void).

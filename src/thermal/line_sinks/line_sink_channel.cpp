@@ -235,7 +235,7 @@ std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(
       add_skinny_product(void_potentials_ft, b->void_tau, Eigen::Map<Eigen::MatrixXf>(b->sample_cols_f.data(), Eigen::Index(n_samples), cols));
     else
       Eigen::Map<MatrixXd>(b->sample_cols_d.data(), Eigen::Index(n_samples), cols).noalias() +=
-          void_potentials * b->void_tau.cast<double>();
+          *void_potentials * b->void_tau.cast<double>();
   } else if (void_surface && !void_surface->reaches(ch.axis.p0, ch.axis.p1, ch.radius)) {
     const Eigen::MatrixXf d = void_derivatives(a);
     b->void_tau = void_surface->layer(d);
@@ -244,7 +244,7 @@ std::shared_ptr<LineSinkCache::ChannelBlock> LineSinkModel::Impl::build_channel(
       add_skinny_product(void_potentials_ft, b->void_tau, Eigen::Map<Eigen::MatrixXf>(b->sample_cols_f.data(), Eigen::Index(n_samples), cols));
     else
       Eigen::Map<MatrixXd>(b->sample_cols_d.data(), Eigen::Index(n_samples), cols).noalias() +=
-          void_potentials * void_surface->solve(d.cast<double>());
+          *void_potentials * void_surface->solve(d.cast<double>());
   }
   // Own rows: the own columns, the heat input and the face losses.
   b->self = channel_at_rows(*b, a);

@@ -133,7 +133,7 @@ struct LineSinkModel::Impl {
   // give by central differences. The samples keep potentials, not their response S A^-1: that
   // costs a solve per sample (34 600 of them for a field on the gear), a layer one per column.
   std::shared_ptr<const VoidSurface> void_surface;  // shared by the models of one setting
-  MatrixXd void_potentials;       // samples x panels
+  std::shared_ptr<const MatrixXd> void_potentials;  // samples x panels (kept: VoidSurface::kept_potentials)
   Eigen::MatrixXf void_potentials_ft;  // its transpose in float, for the float columns (skinny_product.h)
   MatrixXd void_faces;            // convective faces x panels
   MatrixXd face_void;             // faces x faces: the face losses' correction at the faces

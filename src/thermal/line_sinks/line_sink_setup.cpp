@@ -227,7 +227,7 @@ void LineSinkModel::Impl::build_robin_fields(const std::vector<Vec3>& face_point
   const std::size_t n = v.panels(), nf = m.faces.size();
   const auto N = Eigen::Index(n);
   const VectorXd& H = v.film_over_k();
-  m.void_face_potentials = m.face_average * v.kept_potentials(face_points);
+  m.void_face_potentials = m.face_average * *v.kept_potentials(face_points);
   m.far_panels.resize(N, 4);
   MatrixXd far_fixed(N, 4);  // the far lattice of the sources summed to `images` levels
   VectorXd heat(N);
@@ -248,12 +248,12 @@ void LineSinkModel::Impl::build_robin_fields(const std::vector<Vec3>& face_point
   // The free constant: a unit field everywhere, so the film takes -H from it.
   m.t0_tau = v.solve(-H);
   m.t0_moments = v.moments() * m.t0_tau;
-  m.t0_samples = m.void_potentials * m.t0_tau + m.far_samples * m.t0_moments;
+  m.t0_samples = *m.void_potentials * m.t0_tau + m.far_samples * m.t0_moments;
   m.t0_face_means = m.void_face_potentials * m.t0_tau + m.far_face_means * m.t0_moments;
   // The face losses.
   m.face_tau = v.solve(d - H.asDiagonal() * (face + far_fixed * m.face_moments));
   m.face_layer_moments = v.moments() * m.face_tau;
-  m.face_samples += m.void_potentials * m.face_tau + m.far_samples * m.face_layer_moments;
+  m.face_samples += *m.void_potentials * m.face_tau + m.far_samples * m.face_layer_moments;
   m.face_void = m.void_face_potentials * m.face_tau + m.far_face_means * m.face_layer_moments;
 }
 
@@ -524,10 +524,10 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
       }
     m.void_pairs.make_slots(), m.void_pairs.make_chunk_boxes();
     m.void_potentials = v.kept_potentials(samples.points);
-    m.void_potentials_ft = m.void_potentials.transpose().cast<float>();
+    m.void_potentials_ft = m.void_potentials->transpose().cast<float>();
     std::vector<Vec3> face_points;
     for (const ConvectiveFace& f : m.faces) face_points.insert(face_points.end(), f.cool.begin(), f.cool.end());
-    m.void_faces = v.times_inverse(m.face_average * v.kept_potentials(face_points));
+    m.void_faces = v.times_inverse(m.face_average * *v.kept_potentials(face_points));
     MatrixXd d(Eigen::Index(v.panels()), Eigen::Index(nf));
     for (std::size_t i = 0; i < v.panels(); ++i)
       for (std::size_t f = 0; f < nf; ++f)
@@ -538,7 +538,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     if (m.robin) {
       m.build_robin_fields(face_points, d);
     } else {
-      m.face_samples += m.void_potentials * v.solve(d);
+      m.face_samples += *m.void_potentials * v.solve(d);
       m.face_void = m.void_faces * d;
       m.heat_tau = v.heat_layer();
     }
@@ -558,11 +558,11 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
   }
   if (m.void_surface && m.robin) {  // the layers' fields (robin_fixed_fields)
     m.face_face_means += m.face_void;
-    m.heat_samples += m.void_potentials * m.heat_tau + m.far_samples * m.heat_layer_moments;
+    m.heat_samples += *m.void_potentials * m.heat_tau + m.far_samples * m.heat_layer_moments;
     m.heat_face_means += m.void_face_potentials * m.heat_tau + m.far_face_means * m.heat_layer_moments;
   } else if (m.void_surface) {  // the void's correction of the face losses and of the heat input
     m.face_face_means += m.face_void;
-    m.heat_samples += m.void_potentials * m.void_surface->heat_layer();
+    m.heat_samples += *m.void_potentials * m.void_surface->heat_layer();
     m.heat_face_means += m.void_faces * m.void_surface->heat_derivatives();
   }
 }
