@@ -3,6 +3,9 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "run_mtcs.h"
@@ -211,4 +214,43 @@ TEST_CASE("mtcs thermal --problem: the conduction problem for another solver, as
   CHECK(heat == Approx(nlohmann::json::parse(read_text(summary))["heat_in"].get<double>()).epsilon(1e-9));
   CHECK(j["samples"].size() == 720);
   CHECK(nlohmann::json::parse(read_text(summary))["cavity_condition"]["model"] == "flux");
+}
+
+TEST_CASE("mtcs thermal --out on a mesh part: the field in chunks, as at the same points asked for", "[cli][thermal]") {
+  // The cup's field has 13 822 vertices, past the 4 096 a model takes at once (its memory): the
+  // chunks' temperatures are those of the same points asked for with --samples (one model), to
+  // the float coordinates' rounding, and the summary does not change with --out.
+  const std::string cup = std::string(MTCS_SOURCE_DIR) + "/molds/cup.yaml --layout " + MTCS_SOURCE_DIR +
+                          "/molds/cup.layout.yaml";
+  const fs::path vtp = scratch("thermal_chunks", "field.vtp"), plain = scratch("thermal_chunks", "plain.json"),
+                 with_field = scratch("thermal_chunks", "field.json");
+  REQUIRE(run_mtcs("thermal " + cup + " --json > " + plain.string()) == 0);
+  REQUIRE(run_mtcs("thermal " + cup + " --json --out " + vtp.string() + " > " + with_field.string()) == 0);
+  auto a = nlohmann::json::parse(read_text(plain)), b = nlohmann::json::parse(read_text(with_field));
+  a.erase("seconds"), b.erase("seconds");
+  CHECK(a == b);
+  // The vertices and their temperatures (ascii, 17 digits: the doubles as computed).
+  const std::string text = read_text(vtp);
+  const auto array_after = [&](const std::string& tag) {
+    const std::size_t at = text.find('>', text.find(tag)) + 1;
+    std::istringstream in(text.substr(at, text.find('<', at) - at));
+    std::vector<double> v;
+    for (double x; in >> x;) v.push_back(x);
+    return v;
+  };
+  const std::vector<double> t = array_after("Name=\"temperature [degC]\""), xyz = array_after("NumberOfComponents=\"3\"");
+  REQUIRE(t.size() > 3 * 4096);
+  REQUIRE(xyz.size() == 3 * t.size());
+  const fs::path points = scratch("thermal_chunks", "points.csv"), at = scratch("thermal_chunks", "T.csv");
+  {
+    std::ofstream out(points);
+    out << std::setprecision(17) << "x,y,z\n";
+    for (std::size_t i = 0; i < t.size(); ++i) out << xyz[3 * i] << ',' << xyz[3 * i + 1] << ',' << xyz[3 * i + 2] << '\n';
+  }
+  REQUIRE(run_mtcs("thermal " + cup + " --samples " + points.string() + " --out " + at.string() + " >/dev/null") == 0);
+  const auto asked = read_xyzt(at);
+  REQUIRE(asked.size() == t.size());
+  double worst = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) worst = std::max(worst, std::abs(asked[i][3] - t[i]));
+  CHECK(worst < 1e-3);  // K; an order of vertices lost between chunks would miss by kelvins
 }

@@ -60,6 +60,9 @@ struct LineSinkOptions {
                         // block exact; with single_precision only, the double path stays exact)
   double void_panel = 0;  // mm: > 0 with a cavity (mesh or box): the part's void as a surface of
                           // panels this wide (src/thermal/cavity/void_surface.h); 0: the void is steel
+  bool keep_potentials = true;  // the void's potentials at the samples kept in memory for the next
+                                // model at the same samples (a cycle's next film); false for
+                                // points seen once (a field's vertices, chunk by chunk)
 };
 
 // The per-channel and per-pair influence blocks of recent evaluations, keyed by the exact
@@ -102,8 +105,9 @@ class LineSinkModel {
   LineSinkModel(const Setting& setting, const Samples& samples, LineSinkOptions options = {});
   // The same model (setting and options) at other samples. What does not depend on them is
   // shared, as between any models of one setting in a process (the part's void: most of a mesh
-  // mold's build); the temperatures are a fresh build's, bit for bit.
-  LineSinkModel(const LineSinkModel& like, const Samples& samples);
+  // mold's build); the temperatures are a fresh build's, bit for bit. keep_potentials: as
+  // LineSinkOptions::keep_potentials.
+  LineSinkModel(const LineSinkModel& like, const Samples& samples, bool keep_potentials = true);
   ~LineSinkModel();
   LineSinkModel(LineSinkModel&&) noexcept;
 

@@ -257,8 +257,12 @@ void LineSinkModel::Impl::build_robin_fields(const std::vector<Vec3>& face_point
   m.face_void = m.void_face_potentials * m.face_tau + m.far_face_means * m.face_layer_moments;
 }
 
-LineSinkModel::LineSinkModel(const LineSinkModel& like, const Samples& samples)
-    : LineSinkModel(like.impl_->setting, samples, like.impl_->options) {}
+LineSinkModel::LineSinkModel(const LineSinkModel& like, const Samples& samples, bool keep_potentials)
+    : LineSinkModel(like.impl_->setting, samples, [&] {
+        LineSinkOptions o = like.impl_->options;
+        o.keep_potentials = keep_potentials;
+        return o;
+      }()) {}
 
 LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, LineSinkOptions options)
     : impl_(std::make_unique<Impl>()) {
@@ -523,7 +527,8 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
         m.void_pairs.close_target();
       }
     m.void_pairs.make_slots(), m.void_pairs.make_chunk_boxes();
-    m.void_potentials = v.kept_potentials(samples.points);
+    m.void_potentials = options.keep_potentials ? v.kept_potentials(samples.points)
+                                                : std::make_shared<const MatrixXd>(v.potentials(samples.points));
     m.void_potentials_ft = m.void_potentials->transpose().cast<float>();
     std::vector<Vec3> face_points;
     for (const ConvectiveFace& f : m.faces) face_points.insert(face_points.end(), f.cool.begin(), f.cool.end());
