@@ -254,3 +254,23 @@ TEST_CASE("mtcs thermal --out on a mesh part: the field in chunks, as at the sam
   for (std::size_t i = 0; i < t.size(); ++i) worst = std::max(worst, std::abs(asked[i][3] - t[i]));
   CHECK(worst < 1e-3);  // K; an order of vertices lost between chunks would miss by kelvins
 }
+
+TEST_CASE("mtcs thermal: a part too big for the memory allowed is refused with the size it needs", "[cli][thermal]") {
+  // The L-bracket's model: 378 void panels and ~2 300 samples, ~10 MB at the samples; 5 MB allowed.
+  const std::string bracket = std::string(MTCS_SOURCE_DIR) + "/molds/l_bracket.yaml --layout " + MTCS_SOURCE_DIR +
+                              "/molds/l_bracket.layout.yaml";
+  const fs::path err = scratch("thermal_memory", "run.err");
+  const auto run_with_limit = [&](const std::string& megabytes) {
+    const std::string command = "MTCS_MEMORY_LIMIT=" + megabytes + " " + MTCS_BINARY + " thermal " + bracket +
+                                " >/dev/null 2>" + err.string();
+    return WEXITSTATUS(std::system(command.c_str()));
+  };
+  CHECK(run_with_limit("5") == 1);
+  const std::string refused = read_text(err);
+  INFO(refused);
+  CHECK(refused.find("needs about ") != std::string::npos);
+  CHECK(refused.find(" MB more for its ") != std::string::npos);
+  CHECK(refused.find("378 void panels") != std::string::npos);
+  CHECK(refused.find("thermal.sample_spacing") != std::string::npos);
+  CHECK(run_with_limit("1000") == 0);
+}

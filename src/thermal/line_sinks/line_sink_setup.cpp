@@ -14,6 +14,7 @@
 
 #include "thermal/kernels/heat_source_tree.h"
 #include "thermal/line_sinks/line_sink_model.h"
+#include "thermal/line_sinks/model_memory.h"
 
 namespace mtcs::thermal {
 
@@ -527,6 +528,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
         m.void_pairs.close_target();
       }
     m.void_pairs.make_slots(), m.void_pairs.make_chunk_boxes();
+    check_void_model_memory(v.panels(), m.n_samples);
     m.void_potentials = options.keep_potentials ? v.kept_potentials(samples.points)
                                                 : std::make_shared<const MatrixXd>(v.potentials(samples.points));
     m.void_potentials_ft = m.void_potentials->transpose().cast<float>();
