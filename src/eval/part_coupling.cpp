@@ -79,7 +79,12 @@ double consistent_cooling(const std::function<double(double)>& need, double star
   // In logarithms (u = ln c, misfit ln need - u): the steep need of a mold near its eject
   // temperature is closer to a straight line there (the L-bracket's case: 4 evaluations to 1 %
   // instead of 7).
-  int count = 0;
+  // A known point counts as an evaluation; within tolerance, it is the answer.
+  int count = known ? 1 : 0;
+  if (known && std::abs(known->second - known->first) <= tolerance * known->first) {
+    if (evaluations) *evaluations = count;
+    return known->first;
+  }
   double best = start, best_misfit = std::numeric_limits<double>::infinity();
   bool done = false;
   const auto misfit = [&](double u, double c) {  // c = e^u, exactly `start` at first

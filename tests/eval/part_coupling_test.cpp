@@ -186,23 +186,28 @@ TEST_CASE("part coupling: the consistent cooling time where plain substitution o
 }
 
 TEST_CASE("part coupling: a known point and a start predicted from it bracket the cooling time", "[eval][coupling]") {
-  // mtcs thermal's cycle: the nominal solve (75 s, need 235 s) predicts a start near the root;
-  // the two bracket it, and the search takes fewer solves than from the start alone.
+  // mtcs thermal's cycle: the nominal solve (75 s, need 235 s: need > c) predicts a start past
+  // the root (need < c); the two bracket it, and the search takes fewer new evaluations than from
+  // the start alone (the known point counts as one).
   const auto need = [](double c) { return 60 + 175 * std::exp(-(c - 75) / 12); };
   const double root = eval::consistent_cooling(need, 75, 1e-9, 60);
-  for (const double start : {0.97 * root, 1.05 * root}) {
-    int alone = 0, bracketed = 0;
-    const double c0 = eval::consistent_cooling(need, start, 1e-4, 20, &alone);
-    const double c1 = eval::consistent_cooling(need, start, 1e-4, 20, &bracketed, std::pair(75.0, need(75)));
-    INFO("start " << start << " s: " << alone << " evaluations alone, " << bracketed << " with the known point");
-    CHECK(need(c0) == Approx(c0).epsilon(1e-4));
-    CHECK(need(c1) == Approx(c1).epsilon(1e-4));
-    CHECK(bracketed <= alone);
-  }
-  // A known point on the start's side brackets nothing: the search is the one from the start.
-  int alone = 0, same_side = 0;
   const double start = 1.05 * root;
-  CHECK(eval::consistent_cooling(need, start, 1e-4, 20, &same_side, std::pair(1.2 * root, need(1.2 * root))) ==
-        eval::consistent_cooling(need, start, 1e-4, 20, &alone));
-  CHECK(same_side == alone);
+  int alone = 0, bracketed = 0;
+  const double c0 = eval::consistent_cooling(need, start, 1e-4, 20, &alone);
+  const double c1 = eval::consistent_cooling(need, start, 1e-4, 20, &bracketed, std::pair(75.0, need(75)));
+  INFO(alone << " evaluations alone, " << bracketed - 1 << " new ones with the known point");
+  CHECK(need(c0) == Approx(c0).epsilon(1e-4));
+  CHECK(need(c1) == Approx(c1).epsilon(1e-4));
+  CHECK(bracketed - 1 < alone);
+  // A known point on the start's side (0.97 root: need > c, as at 75 s) brackets nothing: the
+  // search is the one from the start, one evaluation more for the known point.
+  int same_side = 0;
+  CHECK(eval::consistent_cooling(need, 0.97 * root, 1e-4, 20, &same_side, std::pair(75.0, need(75))) ==
+        eval::consistent_cooling(need, 0.97 * root, 1e-4, 20, &alone));
+  CHECK(same_side == alone + 1);
+  // A known point within the tolerance is the answer: nothing more is evaluated.
+  int none = 0;
+  const auto never = [](double) -> double { FAIL("need evaluated"); return 0; };
+  CHECK(eval::consistent_cooling(never, 2 * root, 1e-4, 20, &none, std::pair(root, need(root))) == root);
+  CHECK(none == 1);
 }

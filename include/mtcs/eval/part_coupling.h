@@ -73,8 +73,9 @@ PartCoupling cavity_coupling(const mold::MoldSpec& spec);
 // evaluations (need > 0). Stops
 // when |need(c) - c| <= tolerance c or after max_evaluations of need (then the c with the least
 // misfit). `evaluations` (optional) counts them. `known` (optional): a cooling time and its
-// need, already evaluated (`start` predicted from it): when the two bracket the root, the
-// search starts from that bracket (one evaluation fewer than a substitution step).
+// need, already evaluated (`start` predicted from it), counted among the evaluations: within
+// tolerance it is the answer; when it and `start` bracket the root, the search starts from that
+// bracket (one evaluation fewer than a substitution step).
 double consistent_cooling(const std::function<double(double)>& need, double start, double tolerance,
                           int max_evaluations, int* evaluations = nullptr,
                           std::optional<std::pair<double, double>> known = {});
