@@ -63,20 +63,29 @@ TEST_CASE("mtcs evaluate keeps the part's panel matrix between runs", "[cli][cac
 
   CHECK(evaluate(cache) == first);  // read back: the same score, to the last bit
 
-  // A valid file with another matrix (every coupling 10 % stronger, its checksum made good):
-  // the run uses what is kept.
-  std::string changed = original;
-  const std::size_t n = (changed.size() - 48) / 8;
-  for (std::size_t k = 0; k < n; ++k) {
-    double v;
-    std::memcpy(&v, changed.data() + 48 + 8 * k, 8);
-    v = v == 0.5 ? v : 1.1 * v;
-    std::memcpy(changed.data() + 48 + 8 * k, &v, 8);
-  }
-  const std::uint64_t checksum = XXH3_64bits(changed.data() + 48, changed.size() - 48);
-  std::memcpy(changed.data() + 40, &checksum, 8);
-  write_bytes(kept[0], changed);
+  // A valid file with another matrix (every entry 10 % larger but the diagonal's 1/2, its
+  // checksum made good): the run uses what is kept. Likewise the potentials.
+  const auto scaled = [](const std::string& bytes) {
+    std::string changed = bytes;
+    const std::size_t n = (changed.size() - 48) / 8;
+    for (std::size_t k = 0; k < n; ++k) {
+      double v;
+      std::memcpy(&v, changed.data() + 48 + 8 * k, 8);
+      v = v == 0.5 ? v : 1.1 * v;
+      std::memcpy(changed.data() + 48 + 8 * k, &v, 8);
+    }
+    const std::uint64_t checksum = XXH3_64bits(changed.data() + 48, changed.size() - 48);
+    std::memcpy(changed.data() + 40, &checksum, 8);
+    return changed;
+  };
+  write_bytes(kept[0], scaled(original));
   CHECK(evaluate(cache) != first);
+  const std::string potentials_bytes = bytes_of(potentials[0]);
+  write_bytes(kept[0], original);
+  write_bytes(potentials[0], scaled(potentials_bytes));
+  CHECK(evaluate(cache) != first);
+  write_bytes(potentials[0], potentials_bytes);
+  std::string changed;
 
   // A damaged file (one flipped bit, the checksum as it was): built again, the same as the first.
   changed = original;
@@ -84,8 +93,7 @@ TEST_CASE("mtcs evaluate keeps the part's panel matrix between runs", "[cli][cac
   write_bytes(kept[0], changed);
   CHECK(evaluate(cache) == first);
   CHECK(bytes_of(kept[0]) == original);
-  const std::string potentials_bytes = bytes_of(potentials[0]);  // likewise the potentials
-  changed = potentials_bytes;
+  changed = potentials_bytes;  // likewise the potentials
   changed[48 + 8 * 1000] ^= 4;
   write_bytes(potentials[0], changed);
   CHECK(evaluate(cache) == first);

@@ -45,8 +45,13 @@ std::shared_ptr<const Eigen::MatrixXd> kept_panel_matrix(const io::CacheKey& key
   const Digest digest = key.digest();
   {
     const std::lock_guard lock(kept_mutex);
-    for (const auto& [d, m] : kept)
-      if (d == digest && m->rows() == rows && m->cols() == cols) return m;
+    for (auto it = kept.begin(); it != kept.end(); ++it)
+      if (it->first == digest && it->second->rows() == rows && it->second->cols() == cols) {
+        auto hit = *it;  // to the front: the least recently used go first
+        kept.erase(it);
+        kept.push_front(hit);
+        return hit.second;
+      }
   }
   const auto t0 = std::chrono::steady_clock::now();
   auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };

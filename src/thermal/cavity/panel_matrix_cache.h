@@ -4,10 +4,11 @@
 // a mesh part's model (the gear's 911 panels: 14 of its 17 s on a loaded machine), and the same
 // part in the same block gives the same matrix. So do the panels' potentials at the model's
 // samples, at the faces and at their own points (most of what a film's model builds again:
-// `mtcs thermal`'s cycle solves the part at 2-3 films). So they are kept: in memory, the newest
-// few (kKeptBytes), and the panel matrix in the disk cache (mtcs/io/disk_cache.h) too, under a
-// key of every input and of the digest of the sources that compute them, so a kept matrix is bit
-// for bit what a fresh build gives.
+// `mtcs thermal`'s cycle solves the part at 2-3 films). So they are kept: in memory, the most
+// recently used (kKeptBytes), and the panel matrix and the potentials at the panels' own points
+// (as costly) in the disk cache (mtcs/io/disk_cache.h) too, under a key of every input and of
+// the digest of the sources that compute them, so a kept matrix is bit for bit what a fresh
+// build gives.
 // Private to src/thermal.
 
 #include <Eigen/Dense>
@@ -25,7 +26,7 @@ namespace mtcs::thermal {
 // paths and between releases); the caller adds the inputs.
 io::CacheKey panel_matrix_key(std::string_view kind);
 
-// The matrices kept in memory take at most this many bytes (the newest always kept).
+// The matrices kept in memory take at most this many bytes (the last used always kept).
 constexpr std::size_t kKeptBytes = std::size_t(256) << 20;
 
 // Where a matrix is kept: in memory for this process, or on disk as well (the panel matrix:

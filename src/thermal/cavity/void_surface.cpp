@@ -246,6 +246,7 @@ VoidSurface::VoidSurface(std::span<const HeatedTriangle> wall, std::span<const I
 
 void VoidSurface::add_panels(io::CacheKey& key) const {
   key.add_value(panel_).add_values(std::span<const std::size_t>(begin_));
+  key.add_values(std::span<const double>(far_.origin.data(), 3));  // potential_row's float pass measures from it
   for (const Sub& s : sub_)
     for (int k = 0; k < 3; ++k) key.add_values(std::span<const double>(s.source.corner(k).data(), 3));
   for (const Image& g : images_)
@@ -431,8 +432,13 @@ bool VoidSurface::reaches(const Vec3& a, const Vec3& b, double radius) const {
 }
 
 Eigen::MatrixXd VoidSurface::potentials(std::span<const Vec3> targets) const {
+  Eigen::MatrixXd S(Eigen::Index(targets.size()), Eigen::Index(panels()));
+  fill_potentials(targets, S);
+  return S;
+}
+
+void VoidSurface::fill_potentials(std::span<const Vec3> targets, Eigen::MatrixXd& S) const {
   const std::size_t n = panels(), t = targets.size();
-  Eigen::MatrixXd S(static_cast<Eigen::Index>(t), static_cast<Eigen::Index>(n));
   auto row = [&](std::size_t i) {
     thread_local std::vector<double> values;
     values.resize(n);
@@ -442,7 +448,6 @@ Eigen::MatrixXd VoidSurface::potentials(std::span<const Vec3> targets) const {
   // Many targets (the samples, once per model) in parallel, each row its own; a bore's walls inline.
   if (t > 64) tbb::parallel_for(std::size_t(0), t, row);
   else for (std::size_t i = 0; i < t; ++i) row(i);
-  return S;
 }
 
 std::shared_ptr<const Eigen::MatrixXd> VoidSurface::kept_potentials(std::span<const Vec3> targets, Keep keep) const {
@@ -450,7 +455,7 @@ std::shared_ptr<const Eigen::MatrixXd> VoidSurface::kept_potentials(std::span<co
   add_panels(key);
   for (const Vec3& p : targets) key.add_values(std::span<const double>(p.data(), 3));
   return kept_panel_matrix(key, Eigen::Index(targets.size()), Eigen::Index(panels()), keep,
-                           [&](Eigen::MatrixXd& s) { s = potentials(targets); });
+                           [&](Eigen::MatrixXd& s) { fill_potentials(targets, s); });
 }
 
 Eigen::MatrixXf VoidSurface::layer(const Eigen::MatrixXf& d) const {

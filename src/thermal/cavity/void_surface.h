@@ -114,9 +114,11 @@ class VoidSurface {
   };
   // A = 1/2 - K' into A (panels x panels), rows in parallel.
   void assemble(Eigen::MatrixXd& A) const;
-  // Every input of the panels' matrices: their width and grouping, the sub-triangles' corners
-  // and the images.
+  // Every input of the panels' matrices: their width and grouping, the sub-triangles' corners,
+  // the far pass's origin and the images.
   void add_panels(io::CacheKey& key) const;
+  // potentials(targets) into S, sized targets x panels.
+  void fill_potentials(std::span<const Vec3> targets, Eigen::MatrixXd& S) const;
   // The gradient's component along `normal` of panel j's unit layer at p, images summed, free
   // of 1/(4 pi) (the potential: potential_row).
   double panel_gradient(std::size_t j, const Vec3& p, const Vec3& normal) const;
