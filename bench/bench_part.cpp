@@ -77,6 +77,15 @@ std::string own_mtcs() {
   return ((ec ? fs::path(".") : self.parent_path()) / "mtcs").string();
 }
 
+// The benchmark's scratch folder, removed however the benchmark ends.
+struct ScratchFolder {
+  fs::path path = fs::temp_directory_path() / ("mtcs-bench-part-" + std::to_string(::getpid()));
+  ~ScratchFolder() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
 fs::path fresh_folder(const fs::path& under, const std::string& name) {
   const fs::path p = under / name;
   fs::remove_all(p);
@@ -93,7 +102,8 @@ int bench_part(const PartBenchOptions& o) {
     layout = (p.parent_path() / (p.stem().string() + ".layout.yaml")).string();
   }
   if (!fs::exists(layout)) throw std::runtime_error("bench part: no layout " + layout + " (--layout)");
-  const fs::path scratch = fs::temp_directory_path() / ("mtcs-bench-part-" + std::to_string(::getpid()));
+  const ScratchFolder folder;
+  const fs::path& scratch = folder.path;
   std::vector<std::string> programs{own_mtcs()};
   programs.insert(programs.end(), o.peers.begin(), o.peers.end());
   std::cout << "mold,program,measure,value,unit\n";
@@ -128,8 +138,10 @@ int bench_part(const PartBenchOptions& o) {
     row(programs[key.first], key.second + "_peak", *std::max_element(megabytes[key].begin(), megabytes[key].end()), "MB");
   }
 
-  // In this process, the cache warm (the last thermal's folder holds the part's model).
-  io::set_cache_folder(scratch / "cache");
+  // In this process, the cache warm: a folder our own evaluate filled.
+  const fs::path warm = fresh_folder(scratch, "cache");
+  run_process(programs[0], {"evaluate", o.mold, "--layout", layout}, warm);
+  io::set_cache_folder(warm);
   const auto t0 = std::chrono::steady_clock::now();
   const run::Session session(o.mold);
   const mold::Genome start = session.read_layout(layout);
@@ -147,7 +159,6 @@ int bench_part(const PartBenchOptions& o) {
   getrusage(RUSAGE_SELF, &self);
   row(programs[0], "in_process_peak", double(self.ru_maxrss) / 1024, "MB");
   io::set_cache_folder(std::nullopt);
-  fs::remove_all(scratch);
   return 0;
 }
 

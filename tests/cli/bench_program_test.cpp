@@ -96,6 +96,11 @@ TEST_CASE("mtcs bench part: each command cold and warm for mtcs and a peer binar
     CHECK(rows["mtcs " + in_process] == 1);
     CHECK(rows["peer " + in_process] == 0);
   }
-  // A peer that fails is an error, not a row.
-  CHECK(run_mtcs("bench part " + std::string(MTCS_SOURCE_DIR) + "/molds/plate.yaml --peer /bin/false 2>/dev/null") != 0);
+  // A peer that fails is an error, not a row, and the benchmark's scratch folder goes with it.
+  const fs::path tmp = scratch("bench_part", "tmp");
+  fs::remove_all(tmp);
+  fs::create_directories(tmp);
+  CHECK(run_mtcs("bench part " + std::string(MTCS_SOURCE_DIR) + "/molds/plate.yaml --peer /bin/false", "/dev/null",
+                 "TMPDIR=" + tmp.string()) != 0);
+  CHECK(fs::is_empty(tmp));
 }

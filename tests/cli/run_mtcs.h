@@ -20,9 +20,9 @@ namespace fs = std::filesystem;
 // DIR/name in this process's scratch folder of `topic`, e.g. scratch("replay", "run").
 inline fs::path scratch(const std::string& topic, const std::string& name) { return scratch_dir(topic) / name; }
 
-// mtcs ARGS with stderr to `err`; the exit code.
-inline int run_mtcs(const std::string& args, const fs::path& err = "/dev/null") {
-  const int status = std::system((std::string(MTCS_BINARY) + " " + args + " 2>" + err.string()).c_str());
+// mtcs ARGS with stderr to `err` (and `env`, NAME=VALUE ..., set for it); the exit code.
+inline int run_mtcs(const std::string& args, const fs::path& err = "/dev/null", const std::string& env = "") {
+  const int status = std::system((env + " " + std::string(MTCS_BINARY) + " " + args + " 2>" + err.string()).c_str());
   return WEXITSTATUS(status);
 }
 
