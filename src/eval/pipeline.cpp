@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "mtcs/eval/drill_access.h"
 #include "mtcs/eval/thermal_model.h"
@@ -30,8 +31,10 @@ Pipeline::Pipeline(const mold::Scene& scene, const TemperatureSolverFactory& tem
   for (const mold::Objective o : use) {
     if (!mold::is_temperature_objective(o)) continue;
     if (!spec.cavity) throw std::invalid_argument("the temperature objectives need a cavity");
-    stages_.push_back(make_temperature_stage(scene, temperatures ? temperatures : temperature_solver(spec.thermal.tier)));
-    samples_ = std::max(samples_, thermal_samples(scene).size());
+    thermal::Samples samples = thermal_samples(scene);
+    samples_ = std::max(samples_, samples.size());
+    stages_.push_back(make_temperature_stage(scene, temperatures ? temperatures : temperature_solver(spec.thermal.tier),
+                                             std::move(samples)));
     break;
   }
   if (uses(mold::Objective::Cost)) stages_.push_back(make_cost_stage(scene));

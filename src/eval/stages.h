@@ -6,13 +6,16 @@
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/eval/temperature_objectives.h"
 #include "mtcs/geometry/triangle_distance.h"
+#include "mtcs/thermal/model.h"
 #include "surface_samples.h"
 
 namespace mtcs::eval {
 
 std::unique_ptr<Stage> make_thermal_stage(const mold::Scene& scene, SurfaceSamples samples);
 // Needs a cavity and a factory that builds a solver.
-std::unique_ptr<Stage> make_temperature_stage(const mold::Scene& scene, const TemperatureSolverFactory& factory);
+// samples: thermal_samples(scene) (drawn once: the local walls are ray casts).
+std::unique_ptr<Stage> make_temperature_stage(const mold::Scene& scene, const TemperatureSolverFactory& factory,
+                                              thermal::Samples samples);
 std::unique_ptr<Stage> make_cost_stage(const mold::Scene& scene);
 // The `cost` objective: drilling and plugging the layout's holes.
 double drilling_cost(const mold::Layout& layout, const mold::Objectives& o);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "mtcs/eval/across_part.h"
 #include "mtcs/eval/cycle_time.h"
@@ -44,10 +45,10 @@ namespace {
 
 class TemperatureStage final : public Stage {
  public:
-  TemperatureStage(const mold::Scene& scene, const TemperatureSolverFactory& factory)
+  TemperatureStage(const mold::Scene& scene, const TemperatureSolverFactory& factory, thermal::Samples samples)
       : spec_(scene.spec()),
         setting_(thermal_setting(scene)),
-        samples_(thermal_samples(scene)),
+        samples_(std::move(samples)),
         coupled_(spec_.thermal.cavity_condition == mold::CavityCondition::Coupled),
         part_temperature_(coupled_ ? cavity_coupling(spec_).temperature : 0),
         bounded_above_(std::none_of(spec_.thermal.regions.begin(), spec_.thermal.regions.end(),
@@ -192,8 +193,9 @@ class TemperatureStage final : public Stage {
 
 }  // namespace
 
-std::unique_ptr<Stage> make_temperature_stage(const mold::Scene& scene, const TemperatureSolverFactory& factory) {
-  return std::make_unique<TemperatureStage>(scene, factory);
+std::unique_ptr<Stage> make_temperature_stage(const mold::Scene& scene, const TemperatureSolverFactory& factory,
+                                              thermal::Samples samples) {
+  return std::make_unique<TemperatureStage>(scene, factory, std::move(samples));
 }
 
 }  // namespace mtcs::eval
