@@ -23,6 +23,7 @@
 // Private to src/thermal.
 
 #include <Eigen/Dense>
+#include <array>
 #include <functional>
 #include <span>
 #include <vector>
@@ -114,8 +115,8 @@ class VoidSurface {
   };
   // A = 1/2 - K' into A (panels x panels), rows in parallel.
   void assemble(Eigen::MatrixXd& A) const;
-  // Every input of the panels' matrices: their width and grouping, the sub-triangles' corners,
-  // the far pass's origin and the images.
+  // Every input of the panels' matrices (their width and grouping, the sub-triangles' corners,
+  // the far pass's origin and the images), as their digest.
   void add_panels(io::CacheKey& key) const;
   // potentials(targets) into S, sized targets x panels.
   void fill_potentials(std::span<const Vec3> targets, Eigen::MatrixXd& S) const;
@@ -149,6 +150,7 @@ class VoidSurface {
     Vec3 origin = Vec3::Zero();
     std::vector<float> cx, cy, cz, area, far2, xx, yy, zz, xy, xz, yz, trace;
   } far_;
+  std::array<unsigned char, 16> panels_digest_{};  // add_panels
   bool robin_ = false, on_block_face_ = false;
   Eigen::VectorXd film_over_k_, part_;
   Eigen::MatrixXd moments_;
