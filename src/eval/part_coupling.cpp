@@ -81,11 +81,14 @@ double consistent_cooling(const std::function<double(double)>& need, double star
   // instead of 7).
   // A known point counts as an evaluation; within tolerance, it is the answer.
   int count = known ? 1 : 0;
-  if (known && std::abs(known->second - known->first) <= tolerance * known->first) {
-    if (evaluations) *evaluations = count;
-    return known->first;
-  }
   double best = start, best_misfit = std::numeric_limits<double>::infinity();
+  if (known) {
+    best = known->first, best_misfit = std::abs(known->second - known->first) / known->first;
+    if (best_misfit <= tolerance) {
+      if (evaluations) *evaluations = count;
+      return best;
+    }
+  }
   bool done = false;
   const auto misfit = [&](double u, double c) {  // c = e^u, exactly `start` at first
     const double n = need(c);
@@ -100,8 +103,6 @@ double consistent_cooling(const std::function<double(double)>& need, double star
     double b, fb;
     if (known && known->first > 0 && known->second > 0 &&
         (std::log(known->second / known->first) > 0) != (fa > 0)) {
-      const double relative = std::abs(known->second - known->first) / known->first;
-      if (relative < best_misfit) best = known->first, best_misfit = relative;
       b = a, fb = fa;
       a = std::log(known->first), fa = std::log(known->second) - a;
     } else {

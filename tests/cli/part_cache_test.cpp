@@ -85,19 +85,15 @@ TEST_CASE("mtcs evaluate keeps the part's panel matrix between runs", "[cli][cac
   write_bytes(potentials[0], scaled(potentials_bytes));
   CHECK(evaluate(cache) != first);
   write_bytes(potentials[0], potentials_bytes);
-  std::string changed;
 
   // A damaged file (one flipped bit, the checksum as it was): built again, the same as the first.
-  changed = original;
-  changed[48 + 8 * 1000] ^= 4;
-  write_bytes(kept[0], changed);
-  CHECK(evaluate(cache) == first);
-  CHECK(bytes_of(kept[0]) == original);
-  changed = potentials_bytes;  // likewise the potentials
-  changed[48 + 8 * 1000] ^= 4;
-  write_bytes(potentials[0], changed);
-  CHECK(evaluate(cache) == first);
-  CHECK(bytes_of(potentials[0]) == potentials_bytes);
+  for (const auto& [file, bytes] : {std::pair(kept[0], original), std::pair(potentials[0], potentials_bytes)}) {
+    std::string changed = bytes;
+    changed[48 + 8 * 1000] ^= 4;
+    write_bytes(file, changed);
+    CHECK(evaluate(cache) == first);
+    CHECK(bytes_of(file) == bytes);
+  }
 
   // --no-cache: the same score, nothing kept.
   const fs::path none = scratch("part_cache", "none");

@@ -261,9 +261,7 @@ TEST_CASE("mtcs thermal: a part too big for the memory allowed is refused with t
                               "/molds/l_bracket.layout.yaml";
   const fs::path err = scratch("thermal_memory", "run.err");
   const auto run_with_limit = [&](const std::string& megabytes) {
-    const std::string command = "MTCS_MEMORY_LIMIT=" + megabytes + " " + MTCS_BINARY + " thermal " + bracket +
-                                " >/dev/null 2>" + err.string();
-    return WEXITSTATUS(std::system(command.c_str()));
+    return run_mtcs("thermal " + bracket + " >/dev/null", err, "MTCS_MEMORY_LIMIT=" + megabytes);
   };
   CHECK(run_with_limit("5") == 1);
   const std::string refused = read_text(err);

@@ -34,8 +34,8 @@ io::CacheKey panel_matrix_key(std::string_view kind) {
   return key;
 }
 
-std::shared_ptr<const Eigen::MatrixXd> kept_panel_matrix(const io::CacheKey& key, Eigen::Index rows, Eigen::Index cols, Keep keep,
-                                  const std::function<void(Eigen::MatrixXd&)>& compute) {
+std::shared_ptr<const Eigen::MatrixXd> kept_panel_matrix(const io::CacheKey& key, Eigen::Index rows, Eigen::Index cols,
+                                                         Keep keep, const std::function<void(Eigen::MatrixXd&)>& compute) {
   const std::size_t bytes = sizeof(double) * std::size_t(rows) * std::size_t(cols);
   if (bytes > kKeptBytes / 2) {  // a copy kept would double a big part's memory
     auto m = std::make_shared<Eigen::MatrixXd>(rows, cols);

@@ -36,7 +36,7 @@ enum class Keep { memory, disk };
 // The rows x cols matrix of key: kept, or computed by compute(M) into M (sized rows x cols) and
 // kept (shared, not copied: a model holds the samples' potentials as kept). One of more than
 // kKeptBytes / 2 is computed each time and never kept.
-std::shared_ptr<const Eigen::MatrixXd> kept_panel_matrix(const io::CacheKey& key, Eigen::Index rows, Eigen::Index cols, Keep keep,
-                                  const std::function<void(Eigen::MatrixXd&)>& compute);
+std::shared_ptr<const Eigen::MatrixXd> kept_panel_matrix(const io::CacheKey& key, Eigen::Index rows, Eigen::Index cols,
+                                                         Keep keep, const std::function<void(Eigen::MatrixXd&)>& compute);
 
 }  // namespace mtcs::thermal

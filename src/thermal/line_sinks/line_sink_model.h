@@ -161,9 +161,9 @@ struct LineSinkModel::Impl {
   Eigen::Vector4d t0_moments = Eigen::Vector4d::Zero();
   MatrixXd face_tau, face_layer_moments;  // panels x faces, 4 x faces
   // The above, once the void, the faces, the samples and their far lattices are built; `d`: the
-  // face losses' normal derivatives at the panels (panels x faces), `face_points`: the faces'
-  // grid points.
-  void build_robin_fields(const std::vector<Vec3>& face_points, const MatrixXd& d);
+  // face losses' normal derivatives at the panels (panels x faces), `at_faces`: the panels'
+  // potentials at the faces' grid points (points x panels).
+  void build_robin_fields(const MatrixXd& at_faces, const MatrixXd& d);
 
   // The heated triangles with a flux (a region without flux, molds/plate.yaml's top face and
   // rim, adds +-0 to the sum: left out, the same bits at half the potentials on the plate).

@@ -222,13 +222,13 @@ double far_lattice_misfit(const Setting& setting, const Samples& samples, const 
 
 }  // namespace
 
-void LineSinkModel::Impl::build_robin_fields(const std::vector<Vec3>& face_points, const MatrixXd& d) {
+void LineSinkModel::Impl::build_robin_fields(const MatrixXd& at_faces, const MatrixXd& d) {
   Impl& m = *this;
   const VoidSurface& v = *void_surface;
   const std::size_t n = v.panels(), nf = m.faces.size();
   const auto N = Eigen::Index(n);
   const VectorXd& H = v.film_over_k();
-  m.void_face_potentials = m.face_average * *v.kept_potentials(face_points);
+  m.void_face_potentials = m.face_average * at_faces;
   m.far_panels.resize(N, 4);
   MatrixXd far_fixed(N, 4);  // the far lattice of the sources summed to `images` levels
   VectorXd heat(N);
@@ -534,7 +534,8 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
     m.void_potentials_ft = m.void_potentials->transpose().cast<float>();
     std::vector<Vec3> face_points;
     for (const ConvectiveFace& f : m.faces) face_points.insert(face_points.end(), f.cool.begin(), f.cool.end());
-    m.void_faces = v.times_inverse(m.face_average * *v.kept_potentials(face_points));
+    const std::shared_ptr<const MatrixXd> at_faces = v.kept_potentials(face_points);
+    m.void_faces = v.times_inverse(m.face_average * *at_faces);
     MatrixXd d(Eigen::Index(v.panels()), Eigen::Index(nf));
     for (std::size_t i = 0; i < v.panels(); ++i)
       for (std::size_t f = 0; f < nf; ++f)
@@ -543,7 +544,7 @@ LineSinkModel::LineSinkModel(const Setting& setting, const Samples& samples, Lin
                                               (2 * m.void_step);
     if (v.on_block_face()) d.setZero();  // the face's image keeps every flux there
     if (m.robin) {
-      m.build_robin_fields(face_points, d);
+      m.build_robin_fields(*at_faces, d);
     } else {
       m.face_samples += *m.void_potentials * v.solve(d);
       m.face_void = m.void_faces * d;
