@@ -94,6 +94,21 @@ sqlite3* open_db(const std::string& path, int flags) {
 // island generation's evaluations (experiments/islands/README.md).
 constexpr const char* kWriting = "PRAGMA journal_mode=WAL; PRAGMA synchronous=NORMAL;";
 
+// A writer killed inside a rollback-journal transaction leaves a hot journal beside the store
+// (its end is one: it takes the store out of WAL mode). A read-only connection cannot roll it
+// back ("attempt to write a readonly database"); a read-write one does on its first read, as
+// SQLite recovers any killed writer. Only when a journal is there: a whole store is only read.
+void roll_back_killed_writer(const std::string& path) {
+  std::error_code none;
+  if (!std::filesystem::exists(path + "-journal", none)) return;
+  sqlite3* db = nullptr;
+  if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr) == SQLITE_OK) {
+    sqlite3_busy_timeout(db, 10000);  // a live writer's journal is not hot: wait for its commit
+    sqlite3_exec(db, "SELECT count(*) FROM sqlite_master", nullptr, nullptr, nullptr);
+  }
+  sqlite3_close(db);  // errors are the check's to report, on the read-only connection
+}
+
 [[noreturn]] void bad_store(const std::string& path, const std::string& what) {
   throw io::InputError(path, 0, 0, "", what + "; the file is left as it is");
 }
@@ -308,6 +323,7 @@ RunStore RunStore::create(const std::string& path, const std::map<std::string, s
 RunStore RunStore::open(const std::string& path) {
   std::error_code unreadable;
   if (!std::filesystem::is_regular_file(path, unreadable)) throw io::InputError(path, 0, 0, "", "no run store here");
+  roll_back_killed_writer(path);
   RunStore s(open_db(path, SQLITE_OPEN_READONLY), path, -1);
   check_store(s.db_, path);
   return s;

@@ -292,3 +292,40 @@ TEST_CASE("run store faults: kill -9 while creating the store leaves no store, a
   CHECK_FALSE(fs::exists(p.string() + ".new"));
   CHECK(RunStore::open(p.string()).last()->population.size() == 3);
 }
+
+// Found by the kill -9 test (CI, 2026-12-06): a writer ends by taking its store out of WAL mode,
+// a rollback-journal transaction on the file's header; killed inside it, it leaves a hot journal
+// beside the store, which a read-only connection cannot roll back ("attempt to write a readonly
+// database"), so --resume and replay refused the run. A writer killed in any rollback-journal
+// transaction leaves the same; here one killed with its changes half on the disk (a one-page
+// cache spills them before the commit).
+TEST_CASE("run store faults: kill -9 inside a rollback-journal transaction: the store reads and resumes as before it",
+          "[store][faults]") {
+  const fs::path p = whole_store("killed_journal", 12);
+  std::vector<double> bests;
+  for (const auto& s : RunStore::open(p.string()).summaries()) bests.push_back(s.best);
+  const pid_t child = ::fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    sqlite3* db = nullptr;
+    sqlite3_open_v2(p.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr);
+    sqlite3_exec(db, "PRAGMA cache_size=1; BEGIN; UPDATE generation SET best = best + 1;"
+                     "UPDATE individual SET value = value + 1;", nullptr, nullptr, nullptr);
+    ::raise(SIGKILL);
+    ::_exit(0);
+  }
+  int status = 0;
+  REQUIRE(::waitpid(child, &status, 0) == child);
+  REQUIRE(WIFSIGNALED(status));
+  REQUIRE(fs::exists(p.string() + "-journal"));  // hot: its writer is gone
+  std::vector<double> read;
+  for (const auto& s : RunStore::open(p.string()).summaries()) read.push_back(s.best);
+  CHECK(read == bests);
+  RunStore resumed = RunStore::resume(p.string());
+  CHECK(resumed.last()->index == 11);
+  resumed.save(generation(12, 40), 1.2);
+  std::vector<double> after;
+  for (const auto& s : resumed.summaries()) after.push_back(s.best);
+  CHECK(after.size() == 13);
+  CHECK(std::equal(bests.begin(), bests.end(), after.begin()));
+}
