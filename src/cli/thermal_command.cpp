@@ -34,7 +34,8 @@ Command add_thermal_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "thermal",
       "The cycle-averaged temperature of the cavity surface for one layout: mean, std and max\n"
-      "(degC / K, area-weighted over the cavity samples), the hottest place, the heat balance (W).\n"
+      "(degC / K, area-weighted over the cavity samples), the hottest place, the heat balance (W),\n"
+      "and per circuit the coolant's flow, Reynolds number, pressure drop and rise (docs/coolant-circuits.md).\n"
       "Tiers: t1, t2, t2d (line sinks; M elements per bore), fd (finite volumes at a cell size, the\n"
       "reference; seconds per solve). Default: the spec's thermal.tier (docs/mold-spec.md).\n"
       "  --out field.vtp | field.ply | field.png   the temperature on the cavity surface (ParaView,\n"
@@ -49,7 +50,7 @@ Command add_thermal_command(CLI::App& app) {
   CLI::Option* out = sub->add_option("--out", opt->out, "field.vtp, field.ply, field.png, or with --samples a CSV");
   sub->add_option("--samples", opt->samples, "CSV of points (columns x,y,z, mm): their temperatures go to --out")->needs(out);
   sub->add_option("--problem", opt->problem, "also the conduction problem as JSON, for a solver outside mtcs (SI films, mm)");
-  sub->add_flag("--json", opt->json, "one JSON object on stdout: {tier, cavity_condition, mean, std, max, hottest, surface, samples, heat_in, heat_to_bores, heat_to_faces, cooling_time, cycle_time (s), ejectable, temperature_difference, seconds; sides with cavity.parting}");
+  sub->add_flag("--json", opt->json, "one JSON object on stdout: {tier, cavity_condition, mean, std, max, hottest, surface, samples, heat_in, heat_to_bores, heat_to_faces, cooling_time, cycle_time (s), ejectable, temperature_difference, seconds; sides with cavity.parting; coolant with a flow rate or supply pressure: per circuit flow, Reynolds, pressure drop (Pa), heat (W), rise (K), and the shop checks}");
   return {sub, [opt] {
             const std::string ext = std::filesystem::path(opt->out).extension().string();
             if (!opt->out.empty() && opt->samples.empty() && ext != ".vtp" && ext != ".ply" && ext != ".png")

@@ -109,6 +109,7 @@ CavityTemperature solve_once(const mold::Scene& scene, const mold::MoldSpec& spe
     const thermal::FvResult r = thermal::solve_finite_volume({setting, channels}, all, options);
     t = r.temperature;
     out.balance = {r.heat_in, r.heat_to_channels, r.heat_to_faces};
+    out.bore_heat = r.heat_to_channel;
   } else {
     thermal::LineSinkOptions options;
     options.tier = line_sink_tier(query.tier);
@@ -145,6 +146,11 @@ CavityTemperature solve_once(const mold::Scene& scene, const mold::MoldSpec& spe
     double to_channels = 0;
     for (double q : r.channel_heat) to_channels += q;
     out.balance = {r.heat_in, to_channels, r.face_heat};
+    // Each bore's heat: a bore the cut splits is two channels, in its place in `folded`.
+    out.bore_heat.assign(channels.size(), 0);
+    for (std::size_t b = 0, k = 0; b < channels.size(); ++b)
+      for (std::size_t parts = cut.fold(std::span(&channels[b], 1)).size(); parts > 0; --parts)
+        out.bore_heat[b] += r.channel_heat[k++];
   }
   const std::size_t n = samples.size(), m = points.size();
   out.at_samples.assign(t.begin(), t.begin() + std::ptrdiff_t(n));
@@ -196,6 +202,7 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
   const mold::ThermalSpec& t = scene.spec().thermal;
   if (t.cavity_condition != mold::CavityCondition::Coupled || t.cycle.cooling || t.part_film) {
     summarize_faces(scene, r, asked.size(), samples, across);
+    r.circuits = coolant_circuits(layout, scene.spec(), r.bore_heat);
     return r;
   }
   // The film was derived for the nominal cycle; the solution needs its own: the cooling time
@@ -223,6 +230,7 @@ CavityTemperature cavity_temperature(const mold::Scene& scene, const mold::Layou
     r.cycle_iterations = int(solved.size());
   }
   summarize_faces(scene, r, asked.size(), samples, across);
+  r.circuits = coolant_circuits(layout, scene.spec(), r.bore_heat);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

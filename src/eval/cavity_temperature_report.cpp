@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "circuit_hydraulics_report.h"
 #include "mtcs/mesh/surface_field.h"
 
 namespace mtcs::eval {
@@ -104,7 +105,7 @@ void write_cavity_temperature_text(std::ostream& out, const CavityTemperature& r
       << std::setprecision(3) << "heat balance\n  in " << r.balance.in << " W = bores "
       << r.balance.to_channels << " W + outer faces " << r.balance.to_faces << " W (residual "
       << std::scientific << std::setprecision(1) << r.balance.residual() << " W)\n"
-      << std::fixed << std::setprecision(3) << "seconds " << r.seconds << "\n";
+      << std::fixed << coolant_circuits_text(r.circuits) << std::setprecision(3) << "seconds " << r.seconds << "\n";
 }
 
 void write_cavity_temperature_field(std::ostream& out, const CavityTemperature& r, bool vtp) {
@@ -137,6 +138,7 @@ void write_cavity_temperature_json(std::ostream& out, const CavityTemperature& r
                                    {"mean", r.across.mean}, {"max", r.across.max}}},
                                  {"seconds", r.seconds}};
   if (r.sides) j["sides"] = {{"core", side_json(r.sides->core)}, {"cavity", side_json(r.sides->cavity)}};
+  if (r.circuits.flowing) j["coolant"] = coolant_circuits_json(r.circuits);
   out << j.dump(2) << "\n";
 }
 

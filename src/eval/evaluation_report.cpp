@@ -1,10 +1,11 @@
 #include "mtcs/eval/evaluation_report.h"
 
-#include "mtcs/eval/drill_access.h"
-
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <sstream>
+
+#include "circuit_hydraulics_report.h"
+#include "mtcs/eval/drill_access.h"
 
 namespace mtcs::eval {
 namespace {
@@ -78,6 +79,7 @@ void write_evaluation_json(std::ostream& out, const Evaluation& e, const Pipelin
                                 {"draw", access->access_map_command(v)}});
     }
   }
+  if (const CoolantCircuits cc = coolant_circuits(layout, spec); cc.flowing) j["coolant"] = coolant_circuits_json(cc);
   j["stages"] = nlohmann::ordered_json::array();
   for (const auto& s : e.stages) j["stages"].push_back({{"name", s.name}, {"seconds", s.seconds}});
   j["changes"] = nlohmann::ordered_json::array();
@@ -117,6 +119,9 @@ void write_evaluation_text(std::ostream& out, const Evaluation& e, const Pipelin
       out << "  " << b.name() << " " << describe(v) << "\n    draw: " << access->access_map_command(v) << "\n";
     }
   }
+  // The heat and the rise need a solve: mtcs thermal prints them.
+  if (const CoolantCircuits cc = coolant_circuits(layout, spec); cc.flowing)
+    out << "\n" << coolant_circuits_text(cc) << "  (heat and coolant rise: mtcs thermal)\n";
   out << "\nstages (microseconds)\n";
   for (const auto& s : e.stages) out << "  " << std::setw(24) << s.name << s.seconds * 1e6 << "\n";
 }

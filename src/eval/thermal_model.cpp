@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "mtcs/eval/circuit_hydraulics.h"
 #include "mtcs/eval/coolant.h"
 #include "mtcs/eval/cycle_time.h"
 #include "mtcs/eval/part_coupling.h"
@@ -148,14 +149,23 @@ thermal::Setting thermal_setting(const mold::Scene& scene, const mold::MoldSpec&
 
 std::vector<thermal::Channel> thermal_channels(const mold::Layout& layout, const mold::MoldSpec& spec) {
   const mold::ThermalSpec& t = spec.thermal;
+  // Driven by a supply pressure alone, each circuit takes the flow its resistance lets through.
+  std::vector<double> flow(layout.bores.size(), t.flow_rate.value_or(0));
+  if (!t.flow_rate && !t.coolant_film && t.supply_pressure) {
+    const std::vector<CircuitPath> paths = circuit_paths(layout);
+    const std::vector<double> flows = circuit_flows(paths, spec);
+    for (std::size_t k = 0; k < paths.size(); ++k)
+      for (int b : paths[k].bores) flow[std::size_t(b)] = flows[k];
+  }
   std::vector<thermal::Channel> channels;
-  for (const mold::Bore& b : layout.bores) {
+  for (std::size_t i = 0; i < layout.bores.size(); ++i) {
+    const mold::Bore& b = layout.bores[i];
     thermal::Channel c;
     c.axis = {b.flow_start, b.flow_end};
     c.radius = b.diameter / 2;
     c.coolant = t.coolant_temperature;
     if (t.coolant_film) c.film = *t.coolant_film;
-    else if (t.flow_rate) c.film = coolant_film(*t.flow_rate, b.diameter, t.coolant_temperature);
+    else if (flow[i] > 0) c.film = coolant_film(flow[i], b.diameter, t.coolant_temperature);
     channels.push_back(c);
   }
   return channels;

@@ -439,17 +439,24 @@ ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
     t.conductivity = kPerM * r.number(n["steel_conductivity"], "thermal.steel_conductivity", 1e-6, 1e6);
   if (n["coolant"]) {
     const YAML::Node& c = n["coolant"];
-    r.expect_map(c, "thermal.coolant", {"temperature", "film", "flow_rate"});
+    r.expect_map(c, "thermal.coolant",
+                 {"temperature", "film", "flow_rate", "supply_pressure", "roughness", "min_reynolds", "max_rise"});
     if (c["film"] && c["flow_rate"]) r.fail(c, "thermal.coolant", "give film or flow_rate, not both");
+    if (c["film"] && c["supply_pressure"])
+      r.fail(c, "thermal.coolant", "give film or supply_pressure, not both (the pressure sets each circuit's flow and film)");
     if (c["temperature"]) t.coolant_temperature = r.number(c["temperature"], "thermal.coolant.temperature", kCold, kHot);
     if (c["film"]) t.coolant_film = kPerM2 * r.number(c["film"], "thermal.coolant.film", 1e-9, 1e12);
-    if (c["flow_rate"]) {
-      t.flow_rate = r.number(c["flow_rate"], "thermal.coolant.flow_rate", 1e-6, 1e6);
-      // The water properties behind Gnielinski are tabulated from 0 to 106 degrees C.
-      if (t.coolant_temperature < 0.01 || t.coolant_temperature > 106)
-        r.fail(c["temperature"] ? c["temperature"] : c, "thermal.coolant.temperature",
-               "with a flow rate the coolant is water: 0 to 106 degrees C");
-    }
+    if (c["flow_rate"]) t.flow_rate = r.number(c["flow_rate"], "thermal.coolant.flow_rate", 1e-6, 1e6);
+    constexpr double kPaPerBar = 1e5;
+    if (c["supply_pressure"])
+      t.supply_pressure = kPaPerBar * r.number(c["supply_pressure"], "thermal.coolant.supply_pressure", 1e-6, 1e4);
+    // The water properties behind Gnielinski are tabulated from 0 to 106 degrees C.
+    if ((t.flow_rate || t.supply_pressure) && (t.coolant_temperature < 0.01 || t.coolant_temperature > 106))
+      r.fail(c["temperature"] ? c["temperature"] : c, "thermal.coolant.temperature",
+             "with a flow rate or a supply pressure the coolant is water: 0 to 106 degrees C");
+    if (c["roughness"]) t.roughness = r.number(c["roughness"], "thermal.coolant.roughness", 0, 10);
+    if (c["min_reynolds"]) t.min_reynolds = r.number(c["min_reynolds"], "thermal.coolant.min_reynolds", 0, 1e8);
+    if (c["max_rise"]) t.max_rise = r.number(c["max_rise"], "thermal.coolant.max_rise", 1e-6, 1e4);
   }
   if (n["ambient"]) {
     const YAML::Node& a = n["ambient"];

@@ -62,6 +62,29 @@ TEST_CASE("mtcs thermal --json: each side of a parted mold, none on an unparted 
   CHECK_FALSE(nlohmann::json::parse(read_text(block)).contains("sides"));
 }
 
+TEST_CASE("mtcs thermal --json: each circuit's flow, drop and rise with a flow rate, none at a wall temperature",
+          "[cli][thermal][hydraulics]") {
+  const fs::path plate = scratch("thermal", "plate_coolant.json"), block = scratch("thermal", "block_coolant.json");
+  REQUIRE(run_mtcs("thermal " + MTCS_SOURCE_DIR + "/molds/plate.yaml --layout " + MTCS_SOURCE_DIR +
+                   "/molds/plate.layout.yaml --json >" + plate.string()) == 0);
+  const auto j = nlohmann::json::parse(read_text(plate));
+  REQUIRE(j.contains("coolant"));
+  const auto& circuits = j["coolant"]["circuits"];
+  REQUIRE(circuits.size() == 3);  // the hand-made layout's three U loops
+  double heat = 0;
+  for (const auto& c : circuits) {
+    CHECK(c["flow"] == 8);
+    CHECK(c["turns"] == 2);
+    CHECK(c["pressure_drop"]["total"].get<double>() > 0);
+    CHECK(c["rise"].get<double>() > 0);
+    heat += c["heat"].get<double>();
+  }
+  CHECK(heat == Approx(j["heat_to_bores"].get<double>()).epsilon(1e-9));
+  CHECK(j["coolant"]["checks"].empty());
+  REQUIRE(run_mtcs("thermal " + kMold + " --layout " + kLayout + " --json >" + block.string()) == 0);
+  CHECK_FALSE(nlohmann::json::parse(read_text(block)).contains("coolant"));  // Dirichlet bores: no flow given
+}
+
 TEST_CASE("mtcs thermal --samples: temperatures at the user's points", "[cli][thermal]") {
   const fs::path out = scratch("thermal", "T.csv");
   REQUIRE(run_mtcs("thermal " + kMold + " --layout " + kLayout + " --tier fd --cell 2 --samples " + kSamples +

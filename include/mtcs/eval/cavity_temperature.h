@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mtcs/eval/across_part.h"
+#include "mtcs/eval/circuit_hydraulics.h"
 #include "mtcs/eval/part_sides.h"
 #include "mtcs/mesh/surface_field.h"
 #include "mtcs/mold/layout.h"
@@ -54,6 +55,8 @@ struct CavityTemperature {
   std::vector<double> at_samples;    // degrees C, at thermal_samples(scene)
   std::vector<double> at_points;     // degrees C, at the extra points asked for
   HeatBalance balance;
+  std::vector<double> bore_heat;     // W into each bore's coolant (the layout's order)
+  CoolantCircuits circuits;          // each circuit's flow, pressure drop and coolant rise
   // s: the cooling time at the hottest sample (the part's centre line reaching the eject
   // temperature there) and, under the coupled condition, the cycle (fill + pack + it + open);
   // ejectable: the hottest sample below the eject temperature (else the part never sets there).

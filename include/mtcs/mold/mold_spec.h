@@ -224,6 +224,13 @@ struct ThermalSpec {
   // circuit from which eval::coolant_film finds the film (Gnielinski).
   std::optional<double> coolant_film;      // W/(mm^2 K)
   std::optional<double> flow_rate;         // l/min per circuit
+  // The circuits' hydraulics (eval/circuit_hydraulics.h). supply_pressure: across each circuit's
+  // ports; with flow_rate a limit the circuit's drop must keep under, alone what drives each
+  // circuit's own flow (and film). The bores' equivalent roughness; the shop's limits.
+  std::optional<double> supply_pressure;   // Pa
+  double roughness = 0.045;                // mm (Moody's commercial steel)
+  double min_reynolds = 1e4;               // turbulent above (Moldflow's band)
+  double max_rise = 3;                     // K, coolant outlet over inlet
   double ambient_temperature = 25;         // degrees C
   double ambient_film = 1e-5;              // W/(mm^2 K) (10 W/(m^2 K): free convection)
   std::vector<Face> adiabatic_faces;       // e.g. the parting plane

@@ -1,0 +1,90 @@
+#pragma once
+// The coolant's way through each circuit, as a mold shop checks it (issue 42): the flow a circuit
+// takes, its Reynolds number, the pressure it needs (Darcy-Weisbach friction in the drilled bores,
+// Weisbach's loss at every drilled turn, the ports), and how much the coolant warms from inlet to
+// outlet with the heat the circuit takes (docs/coolant-circuits.md).
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "mtcs/eval/coolant.h"
+#include "mtcs/mold/layout.h"
+#include "mtcs/mold/mold_spec.h"
+
+namespace mtcs::eval {
+
+// Darcy's friction factor: 64/Re up to Re = 2300, Colebrook-White (1939) from Re = 4000 (iterated
+// to 1e-12), linear in Re in between. relative_roughness: the wall's equivalent sand roughness
+// over the diameter (0: a smooth tube, where Colebrook matches Petukhov within 2 %).
+double darcy_friction(double reynolds, double relative_roughness);
+
+// The loss coefficient of a sharp (mitred) turn by `angle` radians from straight on, Weisbach's
+// 0.946 sin^2(a/2) + 2.047 sin^4(a/2): 0.99 at a right angle. Two drilled bores meet without a
+// rounding; the drill point's pocket beyond the corner is not counted (a few tenths more).
+double turn_loss(double angle);
+// The ports: the coolant enters from a fitting as through a sharp entrance and leaves into a
+// wider passage (0.5 and 1.0 dynamic pressures, the textbook values).
+inline constexpr double kInletLoss = 0.5, kOutletLoss = 1.0;
+
+// One circuit as the coolant meets it: its bores' flow lengths in flow order, one diameter, the
+// turns between consecutive bores.
+struct CircuitPath {
+  int circuit = 0;
+  std::vector<int> bores;     // indices into the layout's bores, in flow order
+  double diameter = 0;        // mm
+  double length = 0;          // mm, the flow's
+  std::vector<double> turns;  // radians from straight on, one per junction
+};
+std::vector<CircuitPath> circuit_paths(const mold::Layout& layout);
+
+// The parts of a circuit's pressure drop (Pa) at a flow of `litres_per_minute` of `water`.
+struct PressureDrop {
+  double velocity = 0, reynolds = 0, friction = 0;  // m/s, -, Darcy's f
+  double pipe = 0, turns = 0, ports = 0;            // Pa
+  double total() const { return pipe + turns + ports; }
+};
+PressureDrop pressure_drop(const CircuitPath& path, double litres_per_minute, const WaterProperties& water,
+                           double roughness_mm);
+// The flow (l/min) at which the circuit's drop equals `pascals` (to 1e-10 relative).
+double flow_at_pressure(const CircuitPath& path, double pascals, const WaterProperties& water, double roughness_mm);
+
+// Each circuit's flow (l/min): the spec's flow_rate, or the flow its supply pressure drives
+// through it; empty when the spec gives neither (a film or a wall at the coolant temperature).
+std::vector<double> circuit_flows(std::span<const CircuitPath> paths, const mold::MoldSpec& spec);
+
+struct CircuitHydraulics {
+  int circuit = 0, bores = 0, turns = 0;
+  double diameter = 0, length = 0;  // mm
+  double flow = 0;                  // l/min
+  PressureDrop drop;
+  std::string regime;               // laminar, transitional, turbulent (Moldflow's bands)
+  double film = 0;                  // W/(m^2 K), Gnielinski
+  bool heat_known = false;          // the solve's heat per bore was given
+  double heat = 0, heat_share = 0;  // W into the coolant, share of all circuits'
+  double coolant_in = 0, coolant_out = 0, rise = 0;  // degrees C, K: heat / (rho Q c_p)
+};
+
+// A shop's rule a circuit breaks: Reynolds number below thermal.coolant.min_reynolds, a rise above
+// max_rise, a drop above the supply pressure.
+struct ShopCheck {
+  int circuit = 0;
+  std::string what;      // reynolds, rise, pressure
+  double found = 0, limit = 0;
+  std::string text() const;
+};
+
+struct CoolantCircuits {
+  bool flowing = false;  // the spec gives a flow or a supply pressure
+  bool from_supply = false;  // each circuit's flow follows from the supply pressure
+  std::vector<CircuitHydraulics> circuits;
+  double total_flow = 0;  // l/min, the supply's
+  std::vector<ShopCheck> checks;
+};
+
+// The circuits of `layout` under the spec's coolant. bore_heat: W into each bore's coolant (the
+// layout's order), from a solve; empty: heat and rise unknown (not checked).
+CoolantCircuits coolant_circuits(const mold::Layout& layout, const mold::MoldSpec& spec,
+                                 std::span<const double> bore_heat = {});
+
+}  // namespace mtcs::eval

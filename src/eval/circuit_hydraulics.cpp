@@ -1,0 +1,181 @@
+#include "mtcs/eval/circuit_hydraulics.h"
+
+#include <algorithm>
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+#include <iomanip>
+#include <map>
+#include <numbers>
+#include <sstream>
+
+namespace mtcs::eval {
+namespace {
+
+using std::numbers::pi;
+constexpr double kLaminarEnd = 2300, kTurbulentStart = 4000;
+constexpr double kLitresPerMinute = 1e-3 / 60;  // m^3/s
+
+double colebrook(double reynolds, double relative_roughness) {
+  // Swamee-Jain's explicit start, then Colebrook's fixed point (a contraction: a few steps).
+  const double rough = relative_roughness / 3.7;
+  double x = -2 * std::log10(rough + 5.74 / std::pow(reynolds, 0.9));  // 1/sqrt(f)
+  for (int i = 0; i < 50; ++i) {
+    const double next = -2 * std::log10(rough + 2.51 * x / reynolds);
+    const bool done = std::abs(next - x) <= 1e-13 * std::abs(x);
+    x = next;
+    if (done) break;
+  }
+  return 1 / (x * x);
+}
+
+double area(double diameter_mm) {
+  const double d = diameter_mm * 1e-3;
+  return pi * d * d / 4;
+}
+
+std::string regime(double reynolds) {
+  if (reynolds < kLaminarEnd) return "laminar";
+  return reynolds < 1e4 ? "transitional" : "turbulent";
+}
+
+}  // namespace
+
+double darcy_friction(double reynolds, double relative_roughness) {
+  if (reynolds <= kLaminarEnd) return 64 / std::max(reynolds, 1e-300);
+  if (reynolds >= kTurbulentStart) return colebrook(reynolds, relative_roughness);
+  const double s = (reynolds - kLaminarEnd) / (kTurbulentStart - kLaminarEnd);
+  return (1 - s) * 64 / kLaminarEnd + s * colebrook(kTurbulentStart, relative_roughness);
+}
+
+double turn_loss(double angle) {
+  const double s2 = std::pow(std::sin(angle / 2), 2);
+  return 0.946 * s2 + 2.047 * s2 * s2;
+}
+
+std::vector<CircuitPath> circuit_paths(const mold::Layout& layout) {
+  std::map<int, std::vector<int>> by_circuit;
+  for (std::size_t i = 0; i < layout.bores.size(); ++i) by_circuit[layout.bores[i].circuit].push_back(int(i));
+  std::vector<CircuitPath> paths;
+  for (auto& [circuit, bores] : by_circuit) {
+    std::sort(bores.begin(), bores.end(), [&](int a, int b) { return layout.bores[a].segment < layout.bores[b].segment; });
+    CircuitPath p;
+    p.circuit = circuit;
+    p.bores = bores;
+    p.diameter = layout.bores[bores.front()].diameter;
+    for (std::size_t k = 0; k < bores.size(); ++k) {
+      const mold::Bore& b = layout.bores[bores[k]];
+      const geometry::Vec3 along = b.flow_end - b.flow_start;
+      p.length += along.norm();
+      if (k == 0) continue;
+      const mold::Bore& a = layout.bores[bores[k - 1]];
+      const geometry::Vec3 before = a.flow_end - a.flow_start;
+      const double c = before.dot(along) / std::max(before.norm() * along.norm(), 1e-300);
+      p.turns.push_back(std::acos(std::clamp(c, -1.0, 1.0)));
+    }
+    paths.push_back(std::move(p));
+  }
+  return paths;
+}
+
+PressureDrop pressure_drop(const CircuitPath& path, double litres_per_minute, const WaterProperties& water,
+                           double roughness_mm) {
+  PressureDrop p;
+  const double d = path.diameter * 1e-3;
+  p.velocity = litres_per_minute * kLitresPerMinute / area(path.diameter);
+  p.reynolds = water.density * p.velocity * d / water.viscosity;
+  p.friction = darcy_friction(p.reynolds, roughness_mm / path.diameter);
+  const double dynamic = water.density * p.velocity * p.velocity / 2;  // Pa
+  p.pipe = p.friction * (path.length * 1e-3 / d) * dynamic;
+  double turns = 0;
+  for (double a : path.turns) turns += turn_loss(a);
+  p.turns = turns * dynamic;
+  p.ports = (kInletLoss + kOutletLoss) * dynamic;
+  return p;
+}
+
+double flow_at_pressure(const CircuitPath& path, double pascals, const WaterProperties& water, double roughness_mm) {
+  // The drop grows monotonically with the flow (f Q^2 with f falling slower than 1/Q^2): bracket
+  // by doubling, then TOMS 748.
+  const auto excess = [&](double q) { return pressure_drop(path, q, water, roughness_mm).total() - pascals; };
+  double lo = 1e-3, hi = 1;
+  while (excess(lo) > 0 && lo > 1e-12) lo /= 16;
+  while (excess(hi) < 0 && hi < 1e9) hi *= 2;
+  boost::uintmax_t iterations = 200;
+  const auto [a, b] = boost::math::tools::toms748_solve(excess, lo, hi, boost::math::tools::eps_tolerance<double>(34),
+                                                        iterations);
+  return (a + b) / 2;
+}
+
+std::vector<double> circuit_flows(std::span<const CircuitPath> paths, const mold::MoldSpec& spec) {
+  const mold::ThermalSpec& t = spec.thermal;
+  std::vector<double> flows;
+  if (t.flow_rate) flows.assign(paths.size(), *t.flow_rate);
+  else if (t.supply_pressure) {
+    const WaterProperties water = water_properties(t.coolant_temperature);
+    for (const CircuitPath& p : paths) flows.push_back(flow_at_pressure(p, *t.supply_pressure, water, t.roughness));
+  }
+  return flows;
+}
+
+std::string ShopCheck::text() const {
+  std::ostringstream s;
+  s << "circuit " << circuit << ": ";
+  if (what == "reynolds")
+    s << std::fixed << std::setprecision(0) << "Reynolds number " << found << ", under " << limit
+      << " (thermal.coolant.min_reynolds): the flow is not fully turbulent, its film weak";
+  else if (what == "rise")
+    s << std::fixed << std::setprecision(2) << "coolant rise " << found << " K, over " << limit
+      << " K (thermal.coolant.max_rise): the outlet's end of the circuit cools less";
+  else
+    s << std::fixed << std::setprecision(3) << "pressure drop " << found / 1e5 << " bar, over the supply's " << limit / 1e5
+      << " bar (thermal.coolant.supply_pressure): the circuit cannot take its flow";
+  return s.str();
+}
+
+CoolantCircuits coolant_circuits(const mold::Layout& layout, const mold::MoldSpec& spec, std::span<const double> bore_heat) {
+  const mold::ThermalSpec& t = spec.thermal;
+  CoolantCircuits out;
+  const std::vector<CircuitPath> paths = circuit_paths(layout);
+  const std::vector<double> flows = circuit_flows(paths, spec);
+  out.flowing = !flows.empty();
+  out.from_supply = !t.flow_rate && t.supply_pressure;
+  if (!out.flowing) return out;
+  const WaterProperties water = water_properties(t.coolant_temperature);
+  const bool heat_known = bore_heat.size() == layout.bores.size();
+  double all_heat = 0;
+  for (std::size_t k = 0; k < paths.size(); ++k) {
+    const CircuitPath& p = paths[k];
+    CircuitHydraulics c;
+    c.circuit = p.circuit;
+    c.bores = int(p.bores.size());
+    c.turns = int(p.turns.size());
+    c.diameter = p.diameter;
+    c.length = p.length;
+    c.flow = flows[k];
+    c.drop = pressure_drop(p, c.flow, water, t.roughness);
+    c.regime = regime(c.drop.reynolds);
+    c.film = coolant_film(c.flow, c.diameter, t.coolant_temperature) * 1e6;
+    c.coolant_in = c.coolant_out = t.coolant_temperature;
+    c.heat_known = heat_known;
+    if (heat_known) {
+      for (int b : p.bores) c.heat += bore_heat[std::size_t(b)];
+      const double capacity = water.density * c.flow * kLitresPerMinute * water.specific_heat;  // W/K
+      c.rise = c.heat / capacity;
+      c.coolant_out = c.coolant_in + c.rise;
+      all_heat += c.heat;
+    }
+    out.total_flow += c.flow;
+    out.circuits.push_back(c);
+  }
+  for (CircuitHydraulics& c : out.circuits) {
+    if (heat_known && all_heat != 0) c.heat_share = c.heat / all_heat;
+    if (c.drop.reynolds < t.min_reynolds) out.checks.push_back({c.circuit, "reynolds", c.drop.reynolds, t.min_reynolds});
+    if (heat_known && c.rise > t.max_rise) out.checks.push_back({c.circuit, "rise", c.rise, t.max_rise});
+    // With a supply and a given flow the supply is a limit; alone it sets the flow (the drop is it).
+    if (t.supply_pressure && t.flow_rate && c.drop.total() > *t.supply_pressure)
+      out.checks.push_back({c.circuit, "pressure", c.drop.total(), *t.supply_pressure});
+  }
+  return out;
+}
+
+}  // namespace mtcs::eval
