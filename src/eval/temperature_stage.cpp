@@ -105,7 +105,7 @@ class TemperatureStage final : public Stage {
     key.clear();
     for (const thermal::Channel& c : channels)
       key.insert(key.end(), {c.axis.p0.x(), c.axis.p0.y(), c.axis.p0.z(), c.axis.p1.x(), c.axis.p1.y(), c.axis.p1.z(),
-                             c.radius, c.coolant, c.film});
+                             c.radius, c.coolant, c.film, double(c.circuit), c.position, c.capacity});
     write(solved_.get(key,
                       [&] {
                         std::vector<double> t = solve_(channels);

@@ -157,6 +157,7 @@ std::vector<thermal::Channel> thermal_channels(const mold::Layout& layout, const
     for (std::size_t k = 0; k < paths.size(); ++k)
       for (int b : paths[k].bores) flow[std::size_t(b)] = flows[k];
   }
+  const WaterProperties water = water_properties(t.coolant_temperature);
   std::vector<thermal::Channel> channels;
   for (std::size_t i = 0; i < layout.bores.size(); ++i) {
     const mold::Bore& b = layout.bores[i];
@@ -166,6 +167,10 @@ std::vector<thermal::Channel> thermal_channels(const mold::Layout& layout, const
     c.coolant = t.coolant_temperature;
     if (t.coolant_film) c.film = *t.coolant_film;
     else if (flow[i] > 0) c.film = coolant_film(flow[i], b.diameter, t.coolant_temperature);
+    if (t.coolant_rise && flow[i] > 0) {
+      c.circuit = b.circuit, c.position = b.segment;
+      c.capacity = water.density * flow[i] / 60e3 * water.specific_heat;  // l/min -> m^3/s; W/K
+    }
     channels.push_back(c);
   }
   return channels;

@@ -440,7 +440,7 @@ ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
   if (n["coolant"]) {
     const YAML::Node& c = n["coolant"];
     r.expect_map(c, "thermal.coolant",
-                 {"temperature", "film", "flow_rate", "supply_pressure", "roughness", "min_reynolds", "max_rise"});
+                 {"temperature", "film", "flow_rate", "supply_pressure", "roughness", "min_reynolds", "max_rise", "rise"});
     if (c["film"] && c["flow_rate"]) r.fail(c, "thermal.coolant", "give film or flow_rate, not both");
     if (c["film"] && c["supply_pressure"])
       r.fail(c, "thermal.coolant", "give film or supply_pressure, not both (the pressure sets each circuit's flow and film)");
@@ -457,6 +457,7 @@ ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
     if (c["roughness"]) t.roughness = r.number(c["roughness"], "thermal.coolant.roughness", 0, 10);
     if (c["min_reynolds"]) t.min_reynolds = r.number(c["min_reynolds"], "thermal.coolant.min_reynolds", 0, 1e8);
     if (c["max_rise"]) t.max_rise = r.number(c["max_rise"], "thermal.coolant.max_rise", 1e-6, 1e4);
+    if (c["rise"]) t.coolant_rise = r.boolean(c["rise"], "thermal.coolant.rise");
   }
   if (n["ambient"]) {
     const YAML::Node& a = n["ambient"];

@@ -231,6 +231,8 @@ struct ThermalSpec {
   double roughness = 0.045;                // mm (Moody's commercial steel)
   double min_reynolds = 1e4;               // turbulent above (Moldflow's band)
   double max_rise = 3;                     // K, coolant outlet over inlet
+  // The coolant warms along each circuit in the model (with a flow), or stays at the inlet's.
+  bool coolant_rise = true;
   double ambient_temperature = 25;         // degrees C
   double ambient_film = 1e-5;              // W/(mm^2 K) (10 W/(m^2 K): free convection)
   std::vector<Face> adiabatic_faces;       // e.g. the parting plane

@@ -99,6 +99,7 @@ struct FvResult {
   int iterations = 0;
   double residual = 0;        // relative, as the solver reports it
   bool converged = false;     // the residual reached the tolerance within max_iterations
+  int coolant_solves = 1;     // solves of the coolant's warming along its circuits (a fixed point)
   double seconds = 0;         // wall time of the whole solve
   double solver_seconds = 0;  // of which the preconditioner and the iterations
   std::size_t steel_cells = 0;
@@ -108,7 +109,8 @@ struct FvResult {
 // Throws std::invalid_argument when the model or the options cannot be solved: an empty block,
 // a non-positive cell, conductivity, bore radius or bore film, a negative face film, non-finite
 // input, no steel cell, heat_in with no steel near. A solve cut short by max_iterations returns
-// with converged = false.
+// with converged = false. Channels whose coolant warms (Channel::capacity) have each its mean
+// coolant along the bore: a fixed point of a few solves (coolant_solves).
 FvResult solve_finite_volume(const Model& model, const Samples& samples, const FvOptions& options = {});
 
 }  // namespace mtcs::thermal

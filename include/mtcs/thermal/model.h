@@ -49,8 +49,13 @@ struct HeatedTriangle {
 struct Channel {
   geometry::Segment axis;
   double radius = 0;
-  double coolant = 40;  // degrees C
+  double coolant = 40;  // degrees C: at the circuit's inlet when the coolant warms along it
   double film = std::numeric_limits<double>::infinity();  // W/(mm^2 K)
+  // The coolant warms along its circuit (capacity > 0): the channels of one circuit in flow
+  // order by position, each flowed from axis.p0 to p1; capacity = rho Q c_p, W/K.
+  int circuit = -1;
+  double position = 0;
+  double capacity = 0;
 };
 
 // What does not change with the layout: the block, its faces, the heat input and the cavity.

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <span>
 #include <stdexcept>
 
 #include <absl/container/flat_hash_map.h>
@@ -37,6 +38,35 @@ std::optional<geometry::Segment> clip_to_block(const Box& box, const geometry::S
   }
   if (!(t0 < t1)) return std::nullopt;
   return geometry::Segment{t0 > 0 ? Vec3(s.p0 + t0 * d) : s.p0, t1 < 1 ? Vec3(s.p0 + t1 * d) : s.p1};
+}
+
+// A channel as the coolant's warming along its circuit sees it.
+struct Warming {
+  int circuit = -1;
+  double position = 0, capacity = 0;  // W/K
+  double w1 = 1;                      // the weight of its mean rows
+  int first = 0, elements = 0, kinds = 1;  // its columns: element e's strength at first + e * kinds
+  double element_length = 0;
+};
+
+// The coolant warms along its circuit: an element's coolant is the inlet's plus, over the
+// circuit's capacity rate (rho Q c_p), the heat of every element upstream and half its own. Each
+// mean row (the coolant on its right-hand side, weighted w1) gains those strengths' columns:
+// lower-triangular within a circuit, so the system stays one solve.
+void add_coolant_rise(std::span<const Warming> channels, MatrixXd& A) {
+  for (const Warming& c : channels) {
+    if (c.circuit < 0 || !(c.capacity > 0)) continue;
+    const double per_watt = c.w1 / c.capacity;  // K of coolant per W, weighted
+    for (int e = 0; e < c.elements; ++e) {
+      const int row = c.first + e * c.kinds;
+      for (const Warming& d : channels) {
+        if (d.circuit != c.circuit || d.position > c.position) continue;
+        const bool self = &d == &c;
+        for (int j = 0; j < (self ? e : d.elements); ++j) A(row, d.first + j * d.kinds) -= per_watt * d.element_length;
+        if (self) A(row, row) -= per_watt * d.element_length / 2;
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -222,11 +252,14 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
   A.setZero(n, n);
   rhs.setZero(n);
 
+  thread_local std::vector<Warming> warming;
+  warming.clear();
   for (std::size_t c = 0; c < nc; ++c) {
     const auto& b = *blocks[c];
     const Channel& ch = channels[c];
     const double R = b.axis.radius, h = ch.film;
     const double w1 = h == kInfiniteFilm ? 1 : h * R / (k + h * R);
+    warming.push_back({ch.circuit, ch.position, ch.capacity, w1, offset[c], b.axis.elements, m.kinds, b.axis.element_length});
     const double w2 = h == kInfiniteFilm ? 0 : 1 / (2 * std::numbers::pi * (k + h * R));
     const double beta = h == kInfiniteFilm ? -1 : (k - h * R) / (k + h * R);
     // The rows' fields, block by block: each channel's columns and each face's loss, near part
@@ -261,6 +294,7 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
       }
     }
   }
+  add_coolant_rise(warming, A);
   for (int f = 0; f < nf; ++f) {
     const ConvectiveFace& cf = m.faces[f];
     const int row = n_ch + f;
