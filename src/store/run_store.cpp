@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 #include "mtcs/io/crash_point.h"
@@ -96,14 +97,27 @@ constexpr const char* kWriting = "PRAGMA journal_mode=WAL; PRAGMA synchronous=NO
 
 // A writer killed inside a rollback-journal transaction leaves a hot journal beside the store
 // (its end is one: it takes the store out of WAL mode). A read-only connection cannot roll it
-// back ("attempt to write a readonly database"); a read-write one does on its first read, as
-// SQLite recovers any killed writer. Only when a journal is there: a whole store is only read.
+// back (SQLITE_READONLY_ROLLBACK, "attempt to write a readonly database"); a read-write one does
+// on its first read, as SQLite recovers any killed writer. Only then, and only for a file that
+// is an SQLite database: anything else is left as it is, for the check to refuse.
 void roll_back_killed_writer(const std::string& path) {
   std::error_code none;
   if (!std::filesystem::exists(path + "-journal", none)) return;
+  {
+    char header[16] = {};
+    std::ifstream in(path, std::ios::binary);
+    if (!in.read(header, sizeof header) || std::memcmp(header, "SQLite format 3", sizeof header) != 0) return;
+  }
   sqlite3* db = nullptr;
+  bool hot = false;
+  if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK)
+    hot = sqlite3_exec(db, "SELECT count(*) FROM sqlite_master", nullptr, nullptr, nullptr) != SQLITE_OK &&
+          sqlite3_extended_errcode(db) == SQLITE_READONLY_ROLLBACK;
+  sqlite3_close(db);
+  if (!hot) return;
+  db = nullptr;
   if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr) == SQLITE_OK) {
-    sqlite3_busy_timeout(db, 10000);  // a live writer's journal is not hot: wait for its commit
+    sqlite3_busy_timeout(db, 10000);  // another reader rolling it back at the same moment
     sqlite3_exec(db, "SELECT count(*) FROM sqlite_master", nullptr, nullptr, nullptr);
   }
   sqlite3_close(db);  // errors are the check's to report, on the read-only connection

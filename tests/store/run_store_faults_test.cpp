@@ -317,7 +317,14 @@ TEST_CASE("run store faults: kill -9 inside a rollback-journal transaction: the 
   int status = 0;
   REQUIRE(::waitpid(child, &status, 0) == child);
   REQUIRE(WIFSIGNALED(status));
-  REQUIRE(fs::exists(p.string() + "-journal"));  // hot: its writer is gone
+  REQUIRE(fs::exists(p.string() + "-journal"));
+  {  // hot: its writer is gone, and a read-only connection cannot roll it back
+    sqlite3* db = nullptr;
+    REQUIRE(sqlite3_open_v2(p.c_str(), &db, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK);
+    CHECK(sqlite3_exec(db, "SELECT count(*) FROM generation", nullptr, nullptr, nullptr) != SQLITE_OK);
+    CHECK(sqlite3_extended_errcode(db) == SQLITE_READONLY_ROLLBACK);
+    sqlite3_close(db);
+  }
   std::vector<double> read;
   for (const auto& s : RunStore::open(p.string()).summaries()) read.push_back(s.best);
   CHECK(read == bests);
@@ -328,4 +335,13 @@ TEST_CASE("run store faults: kill -9 inside a rollback-journal transaction: the 
   for (const auto& s : resumed.summaries()) after.push_back(s.best);
   CHECK(after.size() == 13);
   CHECK(std::equal(bests.begin(), bests.end(), after.begin()));
+}
+
+TEST_CASE("run store faults: a text file with a journal beside it is refused, both left as they are", "[store][faults]") {
+  const fs::path p = fresh("journal_beside_text");
+  write_bytes(p, std::string(4096, 'x'));
+  const std::string journal = std::string("\xd9\xd5\x05\xf9\x20\xa1\x63\xd7") + std::string(4088, '\1');
+  write_bytes(p.string() + "-journal", journal);
+  CHECK_THAT(refused(p), Catch::Contains("run store"));
+  CHECK(bytes(p.string() + "-journal") == journal);
 }

@@ -74,7 +74,7 @@ std::vector<Channel> CavityCut::fold(std::span<const Channel> channels) const {
     Channel a = ch, b = ch;
     a.axis = {mirror(ch.axis.p0), x};
     b.axis = {x, mirror(ch.axis.p1)};
-    b.position += 0.5;  // downstream of a, upstream of the circuit's next bore
+    b.position += 0.5;  // downstream of a, upstream of the circuit's next bore (positions: segments, whole)
     out.push_back(a), out.push_back(b);
   }
   return out;

@@ -280,7 +280,8 @@ static FvResult solve_at_coolants(const Model& model, const Samples& samples, co
 // Each bore's coolant at its mean along the bore: the inlet's plus, over the circuit's capacity
 // rate, the heat of the bores upstream and half its own. The heat depends on the coolant only
 // weakly (the rise is a small share of the wall's drive): a fixed point, each step shrinking the
-// change by that share (a few %), so two solves leave the coolant within ~0.01 K of its limit.
+// change by about that share (a few % at 2-8 l/min), so two or three solves bring the last step
+// under kTolerance. One that does not settle in kMaxSolves is reported as not converged.
 FvResult solve_finite_volume(const Model& model, const Samples& samples, const FvOptions& options) {
   const bool warms = std::any_of(model.channels.begin(), model.channels.end(),
                                  [](const Channel& c) { return c.circuit >= 0 && c.capacity > 0; });
@@ -305,7 +306,11 @@ FvResult solve_finite_volume(const Model& model, const Samples& samples, const F
       warmed.channels[c].coolant = coolant;
     }
     result.coolant_solves = solve;
-    if (change <= kTolerance || solve == kMaxSolves) break;
+    if (change <= kTolerance) break;
+    if (solve == kMaxSolves) {
+      result.converged = false;
+      break;
+    }
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -60,8 +60,8 @@ void add_coolant_rise(std::span<const Warming> channels, MatrixXd& A) {
     for (int e = 0; e < c.elements; ++e) {
       const int row = c.first + e * c.kinds;
       for (const Warming& d : channels) {
-        if (d.circuit != c.circuit || d.position > c.position) continue;
         const bool self = &d == &c;
+        if (d.circuit != c.circuit || !(self || d.position < c.position)) continue;
         for (int j = 0; j < (self ? e : d.elements); ++j) A(row, d.first + j * d.kinds) -= per_watt * d.element_length;
         if (self) A(row, row) -= per_watt * d.element_length / 2;
       }
