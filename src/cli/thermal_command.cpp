@@ -34,8 +34,7 @@ Command add_thermal_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "thermal",
       "The cycle-averaged temperature of the cavity surface for one layout: mean, std and max\n"
-      "(degC / K, area-weighted over the cavity samples), the hottest place, the heat balance (W),\n"
-      "and per circuit the coolant's flow, Reynolds number, pressure drop and rise (docs/coolant-circuits.md).\n"
+      "(degC / K, area-weighted over the cavity samples), the hottest place, the heat balance (W), each circuit's coolant.\n"
       "Tiers: t1, t2, t2d (line sinks; M elements per bore), fd (finite volumes at a cell size, the\n"
       "reference; seconds per solve). Default: the spec's thermal.tier (docs/mold-spec.md).\n"
       "  --out field.vtp | field.ply | field.png   the temperature on the cavity surface (ParaView,\n"
