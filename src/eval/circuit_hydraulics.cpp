@@ -106,6 +106,10 @@ double flow_at_pressure(const CircuitPath& path, double pascals, const WaterProp
   return (a + b) / 2;
 }
 
+double capacity_rate(double litres_per_minute, const WaterProperties& water) {
+  return water.density * litres_per_minute * kLitresPerMinute * water.specific_heat;
+}
+
 std::vector<double> circuit_flows(std::span<const CircuitPath> paths, const mold::MoldSpec& spec) {
   const mold::ThermalSpec& t = spec.thermal;
   std::vector<double> flows;
@@ -159,8 +163,7 @@ CoolantCircuits coolant_circuits(const mold::Layout& layout, const mold::MoldSpe
     c.heat_known = heat_known;
     if (heat_known) {
       for (int b : p.bores) c.heat += bore_heat[std::size_t(b)];
-      const double capacity = water.density * c.flow * kLitresPerMinute * water.specific_heat;  // W/K
-      c.rise = c.heat / capacity;
+      c.rise = c.heat / capacity_rate(c.flow, water);
       c.coolant_out = c.coolant_in + c.rise;
       all_heat += c.heat;
     }

@@ -168,8 +168,9 @@ std::vector<thermal::Channel> thermal_channels(const mold::Layout& layout, const
     if (t.coolant_film) c.film = *t.coolant_film;
     else if (flow[i] > 0) c.film = coolant_film(flow[i], b.diameter, t.coolant_temperature);
     if (t.coolant_rise && flow[i] > 0) {
-      c.circuit = b.circuit, c.position = b.segment;
-      c.capacity = water.density * flow[i] / 60e3 * water.specific_heat;  // l/min -> m^3/s; W/K
+      c.circuit = b.circuit;
+      c.position = b.segment;
+      c.capacity = capacity_rate(flow[i], water);
     }
     channels.push_back(c);
   }

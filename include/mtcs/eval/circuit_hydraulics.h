@@ -49,6 +49,9 @@ PressureDrop pressure_drop(const CircuitPath& path, double litres_per_minute, co
 // The flow (l/min) at which the circuit's drop equals `pascals` (to 1e-10 relative).
 double flow_at_pressure(const CircuitPath& path, double pascals, const WaterProperties& water, double roughness_mm);
 
+// W/K: rho Q c_p of `litres_per_minute` of `water`, what warms it by a kelvin.
+double capacity_rate(double litres_per_minute, const WaterProperties& water);
+
 // Each circuit's flow (l/min): the spec's flow_rate, or the flow its supply pressure drives
 // through it; empty when the spec gives neither (a film or a wall at the coolant temperature).
 std::vector<double> circuit_flows(std::span<const CircuitPath> paths, const mold::MoldSpec& spec);
