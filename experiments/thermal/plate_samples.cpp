@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
     for (const Named& l : layouts) {
       const auto channels = eval::thermal_channels(mold::decode(scene, l.genome), spec);
       const auto t0 = std::chrono::steady_clock::now();
-      const eval::TemperatureObjectives o = eval::temperature_objectives(solve(channels), samples, spec);
+      const eval::TemperatureObjectives o = eval::temperature_objectives(solve(channels).temperature, samples, spec);
       const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       std::printf("%s,%s,%s,%g,%zu,%.9g,%.9g,%.9g,%.3f\n", l.set.c_str(), l.name.c_str(),
                   mold::to_string(spec.thermal.tier).c_str(), spacing > 0 ? spacing : base.cavity->sample_spacing,
@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
       if (l.set.rfind(fd_sets, 0) != 0) continue;
       const auto t0 = std::chrono::steady_clock::now();
       const eval::TemperatureObjectives o =
-          eval::temperature_objectives(solve(eval::thermal_channels(mold::decode(scene, l.genome), spec)), samples, spec);
+          eval::temperature_objectives(solve(eval::thermal_channels(mold::decode(scene, l.genome), spec)).temperature, samples, spec);
       const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       std::printf("%s,%s,fd%s,%g,%zu,%.9g,%.9g,%.9g,%.3f\n", l.set.c_str(), l.name.c_str(), cell,
                   base.cavity->sample_spacing, samples.size(), o.mean, o.std, o.max, ms);

@@ -146,11 +146,7 @@ CavityTemperature solve_once(const mold::Scene& scene, const mold::MoldSpec& spe
     double to_channels = 0;
     for (double q : r.channel_heat) to_channels += q;
     out.balance = {r.heat_in, to_channels, r.face_heat};
-    // Each bore's heat: a bore the cut splits is two channels, in its place in `folded`.
-    out.bore_heat.assign(channels.size(), 0);
-    for (std::size_t b = 0, k = 0; b < channels.size(); ++b)
-      for (std::size_t parts = cut.fold(std::span(&channels[b], 1)).size(); parts > 0; --parts)
-        out.bore_heat[b] += r.channel_heat[k++];
+    out.bore_heat = cut.unfold_heat(channels, r.channel_heat);  // a bore the cut splits is two channels
   }
   const std::size_t n = samples.size(), m = points.size();
   out.at_samples.assign(t.begin(), t.begin() + std::ptrdiff_t(n));

@@ -121,6 +121,18 @@ std::vector<double> circuit_flows(std::span<const CircuitPath> paths, const mold
   return flows;
 }
 
+std::vector<double> bore_flows(const mold::Layout& layout, const mold::MoldSpec& spec) {
+  const mold::ThermalSpec& t = spec.thermal;
+  if (t.flow_rate) return std::vector<double>(layout.bores.size(), *t.flow_rate);
+  if (!t.supply_pressure) return {};
+  std::vector<double> flow(layout.bores.size(), 0.0);
+  const std::vector<CircuitPath> paths = circuit_paths(layout);
+  const std::vector<double> flows = circuit_flows(paths, spec);
+  for (std::size_t k = 0; k < paths.size(); ++k)
+    for (int b : paths[k].bores) flow[std::size_t(b)] = flows[k];
+  return flow;
+}
+
 std::string ShopCheck::text() const {
   std::ostringstream s;
   s << "circuit " << circuit << ": ";
@@ -178,6 +190,45 @@ CoolantCircuits coolant_circuits(const mold::Layout& layout, const mold::MoldSpe
     if (t.supply_pressure && t.flow_rate && c.drop.total() > *t.supply_pressure)
       out.checks.push_back({c.circuit, "pressure", c.drop.total(), *t.supply_pressure});
   }
+  return out;
+}
+
+std::vector<BoreCoolant> bore_coolant(const mold::Layout& layout, const mold::MoldSpec& spec,
+                                      std::span<const double> bore_heat) {
+  if (bore_heat.size() != layout.bores.size()) return {};
+  const std::vector<CircuitPath> paths = circuit_paths(layout);
+  const std::vector<double> flows = circuit_flows(paths, spec);
+  if (flows.empty()) return {};
+  const WaterProperties water = water_properties(spec.thermal.coolant_temperature);
+  std::vector<BoreCoolant> out(layout.bores.size());
+  for (std::size_t k = 0; k < paths.size(); ++k) {
+    const double capacity = capacity_rate(flows[k], water);
+    double at = spec.thermal.coolant_temperature;
+    for (int b : paths[k].bores) {
+      out[std::size_t(b)].in = at;
+      at += bore_heat[std::size_t(b)] / capacity;
+      out[std::size_t(b)].out = at;
+    }
+  }
+  return out;
+}
+
+std::vector<ShopCheck> rise_checks(const mold::Layout& layout, const mold::MoldSpec& spec,
+                                   std::span<const double> bore_flow, std::span<const double> bore_heat) {
+  const std::size_t n = layout.bores.size();
+  if (bore_flow.size() != n || bore_heat.size() != n) return {};
+  const WaterProperties water = water_properties(spec.thermal.coolant_temperature);
+  // Bores come circuit by circuit (the decoder's order); a map keeps any order right.
+  std::map<int, std::pair<double, double>> heat_and_capacity;
+  for (std::size_t i = 0; i < n; ++i) {
+    auto& [heat, capacity] = heat_and_capacity[layout.bores[i].circuit];
+    heat += bore_heat[i];
+    capacity = capacity_rate(bore_flow[i], water);
+  }
+  std::vector<ShopCheck> out;
+  for (const auto& [circuit, hc] : heat_and_capacity)
+    if (hc.second > 0 && hc.first / hc.second > spec.thermal.max_rise)
+      out.push_back({circuit, "rise", hc.first / hc.second, spec.thermal.max_rise});
   return out;
 }
 

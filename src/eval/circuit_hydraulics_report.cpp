@@ -58,4 +58,6 @@ nlohmann::ordered_json coolant_circuits_json(const CoolantCircuits& cc) {
   return j;
 }
 
+std::string coolant_circuits_json_text(const CoolantCircuits& cc) { return coolant_circuits_json(cc).dump(); }
+
 }  // namespace mtcs::eval

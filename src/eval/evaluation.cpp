@@ -18,12 +18,15 @@ const char* to_string(ViolationKind kind) {
     case ViolationKind::Drillable: return "drillable";
     case ViolationKind::Eject: return "eject";
     case ViolationKind::TemperatureBounds: return "temperature_bounds";
+    case ViolationKind::CoolantReynolds: return "coolant_reynolds";
+    case ViolationKind::CoolantPressure: return "coolant_pressure";
+    case ViolationKind::CoolantRise: return "coolant_rise";
   }
   return "unknown";
 }
 
 bool is_thermal_verdict(ViolationKind kind) {
-  return kind == ViolationKind::Eject || kind == ViolationKind::TemperatureBounds;
+  return kind == ViolationKind::Eject || kind == ViolationKind::TemperatureBounds || kind == ViolationKind::CoolantRise;
 }
 
 double scalar_fitness(const Evaluation& e, const mold::MoldSpec& spec, const std::vector<double>& weights) {

@@ -36,6 +36,18 @@ std::string found_and_needed(const Violation& v) {
       s << "the thermal tier returned " << v.distance << " degC, beyond the physical bound " << v.margin
         << " degC: a defect of the model (please report the layout)";
       break;
+    case K::CoolantReynolds:
+      s << std::fixed << std::setprecision(0) << "Reynolds number " << v.distance << ", at least " << v.margin
+        << " (thermal.coolant.min_reynolds)";
+      break;
+    case K::CoolantPressure:
+      s << std::fixed << std::setprecision(3) << "pressure drop " << v.distance / 1e5 << " bar, the supply gives "
+        << v.margin / 1e5 << " bar";
+      break;
+    case K::CoolantRise:
+      s << std::fixed << std::setprecision(2) << "coolant rise " << v.distance << " K, at most " << v.margin
+        << " K (thermal.coolant.max_rise)";
+      break;
     case K::InletFace:
     case K::OutletFace:
       s << v.distance << " mm from the nearest allowed face";
@@ -51,6 +63,12 @@ std::string found_and_needed(const Violation& v) {
 }
 
 }  // namespace
+
+std::string violation_text(const Violation& v) {
+  std::string s = to_string(v.kind);
+  for (const auto& el : v.elements) (s += ' ') += el;
+  return s + ": " + found_and_needed(v);
+}
 
 void write_evaluation_json(std::ostream& out, const Evaluation& e, const Pipeline& pipeline, const mold::MoldSpec& spec,
                            const mold::Layout& layout, const std::vector<mold::LayoutChange>& changes) {
@@ -79,7 +97,8 @@ void write_evaluation_json(std::ostream& out, const Evaluation& e, const Pipelin
                                 {"draw", access->access_map_command(v)}});
     }
   }
-  if (const CoolantCircuits cc = coolant_circuits(layout, spec); cc.flowing) j["coolant"] = coolant_circuits_json(cc);
+  if (const CoolantCircuits cc = coolant_circuits(layout, spec, e.bore_heat); cc.flowing)
+    j["coolant"] = coolant_circuits_json(cc);
   j["stages"] = nlohmann::ordered_json::array();
   for (const auto& s : e.stages) j["stages"].push_back({{"name", s.name}, {"seconds", s.seconds}});
   j["changes"] = nlohmann::ordered_json::array();
@@ -119,9 +138,10 @@ void write_evaluation_text(std::ostream& out, const Evaluation& e, const Pipelin
       out << "  " << b.name() << " " << describe(v) << "\n    draw: " << access->access_map_command(v) << "\n";
     }
   }
-  // The heat and the rise need a solve: mtcs thermal prints them.
-  if (const CoolantCircuits cc = coolant_circuits(layout, spec); cc.flowing)
-    out << "\n" << coolant_circuits_text(cc) << "  (heat and coolant rise: mtcs thermal)\n";
+  // The heat and the rise come from the temperature stage's solve (none without a temperature objective).
+  if (const CoolantCircuits cc = coolant_circuits(layout, spec, e.bore_heat); cc.flowing)
+    out << "\n" << coolant_circuits_text(cc)
+        << (e.bore_heat.empty() ? "  (heat and coolant rise: mtcs thermal)\n" : "");
   out << "\nstages (microseconds)\n";
   for (const auto& s : e.stages) out << "  " << std::setw(24) << s.name << s.seconds * 1e6 << "\n";
 }

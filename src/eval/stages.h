@@ -2,6 +2,7 @@
 // The stages of the pipeline, one file each; pipeline.cpp decides which a scene needs.
 
 #include <memory>
+#include <span>
 
 #include "mtcs/eval/pipeline.h"
 #include "mtcs/eval/temperature_objectives.h"
@@ -27,6 +28,11 @@ std::unique_ptr<Stage> make_surface_stage(const mold::Scene& scene);
 std::unique_ptr<Stage> make_drilling_stage(const mold::Scene& scene);
 class DrillAccess;
 std::unique_ptr<Stage> make_drillable_stage(const DrillAccess& access);
+// Each circuit's Reynolds number and pressure drop against the shop's limits (a flowing spec).
+std::unique_ptr<Stage> make_coolant_stage(const mold::Scene& scene);
+struct ShopCheck;
+// Shop checks as violations of the circuit ("c2") at its inlet, the rise's at its outlet.
+void add_shop_checks(Evaluation& out, std::span<const ShopCheck> checks, const mold::Layout& layout);
 
 // The box of a cylinder grown by `grow` on every side: the clearance stages' cheap first test
 // (geometry::box_distance_sq against the other element's box).

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "mtcs/eval/across_part.h"
+#include "mtcs/eval/circuit_hydraulics.h"
 #include "mtcs/eval/cycle_time.h"
 #include "mtcs/eval/part_coupling.h"
 #include "mtcs/eval/part_sides.h"
@@ -53,7 +54,8 @@ class TemperatureStage final : public Stage {
         part_temperature_(coupled_ ? cavity_coupling(spec_).temperature : 0),
         bounded_above_(std::none_of(spec_.thermal.regions.begin(), spec_.thermal.regions.end(),
                                     [](const mold::HeatRegion& r) { return r.flux > 0; })),
-        samples_count_(samples_.size()) {
+        samples_count_(samples_.size()),
+        flowing_(spec_.thermal.flow_rate || spec_.thermal.supply_pressure) {
     const auto& use = spec_.objectives.use;
     // temperature_std_side: each sample's half of the mold (before the points across join).
     if (std::find(use.begin(), use.end(), mold::Objective::TemperatureStdSide) != use.end()) {
@@ -84,7 +86,8 @@ class TemperatureStage final : public Stage {
   std::string name() const override { return "temperature_" + mold::to_string(spec_.thermal.tier); }
 
   void run(const mold::Layout& layout, Evaluation& out) const override {
-    const std::vector<thermal::Channel> channels = thermal_channels(layout, spec_);
+    const std::vector<double> flows = flowing_ ? bore_flows(layout, spec_) : std::vector<double>{};
+    const std::vector<thermal::Channel> channels = thermal_channels(layout, spec_, flows);
     // A genome can decode to no bore at all (a circuit whose waypoints collapse). Nothing then
     // carries the heat away in the models: worse than any layout that cools, not an error.
     constexpr double kNoCooling = std::numeric_limits<double>::infinity();
@@ -106,16 +109,44 @@ class TemperatureStage final : public Stage {
     for (const thermal::Channel& c : channels)
       key.insert(key.end(), {c.axis.p0.x(), c.axis.p0.y(), c.axis.p0.z(), c.axis.p1.x(), c.axis.p1.y(), c.axis.p1.z(),
                              c.radius, c.coolant, c.film, double(c.circuit), c.position, c.capacity});
-    write(solved_.get(key,
-                      [&] {
-                        std::vector<double> t = solve_(channels);
-                        follow_cycle(t, spec_, samples_count_, samples_.thickness);  // coupled: the film of the cycle this layout needs
-                        return objectives_of(std::move(t));
-                      }),
-          layout, out);
+    const Solved& solved = solved_.get(key, [&] {
+      SolvedTemperatures t = solve_(channels);
+      const std::vector<double> before(t.temperature.begin(),
+                                       t.temperature.begin() + std::ptrdiff_t(std::min(samples_count_, t.temperature.size())));
+      follow_cycle(t.temperature, spec_, samples_count_, samples_.thickness);  // coupled: the film of the cycle this layout needs
+      const double scale = heat_scale(before, t.temperature);
+      for (double& q : t.channel_heat) q *= scale;
+      return Solved{objectives_of(std::move(t.temperature)), std::move(t.channel_heat)};
+    });
+    write(solved.objectives, layout, out);
+    // Each bore's heat (a channel per bore), and the coolant's rise against the shop's limit.
+    if (solved.bore_heat.size() != layout.bores.size()) return;
+    out.bore_heat = solved.bore_heat;
+    if (!flows.empty()) add_shop_checks(out, rise_checks(layout, spec_, flows, out.bore_heat), layout);
   }
 
  private:
+  struct Solved {
+    TemperatureObjectives objectives;
+    std::vector<double> bore_heat;  // W per bore, at the film of the cycle the layout needs
+  };
+
+  // follow_cycle moves each sample's wall for the film of the cycle this layout needs; the heat
+  // through a sample then scales as its excess over the coolant does (q = h (T_p - T) with
+  // T - T_c proportional to q, the 1-D picture follow_cycle itself rests on), so the bores' heat
+  // scales by the samples' heat-weighted mean of that ratio (1 under the flux model).
+  double heat_scale(const std::vector<double>& before, const std::vector<double>& after) const {
+    if (!coupled_ || before.size() > after.size()) return 1;
+    const double coolant = spec_.thermal.coolant_temperature;
+    double q = 0, q_after = 0;
+    for (std::size_t i = 0; i < before.size() && i < samples_.weights.size(); ++i) {
+      const double excess = before[i] - coolant, took = samples_.weights[i] * (part_temperature_ - before[i]);
+      if (!(excess > 0) || !(took > 0)) continue;
+      q += took, q_after += took * (after[i] - coolant) / excess;
+    }
+    return q > 0 ? q_after / q : 1;
+  }
+
   // The objectives of the samples' temperatures (the points across the part after them).
   TemperatureObjectives objectives_of(std::vector<double> t) const {
     std::vector<double> across(t.begin() + std::ptrdiff_t(samples_count_), t.end());
@@ -187,7 +218,8 @@ class TemperatureStage final : public Stage {
   std::vector<std::optional<geometry::Vec3>> across_;       // per sample, the point across the part
   std::vector<PartSide> sides_;                             // per sample, its half (temperature_std_side)
   TemperatureSolver solve_;
-  ExactCache<std::vector<double>, TemperatureObjectives> solved_{256};
+  bool flowing_;  // a flow rate or a supply pressure: each bore's flow known, the rise checked
+  ExactCache<std::vector<double>, Solved> solved_{256};
   std::vector<std::pair<mold::Objective, std::size_t>> slots_;
 };
 

@@ -148,15 +148,14 @@ thermal::Setting thermal_setting(const mold::Scene& scene, const mold::MoldSpec&
 }
 
 std::vector<thermal::Channel> thermal_channels(const mold::Layout& layout, const mold::MoldSpec& spec) {
+  return thermal_channels(layout, spec, bore_flows(layout, spec));
+}
+
+std::vector<thermal::Channel> thermal_channels(const mold::Layout& layout, const mold::MoldSpec& spec,
+                                               std::span<const double> bore_flow) {
   const mold::ThermalSpec& t = spec.thermal;
   // Driven by a supply pressure alone, each circuit takes the flow its resistance lets through.
-  std::vector<double> flow(layout.bores.size(), t.flow_rate.value_or(0));
-  if (!t.flow_rate && !t.coolant_film && t.supply_pressure) {
-    const std::vector<CircuitPath> paths = circuit_paths(layout);
-    const std::vector<double> flows = circuit_flows(paths, spec);
-    for (std::size_t k = 0; k < paths.size(); ++k)
-      for (int b : paths[k].bores) flow[std::size_t(b)] = flows[k];
-  }
+  const auto flow_of = [&](std::size_t i) { return i < bore_flow.size() ? bore_flow[i] : 0.0; };
   const WaterProperties water = water_properties(t.coolant_temperature);
   std::vector<thermal::Channel> channels;
   for (std::size_t i = 0; i < layout.bores.size(); ++i) {
@@ -166,11 +165,11 @@ std::vector<thermal::Channel> thermal_channels(const mold::Layout& layout, const
     c.radius = b.diameter / 2;
     c.coolant = t.coolant_temperature;
     if (t.coolant_film) c.film = *t.coolant_film;
-    else if (flow[i] > 0) c.film = coolant_film(flow[i], b.diameter, t.coolant_temperature);
-    if (t.coolant_rise && flow[i] > 0) {
+    else if (flow_of(i) > 0) c.film = coolant_film(flow_of(i), b.diameter, t.coolant_temperature);
+    if (t.coolant_rise && flow_of(i) > 0) {
       c.circuit = b.circuit;
       c.position = b.segment;
-      c.capacity = capacity_rate(flow[i], water);
+      c.capacity = capacity_rate(flow_of(i), water);
     }
     channels.push_back(c);
   }

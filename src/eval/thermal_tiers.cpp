@@ -36,7 +36,8 @@ TemperatureSolverFactory temperature_solver(mold::ThermalTier tier) {
       thermal::FvOptions options;
       options.cell = spec.cell_size;
       return TemperatureSolver([&setting, &samples, options](const std::vector<thermal::Channel>& channels) {
-        return thermal::solve_finite_volume({setting, channels}, samples, options).temperature;
+        thermal::FvResult r = thermal::solve_finite_volume({setting, channels}, samples, options);
+        return SolvedTemperatures{std::move(r.temperature), std::move(r.heat_to_channel)};
       });
     };
   return [tier](const thermal::Setting& setting, const thermal::Samples& samples, const mold::ThermalSpec& spec) {
@@ -49,7 +50,8 @@ TemperatureSolverFactory temperature_solver(mold::ThermalTier tier) {
     const thermal::CavityCut cut = spec.void_plane ? thermal::cut_at_cavity_void(setting) : thermal::CavityCut{setting};
     auto sinks = std::make_shared<LineSinks>(cut.setting, samples, options);
     return TemperatureSolver([sinks, cut](const std::vector<thermal::Channel>& channels) {
-      return sinks->model.temperatures(cut.fold(channels), sinks->caches.local());
+      thermal::LineSinkSolution r = sinks->model.solve(cut.fold(channels), sinks->caches.local());
+      return SolvedTemperatures{std::move(r.temperature), cut.unfold_heat(channels, r.channel_heat)};
     });
   };
 }

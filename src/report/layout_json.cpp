@@ -2,6 +2,8 @@
 
 #include <map>
 
+#include "mtcs/eval/circuit_hydraulics.h"
+
 namespace mtcs::report {
 
 Json layout_json(const mold::Layout& layout) {
@@ -31,6 +33,17 @@ Json layout_json(const mold::Layout& layout) {
   for (const auto& [circuit, e] : ends)
     ports.push_back({{"circuit", circuit}, {"inlet", vec_json(e.first->flow_start)}, {"outlet", vec_json(e.second->flow_end)}});
   return {{"bores", std::move(bores)}, {"ports", std::move(ports)}, {"circuits", ends.size()}, {"plugs", layout.plugs}};
+}
+
+Json coolant_json(const mold::Layout& layout, const mold::MoldSpec& spec, const std::vector<double>& bore_heat) {
+  const eval::CoolantCircuits cc = eval::coolant_circuits(layout, spec, bore_heat);
+  if (!cc.flowing) return nullptr;
+  Json j = Json::parse(eval::coolant_circuits_json_text(cc));
+  j["bores"] = Json::array();
+  const std::vector<eval::BoreCoolant> at = eval::bore_coolant(layout, spec, bore_heat);
+  for (std::size_t i = 0; i < at.size(); ++i)
+    j["bores"].push_back({{"name", layout.bores[i].name()}, {"in", at[i].in}, {"out", at[i].out}});
+  return j;
 }
 
 Json violations_json(const std::vector<eval::Violation>& violations) {

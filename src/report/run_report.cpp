@@ -3,7 +3,7 @@
 //   objectives [{name, unit, scale}]
 //   scene (scene_json.h), generation, shown (the member loaded first)
 //   members [{rank, objectives, value, feasible, violation, front, layout (layout_json.h),
-//             violations}]
+//             violations, coolant (layout_json.h: per circuit, each bore's coolant in/out)}]
 //   convergence (convergence.h)
 //   anytime {generation, evaluations, seconds, best_feasible, best_so_far, hypervolume,
 //            hypervolume_so_far, ref} (convergence.h; replay's anytime.csv)
@@ -159,7 +159,8 @@ RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
                                {"violation", score.violation},
                                {"front", on_front},
                                {"layout", layout_json(shop[r].plan)},
-                               {"violations", violations_json(e.violations)}});
+                               {"violations", violations_json(e.violations)},
+                               {"coolant", coolant_json(shop[r].layout, session.spec(), e.bore_heat)}});
     if (int(r) == report.member) shown = shop[r].layout;
   }
   report.members = population.size();

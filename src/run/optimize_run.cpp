@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 
+#include "mtcs/eval/evaluation_report.h"
 #include "mtcs/io/input_error.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/run/polish.h"
@@ -21,6 +22,8 @@ namespace mtcs::run {
 namespace fs = std::filesystem;
 
 namespace {
+
+constexpr std::size_t kViolationsShown = 8;  // on the screen after a run; summary.json lists all
 
 // The process's island transport: MPI when mpirun started it, threads for --islands P, none for
 // one population.
@@ -181,6 +184,7 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
   // What is written is rounded to the tolerance and tidied, and scored as written.
   outcome.genome = shop_layout(problem, scene, outcome.genome);
   outcome.best = problem.evaluate(problem.encode(outcome.genome));
+  outcome.evaluation = session.pipeline().evaluate(mold::decode(scene, outcome.genome));
   const mold::Layout layout = write_run_outputs(out_dir, scene, optimizer, names, config.es.seed, outcome);
   const std::size_t bores = layout.bores.size(), circuits = outcome.genome.circuits.size();
   spdlog::info("{} best layout: {} bore{} in {} circuit{}, objective {:.6g}, {} evaluations in {:.6g} s",
@@ -189,6 +193,12 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
   spdlog::info("results in {}/: best.layout.yaml (mtcs evaluate {} --layout {}/best.layout.yaml), bores.csv, holes.csv, "
                "bores.stl, summary.json, run.sqlite",
                out_dir, mold_path, out_dir);
+  // Which rule the best breaks, with the element and the number (a circuit's too: its flow, drop or rise).
+  const auto& broken = outcome.evaluation.violations;
+  for (std::size_t k = 0; k < broken.size() && k < kViolationsShown; ++k)
+    spdlog::warn("best layout: {}", eval::violation_text(broken[k]));
+  if (broken.size() > kViolationsShown)
+    spdlog::warn("best layout: {} more violations in summary.json", broken.size() - kViolationsShown);
   for (const std::string& w : front_warnings(optimizer, last)) spdlog::warn(w);
   return {out_dir, mold_path, stored.interrupted, last.index, last.evaluations, optimizer.budget()};
 }

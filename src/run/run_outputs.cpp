@@ -6,6 +6,8 @@
 #include <spdlog/spdlog.h>
 
 #include "mtcs/eval/cavity_temperature.h"
+#include "mtcs/eval/circuit_hydraulics.h"
+#include "mtcs/eval/evaluation_report.h"
 
 #include "mtcs/io/atomic_file.h"
 #include "mtcs/io/number_text.h"
@@ -52,6 +54,13 @@ mold::Layout write_run_outputs(const std::string& out_dir, const mold::Scene& sc
   for (std::size_t k = 0; k < names.size() && k < o.best.objectives.size(); ++k)
     summary["objectives"][names[k]] = o.best.objectives[k];
   summary["violation"] = o.best.violation;
+  summary["violations"] = nlohmann::ordered_json::array();
+  for (const eval::Violation& v : o.evaluation.violations)
+    summary["violations"].push_back({{"kind", eval::to_string(v.kind)}, {"elements", v.elements}, {"found", v.distance},
+                                     {"needed", v.margin}, {"text", eval::violation_text(v)}});
+  // Each circuit's flow, Reynolds number, drop, heat and rise (mtcs thermal --json's "coolant").
+  if (const eval::CoolantCircuits cc = eval::coolant_circuits(layout, scene.spec(), o.evaluation.bore_heat); cc.flowing)
+    summary["coolant"] = nlohmann::ordered_json::parse(eval::coolant_circuits_json_text(cc));
   if (optimizer.pareto()) {
     const auto front = opt::SmsEmoa::front(o.last);
     summary["algorithm"] = "sms-emoa";

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "run_mtcs.h"
+#include "support/bundled_variant.h"
 #include "support/paths.h"
 
 using namespace mtcs_test;
@@ -294,4 +295,36 @@ TEST_CASE("mtcs thermal: a part too big for the memory allowed is refused with t
   CHECK(refused.find("378 void panels") != std::string::npos);
   CHECK(refused.find("thermal.sample_spacing") != std::string::npos);
   CHECK(run_with_limit("1000") == 0);
+}
+
+TEST_CASE("mtcs optimize: summary.json gives each circuit's coolant and says which circuit breaks a shop limit",
+          "[cli][thermal][hydraulics]") {
+  // The plate with a coolant rise limit below what any of its layouts reaches at 8 l/min.
+  const std::string mold = bundled_variant("plate", "coolant: {temperature: 40, flow_rate: 8}",
+                                           "coolant: {temperature: 40, flow_rate: 8, max_rise: 0.05}");
+  const fs::path out = scratch("thermal", "run_rise"), log = scratch("thermal", "run_rise.log");
+  const fs::path scored = scratch("thermal", "run_rise_best.json");
+  fs::remove_all(out);
+  REQUIRE(run_mtcs("optimize " + mold + " --evaluations 60 --seed 3 --out " + out.string() + " >/dev/null", log) == 0);
+  const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
+  REQUIRE(summary.contains("coolant"));
+  REQUIRE_FALSE(summary["violations"].empty());
+  CHECK(summary["feasible"] == false);
+  // Each circuit's rise over the limit is a violation of that circuit, on the screen too.
+  for (const auto& c : summary["coolant"]["circuits"]) {
+    const std::string name = "c" + std::to_string(c["circuit"].get<int>());
+    bool listed = false;
+    for (const auto& v : summary["violations"])
+      listed = listed || (v["kind"] == "coolant_rise" && v["elements"][0] == name &&
+                          v["found"].get<double>() == Approx(c["rise"].get<double>()).epsilon(1e-9));
+    CHECK(listed);
+    CHECK_THAT(read_text(log), Catch::Contains("best layout: coolant_rise " + name + ": coolant rise"));
+  }
+  // The same numbers as mtcs evaluate gives the written best.
+  REQUIRE(run_mtcs("evaluate " + mold + " --layout " + (out / "best.layout.yaml").string() + " --json >" + scored.string()) == 0);
+  const auto best = nlohmann::json::parse(read_text(scored));
+  REQUIRE(best["coolant"]["circuits"].size() == summary["coolant"]["circuits"].size());
+  for (std::size_t k = 0; k < best["coolant"]["circuits"].size(); ++k)
+    CHECK(best["coolant"]["circuits"][k]["heat"].get<double>() ==
+          Approx(summary["coolant"]["circuits"][k]["heat"].get<double>()).epsilon(1e-12));
 }

@@ -113,7 +113,7 @@ TEST_CASE("cavity temperature: thermal.wall_images reaches the line sinks in the
     return thermal::LineSinkModel(setting, samples, options).temperatures(channels, cache);
   };
   const std::vector<double> one = by_hand(1), two = by_hand(2);
-  const std::vector<double> loop = eval::temperature_solver(spec.thermal.tier)(setting, samples, spec.thermal)(channels);
+  const std::vector<double> loop = eval::temperature_solver(spec.thermal.tier)(setting, samples, spec.thermal)(channels).temperature;
   const eval::CavityTemperature shown = eval::cavity_temperature(scene, layout, eval::thermal_query(spec));
   CHECK(loop == one);
   CHECK(shown.at_samples == one);

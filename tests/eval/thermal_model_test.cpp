@@ -312,7 +312,7 @@ TEST_CASE("temperature objectives: the pipeline asks the tier's solver and summa
     return eval::TemperatureSolver([&samples](const std::vector<thermal::Channel>& channels) {
       std::vector<double> t;
       for (const Vec3& p : samples.points) t.push_back(40 + 0.1 * p.x() + double(channels.size()));
-      return t;
+      return eval::SolvedTemperatures{t, {}};
     });
   };
   const eval::Pipeline pipeline(scene, factory);
@@ -344,7 +344,7 @@ TEST_CASE("temperature objectives: a layout solved before is not solved again, a
         h += ++k * (c.axis.p0.sum() + 3 * c.axis.p1.sum() + 5 * c.radius + 7 * c.coolant + 11 * std::min(c.film, 1e3));
       std::vector<double> t;
       for (const Vec3& p : samples.points) t.push_back(40 + 1e-3 * h * p.x());
-      return t;
+      return eval::SolvedTemperatures{t, {}};
     });
   };
   const eval::Pipeline pipeline(scene, factory);

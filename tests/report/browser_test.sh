@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # ctest: the report of a small run on the physics plate (generation 0: feasible and infeasible
 # layouts, violated clearances, points of the front that overlap) opened in headless chromium by
-# report_page.mjs; then the interference page of two meshes by interference_page.mjs.
+# report_page.mjs; the coolant of a short run on the bundled plate (--coolant); then the
+# interference page of two meshes by interference_page.mjs.
 # Exit 77 (ctest: skipped, with the reason printed) only when chromium is absent.
 # Usage: browser_test.sh MTCS_BINARY SOURCE_DIR WORK_DIR
 set -euo pipefail
@@ -15,6 +16,10 @@ mkdir -p "$work"
 "$mtcs" optimize "$src/molds/plate_wall_distance.yaml" --evaluations 400 --seed 3 --out "$work/run" --quiet
 "$mtcs" report "$work/run" --generation 0 --no-temperature --out "$work/report.html" --quiet
 node "$src/tests/report/report_page.mjs" "$work/report.html"
+# The bundled plate (a flow and temperature objectives): each circuit's heat, the bores by coolant temperature.
+"$mtcs" optimize "$src/molds/plate.yaml" --evaluations 60 --seed 3 --out "$work/run_coolant" --quiet
+"$mtcs" report "$work/run_coolant" --no-temperature --out "$work/report_coolant.html" --quiet
+node "$src/tests/report/report_page.mjs" "$work/report_coolant.html" --coolant
 # The interference page: homer against the gear at the certified overlap placement; the pair
 # count it must list is the certified one (tests/data/mesh_interference.csv).
 row=$(grep '^homer,mcad_herringbone_gear,' "$src/tests/data/mesh_interference.csv" | awk -F, '$6 > 0' | head -1)

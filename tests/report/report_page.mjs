@@ -11,7 +11,9 @@
 //     data gives;
 //   - the anytime panel (best objective and hypervolume against evaluations and wall time) is
 //     empty at load and draws its four curves, one vertex per stored generation, once opened.
-// Usage: node report_page.mjs REPORT.html [--screenshot PAGE.png] [--width W --height H]
+//   - the coolant table lists each circuit; with --coolant (a spec with a flow and a temperature
+//     objective) the bores can be drawn by their coolant's temperature, with its scale.
+// Usage: node report_page.mjs REPORT.html [--coolant] [--screenshot PAGE.png] [--width W --height H]
 // Exit 0: passed; 1: failed; 77: skipped (no chromium on this machine).
 import fs from 'node:fs';
 import path from 'node:path';
@@ -24,6 +26,7 @@ const option = (name, fallback) => { const i = args.indexOf(name); return i >= 0
 const reportPath = path.resolve(args[0] ?? '');
 const screenshot = option('--screenshot', null);
 const width = Number(option('--width', 1366)), height = Number(option('--height', 768));
+const expectCoolant = args.includes('--coolant');  // the report's spec has a flow and a temperature objective
 
 function findChromium() {
   for (const candidate of [process.env.MTCS_CHROMIUM, 'chromium', 'chromium-browser', 'google-chrome']) {
@@ -55,6 +58,12 @@ if (!fs.existsSync(reportPath)) {
 
 const failures = [];
 const check = (ok, what) => { console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`); if (!ok) failures.push(what); };
+
+const finish = async () => {
+  await browser.close();
+  console.log(failures.length ? `${failures.length} check(s) failed` : 'all checks passed');
+  process.exit(failures.length ? 1 : 0);
+};
 
 const browser = await puppeteer.launch({
   executablePath: chromium,
@@ -93,6 +102,29 @@ try {
       `static scene ${((timing.scene - timing.parsed) / 1000).toFixed(3)} s, layout, front and charts ${((timing.built - timing.scene) / 1000).toFixed(3)} s`);
   check(errors.length === 0, `no console errors${errors.length ? ': ' + errors.join(' | ') : ''}`);
   check(external.length === 0, `no network requests${external.length ? ': ' + external.join(' ') : ''}`);
+
+  // The coolant circuits: a row per circuit of the shown member (none without a flow in the spec);
+  // the bores by coolant temperature only where the solve's heat is known, then one per bore.
+  const coolantOf = () => page.evaluate(() => {
+    const r = window.mtcsReport;
+    const m = r.data.members.find((x) => x.rank === Number(document.body.dataset.shown));
+    const box = document.getElementById('layer-coolant');
+    return { rows: document.querySelectorAll('#coolant-table tbody tr').length, circuits: m.coolant ? m.coolant.circuits.length : 0,
+      bores: m.layout.bores.length, heat: !!(m.coolant && m.coolant.bores.length), disabled: box.disabled, drawn: r.coolantBores(),
+      caption: document.getElementById('coolant-caption').textContent, legend: document.getElementById('legend').textContent };
+  });
+  const coolant = await coolantOf();
+  console.log(`coolant ${coolant.caption}: ${coolant.rows} rows, ${coolant.circuits} circuits, heat ${coolant.heat}, layer ${coolant.disabled ? 'off' : 'on'}`);
+  check(coolant.rows === coolant.circuits, 'the coolant table has a row per circuit of the shown layout');
+  check(coolant.disabled === !coolant.heat, 'bores by coolant temperature offered exactly when the heat per bore is known');
+  if (expectCoolant) {
+    check(coolant.circuits > 0 && coolant.heat, 'a spec with a flow and a temperature objective: circuits with their heat');
+    await page.click('#layer-coolant');
+    const on = await coolantOf();
+    check(on.drawn === on.bores && /coolant [\d.]+.*°C/.test(on.legend), `the coolant layer draws every bore (${on.drawn}) and its scale in the legend`);
+    check(errors.length === 0, `no console errors after drawing the coolant${errors.length ? ': ' + errors.join(' | ') : ''}`);
+    await finish();  // the rest needs the physics plate's front and drilling maps
+  }
 
   // The canvas as a screenshot, decoded by the browser itself (no PNG library needed here).
   // The overlays on the view (title, legend, help) are hidden for it: only what WebGL drew counts

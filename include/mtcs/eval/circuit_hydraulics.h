@@ -55,6 +55,8 @@ double capacity_rate(double litres_per_minute, const WaterProperties& water);
 // Each circuit's flow (l/min): the spec's flow_rate, or the flow its supply pressure drives
 // through it; empty when the spec gives neither (a film or a wall at the coolant temperature).
 std::vector<double> circuit_flows(std::span<const CircuitPath> paths, const mold::MoldSpec& spec);
+// Each bore's flow (l/min, the layout's order): its circuit's; empty as circuit_flows is.
+std::vector<double> bore_flows(const mold::Layout& layout, const mold::MoldSpec& spec);
 
 struct CircuitHydraulics {
   int circuit = 0, bores = 0, turns = 0;
@@ -89,5 +91,23 @@ struct CoolantCircuits {
 // layout's order), from a solve; empty: heat and rise unknown (not checked).
 CoolantCircuits coolant_circuits(const mold::Layout& layout, const mold::MoldSpec& spec,
                                  std::span<const double> bore_heat = {});
+
+// Each bore's coolant where its flow starts and ends (degrees C, the layout's order): the inlet
+// temperature plus the heat taken upstream in its circuit over the circuit's rho Q c_p, as the
+// model warms it. Empty when the flow or the heat is not known.
+struct BoreCoolant {
+  double in = 0, out = 0;
+};
+std::vector<BoreCoolant> bore_coolant(const mold::Layout& layout, const mold::MoldSpec& spec,
+                                      std::span<const double> bore_heat);
+
+// The circuits as `mtcs thermal --json` gives them ("coolant": {flowing, from_supply,
+// total_flow, circuits, checks}, SI units), one JSON object as text.
+std::string coolant_circuits_json_text(const CoolantCircuits& circuits);
+
+// The rise check alone, for a caller that has each bore's flow and heat (the temperature stage,
+// after every solve): the circuits whose coolant warms by more than thermal.coolant.max_rise.
+std::vector<ShopCheck> rise_checks(const mold::Layout& layout, const mold::MoldSpec& spec,
+                                   std::span<const double> bore_flow, std::span<const double> bore_heat);
 
 }  // namespace mtcs::eval

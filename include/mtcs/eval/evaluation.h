@@ -29,14 +29,19 @@ enum class ViolationKind {
                       // coolant and air, T_p] (or not a number): a defect of the model, the
                       // layout refused rather than scored; only on a layout meeting every
                       // geometric rule
+  CoolantReynolds,    // a circuit's Reynolds number below thermal.coolant.min_reynolds
+  CoolantPressure,    // a circuit's pressure drop above thermal.coolant.supply_pressure
+  CoolantRise,        // a circuit's coolant warming by more than thermal.coolant.max_rise
+                      // (needs the solve's heat: a thermal verdict)
 };
-// The two thermal verdicts (eject, temperature_bounds), from the temperature stage; the second
-// counts only on a layout that meets every geometric rule (a bore through the part has no
-// meaningful temperature).
+// The thermal verdicts (eject, temperature_bounds, coolant_rise), from the temperature stage;
+// temperature_bounds counts only on a layout that meets every geometric rule (a bore through the
+// part has no meaningful temperature).
 bool is_thermal_verdict(ViolationKind kind);
 
 // bore_bore, bore_keepout, bore_cavity, bore_surface, depth_ratio, entry_face, entry_angle,
-// inlet_face, outlet_face, drillable, eject, temperature_bounds.
+// inlet_face, outlet_face, drillable, eject, temperature_bounds, coolant_reynolds,
+// coolant_pressure, coolant_rise.
 const char* to_string(ViolationKind kind);
 
 struct Violation {
@@ -61,6 +66,8 @@ struct Evaluation {
   std::vector<Violation> violations;
   double violation = 0;            // CV = sum of amount^power
   std::vector<StageTime> stages;   // filled when timing was asked for
+  std::vector<double> bore_heat;   // W into each bore's coolant (the layout's order), when a
+                                   // temperature stage solved and its tier says
 
   bool feasible() const { return violations.empty(); }
 };

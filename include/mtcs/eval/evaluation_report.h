@@ -6,6 +6,7 @@
 // 1: the objective `mtcs optimize` prints for its best under the default run config.
 
 #include <ostream>
+#include <string>
 
 #include "mtcs/eval/evaluation.h"
 #include "mtcs/eval/pipeline.h"
@@ -13,6 +14,10 @@
 #include "mtcs/mold/layout_io.h"
 
 namespace mtcs::eval {
+
+// One violation in words, as the text lists it: "coolant_rise c2: coolant rise 3.41 K, at most
+// 3.00 K (thermal.coolant.max_rise)" (without the place).
+std::string violation_text(const Violation& v);
 
 // `changes`: what reading the layout changed (mold::read_layout), listed first in the text and as
 // "changes" [{circuit, waypoint, what}] in the JSON.

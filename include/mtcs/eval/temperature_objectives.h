@@ -11,9 +11,16 @@
 
 namespace mtcs::eval {
 
-// Temperatures (degrees C) at the samples for one layout's channels. Called from several
-// threads at once: it must not change shared state.
-using TemperatureSolver = std::function<std::vector<double>(const std::vector<thermal::Channel>& channels)>;
+// What a tier returns for one layout: the temperatures at the samples and the heat each channel
+// carries away (the coolant's rise and the circuits' shop checks need it).
+struct SolvedTemperatures {
+  std::vector<double> temperature;   // degrees C at the samples (and any points after them)
+  std::vector<double> channel_heat;  // W into each channel's coolant, in the channels' order;
+                                     // empty when the solver does not say
+};
+// One layout's channels solved. Called from several threads at once: it must not change shared
+// state.
+using TemperatureSolver = std::function<SolvedTemperatures(const std::vector<thermal::Channel>& channels)>;
 // Builds a scene's solver once, from what does not depend on the layout (precompute there).
 // The setting and samples outlive the solver, which may keep references to them.
 using TemperatureSolverFactory =

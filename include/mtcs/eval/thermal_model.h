@@ -4,6 +4,7 @@
 // void) once per scene, the channels (the flowed part of each bore) per layout, and the cavity
 // samples where temperatures are wanted. Units: mm, W, degrees C.
 
+#include <span>
 #include <vector>
 
 #include "mtcs/mold/layout.h"
@@ -31,6 +32,9 @@ thermal::Setting thermal_setting(const mold::Scene& scene, const mold::MoldSpec&
 // point), at the coolant temperature, with the Dirichlet limit, the spec's film, or the film
 // of the spec's flow rate through that bore's diameter (Gnielinski).
 std::vector<thermal::Channel> thermal_channels(const mold::Layout& layout, const mold::MoldSpec& spec);
+// The same with each bore's flow (bore_flows(layout, spec)) already known.
+std::vector<thermal::Channel> thermal_channels(const mold::Layout& layout, const mold::MoldSpec& spec,
+                                               std::span<const double> bore_flow);
 
 // The fixed heat flux (W/mm^2) into the steel at a point of the cavity surface: that of the
 // last region holding the point, else thermal.heat_flux (or the default) under the flux model,

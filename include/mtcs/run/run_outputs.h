@@ -1,11 +1,13 @@
 #pragma once
 // What `mtcs optimize` leaves beside run.sqlite: best.layout.yaml (editable, re-scorable),
-// bores.csv, holes.csv (the shop's hole table), bores.stl, summary.json, and for SMS-EMOA front.csv.
+// bores.csv, holes.csv (the shop's hole table), bores.stl, summary.json (with the best layout's
+// violations and, with a coolant flow, each circuit's hydraulics and heat), and for SMS-EMOA front.csv.
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "mtcs/eval/evaluation.h"
 #include "mtcs/mold/layout.h"
 #include "mtcs/run/mold_run.h"
 #include "mtcs/run/polish.h"
@@ -23,6 +25,7 @@ struct RunOutcome {
   double before_polish = 0;          // the objective it started from
   bool interrupted = false;          // stopped before the budget (Ctrl-C): best so far
   double tolerance = kCoordinateTolerance;  // mm, of the written coordinates (genome: already rounded)
+  eval::Evaluation evaluation;  // the best layout's as mtcs evaluate scores it: its violations, each bore's heat
 };
 
 // What a designer must hear about a Pareto front: hypervolume 0 (every point outside the

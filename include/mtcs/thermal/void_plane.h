@@ -29,6 +29,13 @@ struct CavityCut {
   // The channels with their parts beyond the plane mirrored across it (one crossing the plane
   // is split there).
   std::vector<Channel> fold(std::span<const Channel> channels) const;
+  // Each channel's heat from that of its folded parts (`folded_heat` in fold's order): a split
+  // channel's two parts summed.
+  std::vector<double> unfold_heat(std::span<const Channel> channels, std::span<const double> folded_heat) const;
+
+ private:
+  bool splits(const Channel& channel) const;  // crosses the plane: fold makes two parts of it
+  double beyond(const Vec3& p) const;         // signed height past the plane (> 0: the side cut off)
 };
 
 // The setting with the block cut at the box cavity's most heated face (above). No cut when

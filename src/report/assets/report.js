@@ -239,6 +239,7 @@ const boreLayer = addLayer('bores', 'bores');
 const portLayer = addLayer('ports', 'inlets / outlets');
 const clashLayer = addLayer('clearances', 'violated clearances');
 const temperatureLayer = addLayer('temperature', 'cavity temperature', !!data.temperature);
+const coolantLayer = addLayer('coolant', 'bores by coolant temperature', false);
 
 // Block: transparent faces and its edges.
 {
@@ -291,7 +292,7 @@ if (data.temperature) {
 
 // The layout shown: bores, ports, violated clearances.
 function showLayout(member) {
-  for (const g of [boreLayer, portLayer, clashLayer]) dispose(g);
+  for (const g of [boreLayer, portLayer, clashLayer, coolantLayer]) dispose(g);
   const layout = member.layout;
   const mats = new Map();
   const boreMaterial = (c) => {
@@ -324,11 +325,32 @@ function showLayout(member) {
       parts.push(label(`${v.elements.join('\u2013')} ${fmt(v.distance)} < ${fmt(v.margin)} mm`, v3(a).add(v3(b)).multiplyScalar(0.5).add(new THREE.Vector3(0, 0, -markSize * 1.2)).toArray(), markSize * 0.9, '#b71c1c'));
     for (const p of parts) { p.renderOrder = 20; clashLayer.add(p); }
   }
+  // Each bore coloured by its coolant's mean temperature along it (the warming from inlet to
+  // outlet, as the model has it), over the plain bores.
+  const coolant = coolantRange(member);
+  if (coolant) {
+    for (const b of layout.bores) {
+      const c = coolant.byName.get(b.name);
+      if (!c) continue;
+      const t = ((c.in + c.out) / 2 - coolant.lo) / (coolant.hi - coolant.lo);
+      coolantLayer.add(cylinder(b.flow[0], b.flow[1], b.diameter / 2 * 1.06, material({ color: new THREE.Color(...rampColor(t)) })));
+    }
+  }
+  setLayerAvailable('coolant', !!coolant, member.coolant ? 'the heat per bore needs a temperature objective'
+    : 'no coolant flow in the spec (thermal.coolant.flow_rate or supply_pressure)');
   const temperatureHere = data.temperature && data.temperature.member === member.rank;
   setLayerAvailable('temperature', !!temperatureHere,
     data.temperature ? `the temperature is of member ${data.temperature.member} only` : 'no temperature in this report');
   drawLegend(member);
   render();
+}
+
+// The coolant's span over a member's bores (inlet to the warmest outlet), or null without one.
+function coolantRange(member) {
+  const bores = member.coolant && member.coolant.bores;
+  if (!bores || !bores.length) return null;
+  const lo = Math.min(...bores.map((b) => b.in)), hi = Math.max(...bores.map((b) => b.out));
+  return { lo, hi: Math.max(hi, lo + 1e-9), byName: new Map(bores.map((b) => [b.name, b])) };
 }
 
 function drawLegend(member) {
@@ -344,11 +366,16 @@ function drawLegend(member) {
   if (member.violations.some((v) => v.closest))
     legend.append(el('div', { class: 'row' }, [el('span', { class: 'ramp', style: 'background:linear-gradient(to right,hsl(54,95%,50%),hsl(0,95%,50%))' }),
       'clearance shortfall 0\u2013100 %']));
+  const coolant = coolantRange(member);
+  if (coolant && layers.coolant.group.visible)
+    legend.append(el('div', { class: 'row' }, [`coolant ${fmt(coolant.lo)}`, el('span', { class: 'ramp', style: `background:${rampCss()}` }),
+      `${fmt(coolant.hi)} °C`]));
   if (data.temperature && data.temperature.member === member.rank && layers.temperature.group.visible)
     legend.append(el('div', { class: 'row' }, [`${fmt(temperatureMin)}`, el('span', { class: 'ramp', style: `background:${rampCss()}` }),
       `${fmt(temperatureMax)} \u00b0C (tier ${data.temperature.tier})`]));
 }
 layers.temperature.box.addEventListener('change', () => drawLegend(data.members[shown]));
+layers.coolant.box.addEventListener('change', () => drawLegend(data.members[shown]));
 
 // Camera, render on demand, resize.
 function resetView() {
@@ -433,6 +460,21 @@ function showTables(member) {
     member.violations.map((v) => el('tr', { class: 'bad' }, [el('td', { text: v.kind.replace(/_/g, ' ') }), el('td', { text: v.elements.join(' \u2013 ') }),
       el('td', { class: 'num', text: fmt(v.distance) }), el('td', { class: 'num', text: fmt(v.margin) }),
       el('td', { class: 'num', text: `${fmt(100 * v.amount)} %` })])));
+  // Each circuit's coolant as a shop checks it (the rows that break a shop limit marked).
+  const cc = member.coolant;
+  $('coolant-caption').textContent = cc ? `(${fmt(cc.total_flow)} l/min in all${cc.from_supply ? ', from the supply pressure' : ''})` : '(no flow in the spec)';
+  const failing = new Set((cc ? cc.checks : []).map((c) => c.circuit));
+  fillTable($('coolant-table'), [['circuit'], ['l/min', 'num'], ['m/s', 'num'], ['Reynolds', 'num'], ['drop bar', 'num'],
+    ['heat W', 'num'], ['share', 'num'], ['out °C', 'num'], ['rise K', 'num']],
+    (cc ? cc.circuits : []).map((c) => el('tr', failing.has(c.circuit) ? { class: 'bad' } : {}, [
+      el('td', {}, [el('span', { class: 'dot', style: `background:${circuitColor(c.circuit)}` }), `c${c.circuit}`]),
+      el('td', { class: 'num', text: fmt(c.flow) }), el('td', { class: 'num', text: fmt(c.velocity) }),
+      el('td', { class: 'num', text: Math.round(c.reynolds).toLocaleString('en') }),
+      el('td', { class: 'num', text: fmt(c.pressure_drop.total / 1e5) }),
+      el('td', { class: 'num', text: c.heat === undefined ? '–' : fmt(c.heat) }),
+      el('td', { class: 'num', text: c.heat_share === undefined ? '–' : `${fmt(100 * c.heat_share)} %` }),
+      el('td', { class: 'num', text: c.coolant_out === undefined ? '–' : fmt(c.coolant_out, 4) }),
+      el('td', { class: 'num', text: c.rise === undefined ? '–' : fmt(c.rise) })])));
   fillTable($('bores-table'), [['bore'], ['\u2300 mm', 'num'], ['length mm', 'num'], ['entry'], ['']],
     layout.bores.map((b) => el('tr', {}, [el('td', {}, [el('span', { class: 'dot', style: `background:${circuitColor(b.circuit)}` }), b.name]),
       el('td', { class: 'num', text: fmt(b.diameter) }), el('td', { class: 'num', text: fmt(b.length) }),
@@ -796,6 +838,7 @@ performance.mark('mtcs-built');  // the page and the scene are built; the first 
 render();
 dispose(warmUp);
 // For tests and scripts: the page is drawn.
-window.mtcsReport = { select, frames: () => frames, programs: () => (renderer ? renderer.info.programs.length : 0), data };
+window.mtcsReport = { select, frames: () => frames, programs: () => (renderer ? renderer.info.programs.length : 0), data,
+  coolantBores: () => coolantLayer.children.length };
 performance.mark('mtcs-drawn');
 document.body.dataset.ready = '1';

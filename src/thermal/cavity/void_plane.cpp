@@ -53,23 +53,29 @@ CavityCut cut_at_cavity_void(const Setting& setting) {
   return {out, k, side == 0 ? cavity.min[k] : cavity.max[k], side == 0};
 }
 
+double CavityCut::beyond(const Vec3& p) const { return keep_below ? p[axis] - plane : plane - p[axis]; }
+
+bool CavityCut::splits(const Channel& ch) const {
+  if (axis < 0) return false;
+  const double h0 = beyond(ch.axis.p0), h1 = beyond(ch.axis.p1);
+  return (h0 > 0) != (h1 > 0) && h0 != 0 && h1 != 0;
+}
+
 std::vector<Channel> CavityCut::fold(std::span<const Channel> channels) const {
   std::vector<Channel> out;
   if (axis < 0) return {channels.begin(), channels.end()};
-  // Signed height beyond the plane (> 0: beyond, the side cut off).
-  auto beyond = [&](const Vec3& p) { return keep_below ? p[axis] - plane : plane - p[axis]; };
   auto mirror = [&](Vec3 p) {
     if (beyond(p) > 0) p[axis] = 2 * plane - p[axis];
     return p;
   };
   for (const Channel& ch : channels) {
-    const double h0 = beyond(ch.axis.p0), h1 = beyond(ch.axis.p1);
-    if ((h0 > 0) == (h1 > 0) || h0 == 0 || h1 == 0) {
+    if (!splits(ch)) {
       Channel c = ch;
       c.axis = {mirror(ch.axis.p0), mirror(ch.axis.p1)};
       out.push_back(c);
       continue;
     }
+    const double h0 = beyond(ch.axis.p0), h1 = beyond(ch.axis.p1);
     const Vec3 x = ch.axis.p0 + (h0 / (h0 - h1)) * (ch.axis.p1 - ch.axis.p0);
     Channel a = ch, b = ch;
     a.axis = {mirror(ch.axis.p0), x};
@@ -78,6 +84,16 @@ std::vector<Channel> CavityCut::fold(std::span<const Channel> channels) const {
     out.push_back(a), out.push_back(b);
   }
   return out;
+}
+
+std::vector<double> CavityCut::unfold_heat(std::span<const Channel> channels, std::span<const double> folded_heat) const {
+  std::vector<double> heat(channels.size(), 0.0);
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < channels.size() && k < folded_heat.size(); ++i) {
+    heat[i] = folded_heat[k++];
+    if (splits(channels[i]) && k < folded_heat.size()) heat[i] += folded_heat[k++];
+  }
+  return heat;
 }
 
 }  // namespace mtcs::thermal
