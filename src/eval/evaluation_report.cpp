@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "circuit_hydraulics_report.h"
+#include "mtcs/eval/design_rules.h"
 #include "mtcs/eval/drill_access.h"
 
 namespace mtcs::eval {
@@ -99,6 +100,7 @@ void write_evaluation_json(std::ostream& out, const Evaluation& e, const Pipelin
   }
   if (const CoolantCircuits cc = coolant_circuits(layout, spec, e.bore_heat); cc.flowing)
     j["coolant"] = coolant_circuits_json(cc);
+  j["design_rules"] = nlohmann::ordered_json::parse(design_rules_json_text(design_rules(pipeline.scene(), layout)));
   j["stages"] = nlohmann::ordered_json::array();
   for (const auto& s : e.stages) j["stages"].push_back({{"name", s.name}, {"seconds", s.seconds}});
   j["changes"] = nlohmann::ordered_json::array();
@@ -142,6 +144,7 @@ void write_evaluation_text(std::ostream& out, const Evaluation& e, const Pipelin
   if (const CoolantCircuits cc = coolant_circuits(layout, spec, e.bore_heat); cc.flowing)
     out << "\n" << coolant_circuits_text(cc)
         << (e.bore_heat.empty() ? "  (heat and coolant rise: mtcs thermal)\n" : "");
+  out << "\n" << design_rules_text(design_rules(pipeline.scene(), layout));
   out << "\nstages (microseconds)\n";
   for (const auto& s : e.stages) out << "  " << std::setw(24) << s.name << s.seconds * 1e6 << "\n";
 }

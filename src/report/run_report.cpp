@@ -3,7 +3,8 @@
 //   objectives [{name, unit, scale}]
 //   scene (scene_json.h), generation, shown (the member loaded first)
 //   members [{rank, objectives, value, feasible, violation, front, layout (layout_json.h),
-//             violations, coolant (layout_json.h: per circuit, each bore's coolant in/out)}]
+//             violations, coolant (layout_json.h: per circuit, each bore's coolant in/out),
+//             design_rules (eval/design_rules.h: each bore's depth and pitch in diameters)}]
 //   convergence (convergence.h)
 //   anytime {generation, evaluations, seconds, best_feasible, best_so_far, hypervolume,
 //            hypervolume_so_far, ref} (convergence.h; replay's anytime.csv)
@@ -26,6 +27,7 @@
 #include "base64.h"
 #include "mtcs/report/drilling_maps.h"
 #include "mtcs/eval/cavity_temperature.h"
+#include "mtcs/eval/design_rules.h"
 #include "mtcs/io/input_error.h"
 #include "mtcs/opt/sms_emoa.h"
 #include "mtcs/report/html_page.h"
@@ -160,7 +162,8 @@ RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
                                {"front", on_front},
                                {"layout", layout_json(shop[r].plan)},
                                {"violations", violations_json(e.violations)},
-                               {"coolant", coolant_json(shop[r].layout, session.spec(), e.bore_heat)}});
+                               {"coolant", coolant_json(shop[r].layout, session.spec(), e.bore_heat)},
+                               {"design_rules", Json::parse(eval::design_rules_json_text(eval::design_rules(scene, shop[r].layout)))}});
     if (int(r) == report.member) shown = shop[r].layout;
   }
   report.members = population.size();

@@ -475,9 +475,14 @@ function showTables(member) {
       el('td', { class: 'num', text: c.heat_share === undefined ? '–' : `${fmt(100 * c.heat_share)} %` }),
       el('td', { class: 'num', text: c.coolant_out === undefined ? '–' : fmt(c.coolant_out, 4) }),
       el('td', { class: 'num', text: c.rise === undefined ? '–' : fmt(c.rise) })])));
-  fillTable($('bores-table'), [['bore'], ['\u2300 mm', 'num'], ['length mm', 'num'], ['entry'], ['']],
+  // The design rules in bore diameters, out of range marked (depth 1.5-2.5 D, pitch 3-5 D).
+  const rules = new Map(((member.design_rules || {}).bores || []).map((r) => [r.bore, r]));
+  const inD = (v, verdict) => el('td', { class: verdict ? 'num bad' : 'num', title: verdict ? `${verdict} (outside the rule of thumb)` : '',
+    text: v === null || v === undefined ? '\u2013' : fmt(v, 2) });
+  fillTable($('bores-table'), [['bore'], ['\u2300 mm', 'num'], ['length mm', 'num'], ['depth D', 'num'], ['pitch D', 'num'], ['entry'], ['']],
     layout.bores.map((b) => el('tr', {}, [el('td', {}, [el('span', { class: 'dot', style: `background:${circuitColor(b.circuit)}` }), b.name]),
       el('td', { class: 'num', text: fmt(b.diameter) }), el('td', { class: 'num', text: fmt(b.length) }),
+      inD(rules.get(b.name)?.depth_d, rules.get(b.name)?.depth_verdict), inD(rules.get(b.name)?.pitch_d, rules.get(b.name)?.pitch_verdict),
       el('td', { text: b.entry_face + (b.entry_angle ? ` ${fmt(b.entry_angle)}\u00b0` : '') }),
       el('td', { text: [b.plugged ? 'plugged' : '', b.through ? 'through' : '', b.dead_end > 0 ? `dead end ${fmt(b.dead_end)} mm` : ''].filter(Boolean).join(', ') })])));
 }
