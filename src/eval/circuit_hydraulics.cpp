@@ -110,13 +110,45 @@ double capacity_rate(double litres_per_minute, const WaterProperties& water) {
   return water.density * litres_per_minute * kLitresPerMinute * water.specific_heat;
 }
 
+double pump_pressure(std::span<const std::pair<double, double>> pump, double litres_per_minute) {
+  if (pump.empty()) return 0;
+  if (litres_per_minute <= pump.front().first) return pump.front().second;
+  for (std::size_t i = 1; i < pump.size(); ++i)
+    if (litres_per_minute <= pump[i].first) {
+      const auto& [q0, p0] = pump[i - 1];
+      const auto& [q1, p1] = pump[i];
+      return p0 + (p1 - p0) * (litres_per_minute - q0) / (q1 - q0);
+    }
+  return pump.back().second;
+}
+
+double pump_operating_pressure(std::span<const CircuitPath> paths, std::span<const std::pair<double, double>> pump,
+                               const WaterProperties& water, double roughness_mm) {
+  // The pump's pressure at the flow a pressure p drives through all circuits, less p: falling in
+  // p (more pressure, more flow, less from the pump). Positive near 0, at most 0 at the pump's
+  // highest pressure.
+  const auto excess = [&](double p) {
+    double total = 0;
+    for (const CircuitPath& path : paths) total += flow_at_pressure(path, p, water, roughness_mm);
+    return pump_pressure(pump, total) - p;
+  };
+  const double hi = pump.front().second, lo = hi * 1e-9;
+  if (paths.empty() || excess(hi) >= 0) return hi;
+  boost::uintmax_t iterations = 200;
+  const auto [a, b] =
+      boost::math::tools::toms748_solve(excess, lo, hi, boost::math::tools::eps_tolerance<double>(40), iterations);
+  return (a + b) / 2;
+}
+
 std::vector<double> circuit_flows(std::span<const CircuitPath> paths, const mold::MoldSpec& spec) {
   const mold::ThermalSpec& t = spec.thermal;
   std::vector<double> flows;
-  if (t.flow_rate) flows.assign(paths.size(), *t.flow_rate);
-  else if (t.supply_pressure) {
+  if (t.flow_rate) {
+    flows.assign(paths.size(), *t.flow_rate);
+  } else if (t.supply_pressure || !t.pump.empty()) {
     const WaterProperties water = water_properties(t.coolant_temperature);
-    for (const CircuitPath& p : paths) flows.push_back(flow_at_pressure(p, *t.supply_pressure, water, t.roughness));
+    const double p = t.supply_pressure ? *t.supply_pressure : pump_operating_pressure(paths, t.pump, water, t.roughness);
+    for (const CircuitPath& path : paths) flows.push_back(flow_at_pressure(path, p, water, t.roughness));
   }
   return flows;
 }
@@ -124,7 +156,7 @@ std::vector<double> circuit_flows(std::span<const CircuitPath> paths, const mold
 std::vector<double> bore_flows(const mold::Layout& layout, const mold::MoldSpec& spec) {
   const mold::ThermalSpec& t = spec.thermal;
   if (t.flow_rate) return std::vector<double>(layout.bores.size(), *t.flow_rate);
-  if (!t.supply_pressure) return {};
+  if (!t.flowing()) return {};
   std::vector<double> flow(layout.bores.size(), 0.0);
   const std::vector<CircuitPath> paths = circuit_paths(layout);
   const std::vector<double> flows = circuit_flows(paths, spec);
@@ -142,11 +174,34 @@ std::string ShopCheck::text() const {
   else if (what == "rise")
     s << std::fixed << std::setprecision(2) << "coolant rise " << found << " K, over " << limit
       << " K (thermal.coolant.max_rise): the outlet's end of the circuit cools less";
+  else if (what == "balance")
+    s << std::fixed << std::setprecision(2) << "heat " << found << " times the circuits' mean, beyond " << limit
+      << " (thermal.coolant.balance): the circuits cool unevenly";
   else
     s << std::fixed << std::setprecision(3) << "pressure drop " << found / 1e5 << " bar, over the supply's " << limit / 1e5
       << " bar (thermal.coolant.supply_pressure): the circuit cannot take its flow";
   return s.str();
 }
+
+namespace {
+
+// The checks of each circuit's heat (W) and rise (K), one entry per circuit: over max_rise, and
+// out of the balance band around the circuits' mean heat (two circuits or more).
+void check_heat(std::span<const int> circuit, std::span<const double> heat, std::span<const double> rise,
+                const mold::ThermalSpec& t, std::vector<ShopCheck>& out) {
+  double all = 0;
+  for (double q : heat) all += q;
+  const double mean = heat.empty() ? 0 : all / double(heat.size());
+  for (std::size_t k = 0; k < circuit.size(); ++k) {
+    if (rise[k] > t.max_rise) out.push_back({circuit[k], "rise", rise[k], t.max_rise});
+    if (!t.balance || heat.size() < 2 || !(mean > 0)) continue;
+    const double ratio = heat[k] / mean;
+    if (ratio > 1 + *t.balance) out.push_back({circuit[k], "balance", ratio, 1 + *t.balance});
+    else if (ratio < 1 - *t.balance) out.push_back({circuit[k], "balance", ratio, 1 - *t.balance});
+  }
+}
+
+}  // namespace
 
 CoolantCircuits coolant_circuits(const mold::Layout& layout, const mold::MoldSpec& spec, std::span<const double> bore_heat) {
   const mold::ThermalSpec& t = spec.thermal;
@@ -154,9 +209,12 @@ CoolantCircuits coolant_circuits(const mold::Layout& layout, const mold::MoldSpe
   const std::vector<CircuitPath> paths = circuit_paths(layout);
   const std::vector<double> flows = circuit_flows(paths, spec);
   out.flowing = !flows.empty();
-  out.from_supply = !t.flow_rate && t.supply_pressure;
+  out.from_supply = !t.flow_rate && (t.supply_pressure || !t.pump.empty());
+  out.from_pump = !t.flow_rate && !t.pump.empty();
   if (!out.flowing) return out;
   const WaterProperties water = water_properties(t.coolant_temperature);
+  if (out.from_supply)
+    out.supply = t.supply_pressure ? *t.supply_pressure : pump_operating_pressure(paths, t.pump, water, t.roughness);
   const bool heat_known = bore_heat.size() == layout.bores.size();
   double all_heat = 0;
   for (std::size_t k = 0; k < paths.size(); ++k) {
@@ -182,14 +240,17 @@ CoolantCircuits coolant_circuits(const mold::Layout& layout, const mold::MoldSpe
     out.total_flow += c.flow;
     out.circuits.push_back(c);
   }
+  std::vector<int> ids;
+  std::vector<double> heats, rises;
   for (CircuitHydraulics& c : out.circuits) {
     if (heat_known && all_heat != 0) c.heat_share = c.heat / all_heat;
     if (c.drop.reynolds < t.min_reynolds) out.checks.push_back({c.circuit, "reynolds", c.drop.reynolds, t.min_reynolds});
-    if (heat_known && c.rise > t.max_rise) out.checks.push_back({c.circuit, "rise", c.rise, t.max_rise});
     // With a supply and a given flow the supply is a limit; alone it sets the flow (the drop is it).
     if (t.supply_pressure && t.flow_rate && c.drop.total() > *t.supply_pressure)
       out.checks.push_back({c.circuit, "pressure", c.drop.total(), *t.supply_pressure});
+    ids.push_back(c.circuit), heats.push_back(c.heat), rises.push_back(c.rise);
   }
+  if (heat_known) check_heat(ids, heats, rises, t, out.checks);
   return out;
 }
 
@@ -213,7 +274,7 @@ std::vector<BoreCoolant> bore_coolant(const mold::Layout& layout, const mold::Mo
   return out;
 }
 
-std::vector<ShopCheck> rise_checks(const mold::Layout& layout, const mold::MoldSpec& spec,
+std::vector<ShopCheck> heat_checks(const mold::Layout& layout, const mold::MoldSpec& spec,
                                    std::span<const double> bore_flow, std::span<const double> bore_heat) {
   const std::size_t n = layout.bores.size();
   if (bore_flow.size() != n || bore_heat.size() != n) return {};
@@ -225,10 +286,12 @@ std::vector<ShopCheck> rise_checks(const mold::Layout& layout, const mold::MoldS
     heat += bore_heat[i];
     capacity = capacity_rate(bore_flow[i], water);
   }
-  std::vector<ShopCheck> out;
+  std::vector<int> ids;
+  std::vector<double> heats, rises;
   for (const auto& [circuit, hc] : heat_and_capacity)
-    if (hc.second > 0 && hc.first / hc.second > spec.thermal.max_rise)
-      out.push_back({circuit, "rise", hc.first / hc.second, spec.thermal.max_rise});
+    ids.push_back(circuit), heats.push_back(hc.first), rises.push_back(hc.second > 0 ? hc.first / hc.second : 0.0);
+  std::vector<ShopCheck> out;
+  check_heat(ids, heats, rises, spec.thermal, out);
   return out;
 }
 

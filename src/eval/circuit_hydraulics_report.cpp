@@ -9,8 +9,11 @@ namespace mtcs::eval {
 std::string coolant_circuits_text(const CoolantCircuits& cc) {
   if (!cc.flowing) return "";
   std::ostringstream s;
-  s << "coolant circuits (water " << (cc.from_supply ? "driven by the supply pressure" : "at the spec's flow rate")
-    << ", total " << std::fixed << std::setprecision(2) << cc.total_flow << " l/min)\n"
+  s << "coolant circuits (water " << std::fixed << std::setprecision(2);
+  if (cc.from_pump) s << "from the pump at its operating point, " << cc.supply / 1e5 << " bar";
+  else if (cc.from_supply) s << "driven by the supply pressure, " << cc.supply / 1e5 << " bar";
+  else s << "at the spec's flow rate";
+  s << ", total " << cc.total_flow << " l/min)\n"
     << "  circuit bores turns  d mm  length mm   l/min   m/s  Reynolds regime        drop bar  heat W  share  out degC  rise K  film W/(m^2 K)\n";
   for (const CircuitHydraulics& c : cc.circuits) {
     s << "  " << std::setw(7) << c.circuit << std::setw(6) << c.bores << std::setw(6) << c.turns << std::setprecision(1)
@@ -25,13 +28,15 @@ std::string coolant_circuits_text(const CoolantCircuits& cc) {
       s << std::setw(8) << "-" << std::setw(7) << "-" << std::setw(10) << "-" << std::setw(8) << "-";
     s << std::setprecision(0) << std::setw(16) << c.film << "\n";
   }
-  if (cc.checks.empty()) s << "  shop checks passed (Reynolds, coolant rise, pressure drop)\n";
+  if (cc.checks.empty()) s << "  shop checks passed (Reynolds, coolant rise, pressure drop, balance)\n";
   for (const ShopCheck& c : cc.checks) s << "  shop check: " << c.text() << "\n";
   return s.str();
 }
 
 nlohmann::ordered_json coolant_circuits_json(const CoolantCircuits& cc) {
-  nlohmann::ordered_json j{{"flowing", cc.flowing}, {"from_supply", cc.from_supply}, {"total_flow", cc.total_flow}};
+  nlohmann::ordered_json j{{"flowing", cc.flowing}, {"from_supply", cc.from_supply}, {"from_pump", cc.from_pump},
+                           {"total_flow", cc.total_flow}};
+  if (cc.from_supply) j["supply_pressure"] = cc.supply;  // Pa
   j["circuits"] = nlohmann::ordered_json::array();
   for (const CircuitHydraulics& c : cc.circuits) {
     nlohmann::ordered_json row{{"circuit", c.circuit},

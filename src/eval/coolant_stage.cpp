@@ -1,6 +1,6 @@
 // The shop's limits on each circuit's coolant (issue 42, docs/coolant-circuits.md) as
 // constraints: a Reynolds number below thermal.coolant.min_reynolds, a pressure drop above the
-// supply. The coolant rise needs the solve's heat: the temperature stage checks it.
+// supply. The coolant rise and the balance need the solve's heat: the temperature stage checks them.
 
 #include <algorithm>
 
@@ -22,6 +22,7 @@ void add_shop_checks(Evaluation& out, std::span<const ShopCheck> checks, const m
     }
     const ViolationKind kind = rise                    ? ViolationKind::CoolantRise
                                : c.what == "reynolds" ? ViolationKind::CoolantReynolds
+                               : c.what == "balance"  ? ViolationKind::CoolantBalance
                                                       : ViolationKind::CoolantPressure;
     const double shortfall = std::abs(c.found - c.limit) / std::max(std::abs(c.limit), 1e-300);
     out.violations.push_back({kind, {"c" + std::to_string(c.circuit)}, c.found, c.limit, shortfall, where, {}});

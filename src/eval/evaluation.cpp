@@ -21,12 +21,14 @@ const char* to_string(ViolationKind kind) {
     case ViolationKind::CoolantReynolds: return "coolant_reynolds";
     case ViolationKind::CoolantPressure: return "coolant_pressure";
     case ViolationKind::CoolantRise: return "coolant_rise";
+    case ViolationKind::CoolantBalance: return "coolant_balance";
   }
   return "unknown";
 }
 
 bool is_thermal_verdict(ViolationKind kind) {
-  return kind == ViolationKind::Eject || kind == ViolationKind::TemperatureBounds || kind == ViolationKind::CoolantRise;
+  return kind == ViolationKind::Eject || kind == ViolationKind::TemperatureBounds || kind == ViolationKind::CoolantRise ||
+         kind == ViolationKind::CoolantBalance;
 }
 
 double scalar_fitness(const Evaluation& e, const mold::MoldSpec& spec, const std::vector<double>& weights) {

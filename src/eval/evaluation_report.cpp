@@ -45,6 +45,10 @@ std::string found_and_needed(const Violation& v) {
       s << std::fixed << std::setprecision(3) << "pressure drop " << v.distance / 1e5 << " bar, the supply gives "
         << v.margin / 1e5 << " bar";
       break;
+    case K::CoolantBalance:
+      s << std::fixed << std::setprecision(2) << "heat " << v.distance << " times the circuits' mean, the band's edge "
+        << v.margin << " (thermal.coolant.balance)";
+      break;
     case K::CoolantRise:
       s << std::fixed << std::setprecision(2) << "coolant rise " << v.distance << " K, at most " << v.margin
         << " K (thermal.coolant.max_rise)";

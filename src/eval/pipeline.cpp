@@ -48,7 +48,7 @@ Pipeline::Pipeline(const mold::Scene& scene, const TemperatureSolverFactory& tem
   if (spec.cavity) stages_.push_back(make_cavity_stage(scene));
   stages_.push_back(make_surface_stage(scene));
   stages_.push_back(make_drilling_stage(scene));
-  if (spec.thermal.flow_rate || spec.thermal.supply_pressure) stages_.push_back(make_coolant_stage(scene));
+  if (spec.thermal.flowing()) stages_.push_back(make_coolant_stage(scene));
   if (spec.drilling.access_map) {
     drill_access_ = std::make_unique<DrillAccess>(scene);
     stages_.push_back(make_drillable_stage(*drill_access_));

@@ -55,7 +55,7 @@ class TemperatureStage final : public Stage {
         bounded_above_(std::none_of(spec_.thermal.regions.begin(), spec_.thermal.regions.end(),
                                     [](const mold::HeatRegion& r) { return r.flux > 0; })),
         samples_count_(samples_.size()),
-        flowing_(spec_.thermal.flow_rate || spec_.thermal.supply_pressure) {
+        flowing_(spec_.thermal.flowing()) {
     const auto& use = spec_.objectives.use;
     // temperature_std_side: each sample's half of the mold (before the points across join).
     if (std::find(use.begin(), use.end(), mold::Objective::TemperatureStdSide) != use.end()) {
@@ -119,10 +119,10 @@ class TemperatureStage final : public Stage {
       return Solved{objectives_of(std::move(t.temperature)), std::move(t.channel_heat)};
     });
     write(solved.objectives, layout, out);
-    // Each bore's heat (a channel per bore), and the coolant's rise against the shop's limit.
+    // Each bore's heat (a channel per bore); the coolant's rise and the circuits' balance against the shop's limits.
     if (solved.bore_heat.size() != layout.bores.size()) return;
     out.bore_heat = solved.bore_heat;
-    if (!flows.empty()) add_shop_checks(out, rise_checks(layout, spec_, flows, out.bore_heat), layout);
+    if (!flows.empty()) add_shop_checks(out, heat_checks(layout, spec_, flows, out.bore_heat), layout);
   }
 
  private:
@@ -218,7 +218,7 @@ class TemperatureStage final : public Stage {
   std::vector<std::optional<geometry::Vec3>> across_;       // per sample, the point across the part
   std::vector<PartSide> sides_;                             // per sample, its half (temperature_std_side)
   TemperatureSolver solve_;
-  bool flowing_;  // a flow rate or a supply pressure: each bore's flow known, the rise checked
+  bool flowing_;  // a flow rate, a supply pressure or a pump: each bore's flow known, the rise checked
   ExactCache<std::vector<double>, Solved> solved_{256};
   std::vector<std::pair<mold::Objective, std::size_t>> slots_;
 };

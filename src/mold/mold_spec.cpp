@@ -426,6 +426,28 @@ void parse_cavity_condition(const YamlReader& r, const YAML::Node& n, ThermalSpe
     r.fail(n["part_temperature"], "thermal.part_temperature", "the part must be hotter than the coolant");
 }
 
+// thermal.coolant.pump: [[l/min, bar], ...], the flow rising and the pressure falling (bar -> Pa);
+// it drives the circuits alone (no flow rate, supply pressure or film beside it).
+std::vector<std::pair<double, double>> parse_pump(const YamlReader& r, const YAML::Node& c) {
+  const YAML::Node& n = c["pump"];
+  const std::string field = "thermal.coolant.pump";
+  for (const char* other : {"flow_rate", "supply_pressure", "film"})
+    if (c[other]) r.fail(c, "thermal.coolant", std::string("give pump or ") + other + ", not both (the pump sets each circuit's flow)");
+  r.expect_sequence(n, field);
+  if (n.size() < 2) r.fail(n, field, "at least two points [l/min, bar] of the pump's curve");
+  std::vector<std::pair<double, double>> pump;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    const std::string where = at(field, i);
+    if (!n[i].IsSequence() || n[i].size() != 2) r.fail(n[i], where, "a point [l/min, bar]");
+    const double flow = r.number(n[i][0], where + "[0]", 0, 1e6), bar = r.number(n[i][1], where + "[1]", 0, 1e4);
+    if (!pump.empty() && (flow <= pump.back().first || bar * 1e5 > pump.back().second))
+      r.fail(n[i], where, "the curve's flow must rise and its pressure not rise from point to point");
+    pump.emplace_back(flow, bar * 1e5);
+  }
+  if (!(pump.front().second > 0)) r.fail(n[0], at(field, 0), "the pump gives no pressure at its first point");
+  return pump;
+}
+
 // thermal: SI in the file, the thermal module's units (mm, W, degrees C) in the spec.
 ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
   r.expect_map(n, "thermal", {"steel_conductivity", "coolant", "ambient", "adiabatic_faces", "heat_flux", "regions",
@@ -440,7 +462,8 @@ ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
   if (n["coolant"]) {
     const YAML::Node& c = n["coolant"];
     r.expect_map(c, "thermal.coolant",
-                 {"temperature", "film", "flow_rate", "supply_pressure", "roughness", "min_reynolds", "max_rise", "rise"});
+                 {"temperature", "film", "flow_rate", "supply_pressure", "pump", "roughness", "min_reynolds", "max_rise",
+                  "balance", "rise"});
     if (c["film"] && c["flow_rate"]) r.fail(c, "thermal.coolant", "give film or flow_rate, not both");
     if (c["film"] && c["supply_pressure"])
       r.fail(c, "thermal.coolant", "give film or supply_pressure, not both (the pressure sets each circuit's flow and film)");
@@ -450,13 +473,15 @@ ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
     constexpr double kPaPerBar = 1e5;
     if (c["supply_pressure"])
       t.supply_pressure = kPaPerBar * r.number(c["supply_pressure"], "thermal.coolant.supply_pressure", 1e-6, 1e4);
+    if (c["pump"]) t.pump = parse_pump(r, c);
     // The water properties behind Gnielinski are tabulated from 0 to 106 degrees C.
-    if ((t.flow_rate || t.supply_pressure) && (t.coolant_temperature < 0.01 || t.coolant_temperature > 106))
+    if (t.flowing() && (t.coolant_temperature < 0.01 || t.coolant_temperature > 106))
       r.fail(c["temperature"] ? c["temperature"] : c, "thermal.coolant.temperature",
-             "with a flow rate or a supply pressure the coolant is water: 0 to 106 degrees C");
+             "with a flow rate, a supply pressure or a pump the coolant is water: 0 to 106 degrees C");
     if (c["roughness"]) t.roughness = r.number(c["roughness"], "thermal.coolant.roughness", 0, 10);
     if (c["min_reynolds"]) t.min_reynolds = r.number(c["min_reynolds"], "thermal.coolant.min_reynolds", 0, 1e8);
     if (c["max_rise"]) t.max_rise = r.number(c["max_rise"], "thermal.coolant.max_rise", 1e-6, 1e4);
+    if (c["balance"]) t.balance = r.number(c["balance"], "thermal.coolant.balance", 1e-6, 1e3);
     if (c["rise"]) t.coolant_rise = r.boolean(c["rise"], "thermal.coolant.rise");
   }
   if (n["ambient"]) {

@@ -328,3 +328,24 @@ TEST_CASE("mtcs optimize: summary.json gives each circuit's coolant and says whi
     CHECK(best["coolant"]["circuits"][k]["heat"].get<double>() ==
           Approx(summary["coolant"]["circuits"][k]["heat"].get<double>()).epsilon(1e-12));
 }
+
+TEST_CASE("mtcs optimize: every bundled mold with a flow ends on a layout within the shop's coolant limits",
+          "[cli][thermal][hydraulics]") {
+  // Short runs (the limits are constraints from the first generation on): no circuit of the best
+  // under 10 000 in Reynolds number or over 3 K of rise, and each circuit reported.
+  for (const std::string mold : {"plate", "cup", "gear", "l_bracket", "ribbed_box"}) {
+    const fs::path out = scratch("thermal", "shop_" + mold);
+    fs::remove_all(out);
+    REQUIRE(run_mtcs("optimize " + MTCS_SOURCE_DIR + "/molds/" + mold + ".yaml --evaluations 200 --seed 1 --quiet --out " +
+                     out.string() + " >/dev/null") == 0);
+    const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
+    INFO(mold << ": " << summary["violations"].dump());
+    REQUIRE(summary.contains("coolant"));
+    CHECK_FALSE(summary["coolant"]["circuits"].empty());
+    for (const auto& c : summary["coolant"]["circuits"]) {
+      CHECK(c["reynolds"].get<double>() >= 1e4);
+      CHECK(c["rise"].get<double>() <= 3);
+    }
+    for (const auto& v : summary["violations"]) CHECK(v["kind"].get<std::string>().rfind("coolant_", 0) != 0);
+  }
+}

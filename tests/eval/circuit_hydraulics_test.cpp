@@ -189,6 +189,43 @@ TEST_CASE("hydraulics: the coolant's rise is the circuit's heat over m c_p, the 
   }
 }
 
+TEST_CASE("hydraulics: a pump's curve meets the circuits' total flow, found another way", "[eval][hydraulics]") {
+  // Two circuits on a pump of 2 bar at no flow falling linearly to 0 at 40 l/min. The test's own
+  // route: bisection on the straight circuit's flow q, the long one's flow from the same drop, the
+  // pump's pressure at their sum against that drop (mtcs solves on the pressure instead).
+  const mold::MoldSpec spec = spec_with("{temperature: 40, pump: [[0, 2], [40, 0]]}");
+  REQUIRE(spec.thermal.pump.size() == 2);
+  CHECK(spec.thermal.pump[0].second == Approx(2e5));
+  mold::Layout layout = chain({{0, 20, 20}, {200, 20, 20}}, 8, 0);
+  layout = chain({{0, 60, 20}, {200, 60, 20}, {200, 100, 20}, {0, 100, 20}, {0, 140, 20}, {200, 140, 20}}, 8, 1, layout);
+  const auto paths = eval::circuit_paths(layout);
+  const eval::WaterProperties water = eval::water_properties(40);
+  const auto pump = [](double q) { return 2e5 * (1 - q / 40); };
+  double lo = 1e-6, hi = 40;
+  for (int i = 0; i < 200; ++i) {
+    const double q = (lo + hi) / 2, drop = eval::pressure_drop(paths[0], q, water, 0.045).total();
+    const double q_long = eval::flow_at_pressure(paths[1], drop, water, 0.045);
+    (pump(q + q_long) > drop ? lo : hi) = q;
+  }
+  const double drop = eval::pressure_drop(paths[0], lo, water, 0.045).total();
+  const auto flows = eval::circuit_flows(paths, spec);
+  REQUIRE(flows.size() == 2);
+  CHECK(flows[0] == Approx(lo).epsilon(1e-8));
+  CHECK(flows[1] == Approx(eval::flow_at_pressure(paths[1], drop, water, 0.045)).epsilon(1e-8));
+  const eval::CoolantCircuits cc = eval::coolant_circuits(layout, spec);
+  CHECK(cc.from_pump);
+  CHECK(cc.supply == Approx(drop).epsilon(1e-8));
+  CHECK(cc.supply == Approx(pump(cc.total_flow)).epsilon(1e-8));  // on the curve
+  CHECK(eval::pump_pressure(spec.thermal.pump, 10) == Approx(1.5e5));
+  CHECK(eval::pump_pressure(spec.thermal.pump, 50) == 0);
+  // The flows drive each bore's film, as a supply pressure's do.
+  CHECK(eval::thermal_channels(layout, spec)[1].film == Approx(eval::coolant_film(flows[1], 8, 40)));
+  CHECK_THROWS_WITH(spec_with("{temperature: 40, pump: [[0, 2], [40, 3]]}"), Catch::Contains("thermal.coolant.pump[1]"));
+  CHECK_THROWS_WITH(spec_with("{temperature: 40, pump: [[0, 2]]}"), Catch::Contains("at least two points"));
+  CHECK_THROWS_WITH(spec_with("{temperature: 40, flow_rate: 8, pump: [[0, 2], [40, 0]]}"), Catch::Contains("give pump or flow_rate"));
+  CHECK_THROWS_WITH(spec_with("{temperature: 40, pump: [[0, 0], [40, 0]]}"), Catch::Contains("no pressure"));
+}
+
 TEST_CASE("hydraulics: the spec's coolant refuses a film with a supply pressure, a pressure of 0, oil with a supply",
           "[eval][hydraulics][spec]") {
   CHECK_THROWS_WITH(spec_with("{temperature: 40, film: 5000, supply_pressure: 2}"),

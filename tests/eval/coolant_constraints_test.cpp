@@ -123,6 +123,25 @@ TEST_CASE("coolant constraints: a coolant rise over the limit, the circuit's hea
   CHECK(ok.bore_heat.size() == bundled.layout.bores.size());
 }
 
+TEST_CASE("coolant constraints: a circuit taking more heat than the balance band allows", "[eval][hydraulics][thermal]") {
+  // The plate's three U loops take 176, 206 and 177 W (mtcs evaluate): the middle one 1.106 times
+  // the mean, the others 0.944 and 0.95. A band of 8 %: the middle one only.
+  const Plate plate("coolant: {temperature: 40, flow_rate: 8, balance: 0.08}");
+  const eval::Evaluation e = plate.pipeline.evaluate(plate.layout);
+  std::map<int, double> heat;
+  for (std::size_t i = 0; i < e.bore_heat.size(); ++i) heat[plate.layout.bores[i].circuit] += e.bore_heat[i];
+  REQUIRE(heat.size() == 3);
+  const double mean = (heat[0] + heat[1] + heat[2]) / 3;
+  const auto out = of_kind(e, eval::ViolationKind::CoolantBalance);
+  REQUIRE(out.size() == 1);
+  CHECK(out.count("c1") == 1);
+  CHECK(out.at("c1")->distance == Approx(heat[1] / mean).epsilon(1e-12));
+  CHECK(out.at("c1")->margin == Approx(1.08));
+  // Wider, none; no balance key, none either.
+  const Plate wide("coolant: {temperature: 40, flow_rate: 8, balance: 0.2}");
+  CHECK(of_kind(wide.pipeline.evaluate(wide.layout), eval::ViolationKind::CoolantBalance).empty());
+}
+
 TEST_CASE("coolant constraints: no coolant stage without a flow, none of its violations", "[eval][hydraulics]") {
   const mold::Scene scene(mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/thermal_block.yaml"));
   const eval::Pipeline pipeline(scene);

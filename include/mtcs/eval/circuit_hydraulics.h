@@ -52,8 +52,17 @@ double flow_at_pressure(const CircuitPath& path, double pascals, const WaterProp
 // W/K: rho Q c_p of `litres_per_minute` of `water`, what warms it by a kelvin.
 double capacity_rate(double litres_per_minute, const WaterProperties& water);
 
-// Each circuit's flow (l/min): the spec's flow_rate, or the flow its supply pressure drives
-// through it; empty when the spec gives neither (a film or a wall at the coolant temperature).
+// The pump's pressure (Pa) at a total flow (l/min): linear between the curve's points, its last
+// pressure held beyond them.
+double pump_pressure(std::span<const std::pair<double, double>> pump, double litres_per_minute);
+// The pressure (Pa) across parallel circuits where the pump's curve meets their total flow: the
+// operating point (TOMS 748 on the pressure, each circuit's flow by flow_at_pressure).
+double pump_operating_pressure(std::span<const CircuitPath> paths, std::span<const std::pair<double, double>> pump,
+                               const WaterProperties& water, double roughness_mm);
+
+// Each circuit's flow (l/min): the spec's flow_rate, or the flow its supply pressure (or the
+// pump's operating pressure) drives through it; empty when the spec gives none (a film or a wall
+// at the coolant temperature).
 std::vector<double> circuit_flows(std::span<const CircuitPath> paths, const mold::MoldSpec& spec);
 // Each bore's flow (l/min, the layout's order): its circuit's; empty as circuit_flows is.
 std::vector<double> bore_flows(const mold::Layout& layout, const mold::MoldSpec& spec);
@@ -71,17 +80,21 @@ struct CircuitHydraulics {
 };
 
 // A shop's rule a circuit breaks: Reynolds number below thermal.coolant.min_reynolds, a rise above
-// max_rise, a drop above the supply pressure.
+// max_rise, a drop above the supply pressure, a heat out of the band thermal.coolant.balance
+// draws around the circuits' mean (found: the circuit's heat over the mean; limit: the band's
+// edge it is beyond).
 struct ShopCheck {
   int circuit = 0;
-  std::string what;      // reynolds, rise, pressure
+  std::string what;      // reynolds, rise, pressure, balance
   double found = 0, limit = 0;
   std::string text() const;
 };
 
 struct CoolantCircuits {
-  bool flowing = false;  // the spec gives a flow or a supply pressure
-  bool from_supply = false;  // each circuit's flow follows from the supply pressure
+  bool flowing = false;  // the spec gives a flow, a supply pressure or a pump
+  bool from_supply = false;  // each circuit's flow follows from the supply pressure or the pump
+  bool from_pump = false;
+  double supply = 0;         // Pa across each circuit when a pressure drives the flows (the pump's operating point)
   std::vector<CircuitHydraulics> circuits;
   double total_flow = 0;  // l/min, the supply's
   std::vector<ShopCheck> checks;
@@ -105,9 +118,10 @@ std::vector<BoreCoolant> bore_coolant(const mold::Layout& layout, const mold::Mo
 // total_flow, circuits, checks}, SI units), one JSON object as text.
 std::string coolant_circuits_json_text(const CoolantCircuits& circuits);
 
-// The rise check alone, for a caller that has each bore's flow and heat (the temperature stage,
-// after every solve): the circuits whose coolant warms by more than thermal.coolant.max_rise.
-std::vector<ShopCheck> rise_checks(const mold::Layout& layout, const mold::MoldSpec& spec,
+// The checks that need the heat, for a caller that has each bore's flow and heat (the
+// temperature stage, after every solve): the circuits whose coolant warms by more than
+// thermal.coolant.max_rise, and those out of the thermal.coolant.balance band.
+std::vector<ShopCheck> heat_checks(const mold::Layout& layout, const mold::MoldSpec& spec,
                                    std::span<const double> bore_flow, std::span<const double> bore_heat);
 
 }  // namespace mtcs::eval

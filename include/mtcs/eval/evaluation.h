@@ -33,15 +33,18 @@ enum class ViolationKind {
   CoolantPressure,    // a circuit's pressure drop above thermal.coolant.supply_pressure
   CoolantRise,        // a circuit's coolant warming by more than thermal.coolant.max_rise
                       // (needs the solve's heat: a thermal verdict)
+  CoolantBalance,     // a circuit's heat outside thermal.coolant.balance around the circuits'
+                      // mean (a thermal verdict)
 };
-// The thermal verdicts (eject, temperature_bounds, coolant_rise), from the temperature stage;
+// The thermal verdicts (eject, temperature_bounds, coolant_rise, coolant_balance), from the
+// temperature stage;
 // temperature_bounds counts only on a layout that meets every geometric rule (a bore through the
 // part has no meaningful temperature).
 bool is_thermal_verdict(ViolationKind kind);
 
 // bore_bore, bore_keepout, bore_cavity, bore_surface, depth_ratio, entry_face, entry_angle,
 // inlet_face, outlet_face, drillable, eject, temperature_bounds, coolant_reynolds,
-// coolant_pressure, coolant_rise.
+// coolant_pressure, coolant_rise, coolant_balance.
 const char* to_string(ViolationKind kind);
 
 struct Violation {

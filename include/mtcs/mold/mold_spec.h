@@ -228,9 +228,15 @@ struct ThermalSpec {
   // ports; with flow_rate a limit the circuit's drop must keep under, alone what drives each
   // circuit's own flow (and film). The bores' equivalent roughness; the shop's limits.
   std::optional<double> supply_pressure;   // Pa
+  // Or a pump's curve: (total flow l/min, pressure Pa) points, the flow rising, the pressure
+  // falling; the circuits take it in parallel, each the flow the common pressure drives.
+  std::vector<std::pair<double, double>> pump;
   double roughness = 0.045;                // mm (Moody's commercial steel)
   double min_reynolds = 1e4;               // turbulent above (Moldflow's band)
   double max_rise = 3;                     // K, coolant outlet over inlet
+  std::optional<double> balance;           // each circuit's heat within this fraction of the mean
+  // Water flows through the circuits: each bore's flow, and the circuits' checks, are known.
+  bool flowing() const { return flow_rate || supply_pressure || !pump.empty(); }
   // The coolant warms along each circuit in the model (with a flow), or stays at the inlet's.
   bool coolant_rise = true;
   double ambient_temperature = 25;         // degrees C

@@ -465,7 +465,7 @@ function showTables(member) {
   $('coolant-caption').textContent = cc ? `(${fmt(cc.total_flow)} l/min in all${cc.from_supply ? ', from the supply pressure' : ''})` : '(no flow in the spec)';
   const failing = new Set((cc ? cc.checks : []).map((c) => c.circuit));
   fillTable($('coolant-table'), [['circuit'], ['l/min', 'num'], ['m/s', 'num'], ['Reynolds', 'num'], ['drop bar', 'num'],
-    ['heat W', 'num'], ['share', 'num'], ['out °C', 'num'], ['rise K', 'num']],
+    ['heat W', 'num'], ['share', 'num'], ['out °C', 'num'], ['rise K', 'num'], ['film W/(m² K)', 'num']],
     (cc ? cc.circuits : []).map((c) => el('tr', failing.has(c.circuit) ? { class: 'bad' } : {}, [
       el('td', {}, [el('span', { class: 'dot', style: `background:${circuitColor(c.circuit)}` }), `c${c.circuit}`]),
       el('td', { class: 'num', text: fmt(c.flow) }), el('td', { class: 'num', text: fmt(c.velocity) }),
@@ -474,7 +474,8 @@ function showTables(member) {
       el('td', { class: 'num', text: c.heat === undefined ? '–' : fmt(c.heat) }),
       el('td', { class: 'num', text: c.heat_share === undefined ? '–' : `${fmt(100 * c.heat_share)} %` }),
       el('td', { class: 'num', text: c.coolant_out === undefined ? '–' : fmt(c.coolant_out, 4) }),
-      el('td', { class: 'num', text: c.rise === undefined ? '–' : fmt(c.rise) })])));
+      el('td', { class: 'num', text: c.rise === undefined ? '–' : fmt(c.rise) }),
+      el('td', { class: 'num', text: Math.round(c.film).toLocaleString('en') })])));
   // The design rules in bore diameters, out of range marked (depth 1.5-2.5 D, pitch 3-5 D).
   const rules = new Map(((member.design_rules || {}).bores || []).map((r) => [r.bore, r]));
   const inD = (v, verdict) => el('td', { class: verdict ? 'num bad' : 'num', title: verdict ? `${verdict} (outside the rule of thumb)` : '',
