@@ -33,9 +33,15 @@ void write_thermal_problem_json(std::ostream& out, const thermal::Model& model, 
                          {"film", film(t.film)},
                          {"part_temperature", t.part_temperature}});
   nlohmann::ordered_json channels = nlohmann::ordered_json::array();
-  for (const thermal::Channel& c : model.channels)
-    channels.push_back({{"p0", point(c.axis.p0)}, {"p1", point(c.axis.p1)}, {"radius", c.radius},
-                        {"film", film(c.film)}, {"coolant", c.coolant}});
+  for (const thermal::Channel& c : model.channels) {
+    nlohmann::ordered_json ch{{"p0", point(c.axis.p0)}, {"p1", point(c.axis.p1)}, {"radius", c.radius},
+                              {"film", film(c.film)}, {"coolant", c.coolant}};
+    // The warming coolant (thermal.coolant.rise): the circuit, the place in its flow order and
+    // rho Q c_p (W/K); another solver warms each channel's coolant by the heat upstream over it.
+    if (c.circuit >= 0 && c.capacity > 0)
+      ch["circuit"] = c.circuit, ch["position"] = c.position, ch["capacity_W_K"] = c.capacity;
+    channels.push_back(ch);
+  }
   nlohmann::ordered_json points = nlohmann::ordered_json::array();
   for (const geometry::Vec3& p : samples.points) points.push_back(point(p));
   const nlohmann::ordered_json j{

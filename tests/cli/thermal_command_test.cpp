@@ -238,6 +238,17 @@ TEST_CASE("mtcs thermal --problem: the conduction problem for another solver, as
   CHECK(heat == Approx(nlohmann::json::parse(read_text(summary))["heat_in"].get<double>()).epsilon(1e-9));
   CHECK(j["samples"].size() == 720);
   CHECK(nlohmann::json::parse(read_text(summary))["cavity_condition"]["model"] == "flux");
+  CHECK_FALSE(j["channels"][0].contains("capacity_W_K"));  // Dirichlet bores: no flow, no warming
+  // The plate's flow: each channel's circuit, place and rho Q c_p, for a solver that warms the coolant.
+  const fs::path plate = scratch("thermal", "plate_problem.json");
+  REQUIRE(run_mtcs("thermal " + MTCS_SOURCE_DIR + "/molds/plate.yaml --layout " + MTCS_SOURCE_DIR +
+                   "/molds/plate.layout.yaml --problem " + plate.string() + " >/dev/null") == 0);
+  const auto p = nlohmann::json::parse(read_text(plate));
+  REQUIRE(p["channels"].size() >= 9);
+  for (const auto& c : p["channels"]) {
+    CHECK(c["capacity_W_K"].get<double>() == Approx(992.2 * (8e-3 / 60) * 4179).epsilon(0.005));  // water at 40 C, 8 l/min
+    CHECK(c["circuit"].get<int>() >= 0);
+  }
 }
 
 TEST_CASE("mtcs thermal --out on a mesh part: the field in chunks, as at the same points asked for", "[cli][thermal]") {

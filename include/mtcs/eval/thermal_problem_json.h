@@ -1,7 +1,9 @@
 #pragma once
 // The conduction problem of one layout as plain JSON, for a solver outside mtcs (FreeFem++, a
 // commercial tool) to solve the same physics: the block, its faces' films, the cavity's
-// triangles with their condition, the bores' flowed parts with their films, the samples.
+// triangles with their condition, the bores' flowed parts with their films (and, where the
+// coolant warms along a circuit, each one's circuit, position and capacity_W_K = rho Q c_p), the
+// samples.
 // Units in the file: mm, degrees C, W/(m K), W/(m^2 K), W/m^2 (the spec's SI, lengths in mm);
 // "film": null is the Dirichlet limit (an infinite film). Written by `mtcs thermal --problem`;
 // read by experiments/thermal/freefem_coupled.
