@@ -94,6 +94,7 @@ PressureDrop pressure_drop(const CircuitPath& path, double litres_per_minute, co
 }
 
 double flow_at_pressure(const CircuitPath& path, double pascals, const WaterProperties& water, double roughness_mm) {
+  if (!(pascals > 0)) return 0;
   // The drop grows monotonically with the flow (f Q^2 with f falling slower than 1/Q^2): bracket
   // by doubling, then TOMS 748.
   const auto excess = [&](double q) { return pressure_drop(path, q, water, roughness_mm).total() - pascals; };
@@ -119,7 +120,7 @@ double pump_pressure(std::span<const std::pair<double, double>> pump, double lit
       const auto& [q1, p1] = pump[i];
       return p0 + (p1 - p0) * (litres_per_minute - q0) / (q1 - q0);
     }
-  return pump.back().second;
+  return 0;  // past its curve the pump gives nothing more
 }
 
 double pump_operating_pressure(std::span<const CircuitPath> paths, std::span<const std::pair<double, double>> pump,
@@ -132,7 +133,7 @@ double pump_operating_pressure(std::span<const CircuitPath> paths, std::span<con
     for (const CircuitPath& path : paths) total += flow_at_pressure(path, p, water, roughness_mm);
     return pump_pressure(pump, total) - p;
   };
-  const double hi = pump.front().second, lo = hi * 1e-9;
+  const double hi = pump.front().second, lo = 0;  // excess(0) = the pump's first pressure > 0 (the spec's check)
   if (paths.empty() || excess(hi) >= 0) return hi;
   boost::uintmax_t iterations = 200;
   const auto [a, b] =
@@ -213,8 +214,8 @@ CoolantCircuits coolant_circuits(const mold::Layout& layout, const mold::MoldSpe
   out.from_pump = !t.flow_rate && !t.pump.empty();
   if (!out.flowing) return out;
   const WaterProperties water = water_properties(t.coolant_temperature);
-  if (out.from_supply)
-    out.supply = t.supply_pressure ? *t.supply_pressure : pump_operating_pressure(paths, t.pump, water, t.roughness);
+  // The pressure the flows were found at: each circuit's drop at its flow (the pump's point solved once).
+  if (out.from_supply && !paths.empty()) out.supply = pressure_drop(paths[0], flows[0], water, t.roughness).total();
   const bool heat_known = bore_heat.size() == layout.bores.size();
   double all_heat = 0;
   for (std::size_t k = 0; k < paths.size(); ++k) {

@@ -13,13 +13,10 @@ void add_shop_checks(Evaluation& out, std::span<const ShopCheck> checks, const m
   for (const ShopCheck& c : checks) {
     // The circuit's inlet (its flow and drop), or its outlet (the warmest coolant).
     const bool rise = c.what == "rise";
-    geometry::Vec3 where = geometry::Vec3::Zero();
-    bool first = true;
-    for (const mold::Bore& b : layout.bores) {
-      if (b.circuit != c.circuit) continue;
-      if (first || rise) where = rise ? b.flow_end : b.flow_start;
-      first = false;
-    }
+    const mold::Bore* end = nullptr;  // the first bore in flow order, or the last for the rise
+    for (const mold::Bore& b : layout.bores)
+      if (b.circuit == c.circuit && (!end || (rise ? b.segment > end->segment : b.segment < end->segment))) end = &b;
+    const geometry::Vec3 where = !end ? geometry::Vec3::Zero() : rise ? end->flow_end : end->flow_start;
     const ViolationKind kind = rise                    ? ViolationKind::CoolantRise
                                : c.what == "reynolds" ? ViolationKind::CoolantReynolds
                                : c.what == "balance"  ? ViolationKind::CoolantBalance

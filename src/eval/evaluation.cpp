@@ -31,6 +31,10 @@ bool is_thermal_verdict(ViolationKind kind) {
          kind == ViolationKind::CoolantBalance;
 }
 
+bool is_geometric(ViolationKind kind) {
+  return !is_thermal_verdict(kind) && kind != ViolationKind::CoolantReynolds && kind != ViolationKind::CoolantPressure;
+}
+
 double scalar_fitness(const Evaluation& e, const mold::MoldSpec& spec, const std::vector<double>& weights) {
   const auto& o = spec.objectives;
   double value = 0;

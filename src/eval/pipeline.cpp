@@ -81,7 +81,7 @@ Evaluation Pipeline::evaluate(const mold::Layout& layout, bool timed) const {
   // A bore through the part has no meaningful temperature: a tier's out-of-bounds result counts
   // as its defect only on a layout that meets every geometric rule. Ejectability counts always
   // (dropped, it would let a layout escape it by breaking a clearance a little).
-  const auto geometric = [](const Violation& v) { return !is_thermal_verdict(v.kind); };
+  const auto geometric = [](const Violation& v) { return is_geometric(v.kind); };
   if (std::any_of(e.violations.begin(), e.violations.end(), geometric))
     e.violations.erase(std::remove_if(e.violations.begin(), e.violations.end(),
                                       [](const Violation& v) { return v.kind == ViolationKind::TemperatureBounds; }),

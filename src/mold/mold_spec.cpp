@@ -481,7 +481,7 @@ ThermalSpec parse_thermal(const YamlReader& r, const YAML::Node& n) {
     if (c["roughness"]) t.roughness = r.number(c["roughness"], "thermal.coolant.roughness", 0, 10);
     if (c["min_reynolds"]) t.min_reynolds = r.number(c["min_reynolds"], "thermal.coolant.min_reynolds", 0, 1e8);
     if (c["max_rise"]) t.max_rise = r.number(c["max_rise"], "thermal.coolant.max_rise", 1e-6, 1e4);
-    if (c["balance"]) t.balance = r.number(c["balance"], "thermal.coolant.balance", 1e-6, 1e3);
+    if (c["balance"]) t.balance = r.number(c["balance"], "thermal.coolant.balance", 1e-6, 0.99);  // the band 1 +- b
     if (c["rise"]) t.coolant_rise = r.boolean(c["rise"], "thermal.coolant.rise");
   }
   if (n["ambient"]) {

@@ -137,10 +137,15 @@ Reached circuit_reaching(const eval::Pipeline& pipeline, const ReachRequest& req
       const mold::Layout layout = mold::decode(scene, mold::Genome{{c}});
       const eval::Evaluation e = pipeline.constraints(layout);
       if (nearest_wall(layout, request.target) >= request.better_than) break;  // pushed too far: a new start
-      if (e.feasible()) return {c, request.evaluations - left};
+      // A circuit's coolant limits (its flow through its diameter) do not move with it: the
+      // geometry alone decides here, the full evaluation judges the rest.
+      const bool clear = std::all_of(e.violations.begin(), e.violations.end(),
+                                     [](const eval::Violation& v) { return !eval::is_geometric(v.kind); });
+      if (clear) return {c, request.evaluations - left};
       Vec3 shift = Vec3::Zero();
       bool clearable = true;
       for (const eval::Violation& v : e.violations) {
+        if (!eval::is_geometric(v.kind)) continue;
         const auto s = clearing_shift(v, block, away);
         if (!s) {
           clearable = false;

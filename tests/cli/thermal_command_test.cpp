@@ -340,10 +340,12 @@ TEST_CASE("mtcs optimize: summary.json gives each circuit's coolant and says whi
           Approx(summary["coolant"]["circuits"][k]["heat"].get<double>()).epsilon(1e-12));
 }
 
-TEST_CASE("mtcs optimize: every bundled mold with a flow ends on a layout within the shop's coolant limits",
+TEST_CASE("mtcs optimize: every bundled mold's best keeps the shop's coolant limits, or its summary names the circuit",
           "[cli][thermal][hydraulics]") {
-  // Short runs (the limits are constraints from the first generation on): no circuit of the best
-  // under 10 000 in Reynolds number or over 3 K of rise, and each circuit reported.
+  // Short runs: each circuit of the best as summary.json tabulates it has a coolant_* violation
+  // exactly when its numbers break a limit (Reynolds under 10 000, rise over 3 K; a table and a
+  // verdict that disagree fail here). On the bundled molds none does (issue 42's target); the
+  // limits binding is the plate's case above (max_rise 0.05).
   for (const std::string mold : {"plate", "cup", "gear", "l_bracket", "ribbed_box"}) {
     const fs::path out = scratch("thermal", "shop_" + mold);
     fs::remove_all(out);
@@ -352,11 +354,15 @@ TEST_CASE("mtcs optimize: every bundled mold with a flow ends on a layout within
     const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
     INFO(mold << ": " << summary["violations"].dump());
     REQUIRE(summary.contains("coolant"));
-    CHECK_FALSE(summary["coolant"]["circuits"].empty());
+    REQUIRE_FALSE(summary["coolant"]["circuits"].empty());
     for (const auto& c : summary["coolant"]["circuits"]) {
-      CHECK(c["reynolds"].get<double>() >= 1e4);
-      CHECK(c["rise"].get<double>() <= 3);
+      const std::string name = "c" + std::to_string(c["circuit"].get<int>());
+      const bool breaks = c["reynolds"].get<double>() < 1e4 || c["rise"].get<double>() > 3;
+      bool named = false;
+      for (const auto& v : summary["violations"])
+        named = named || (v["kind"].get<std::string>().rfind("coolant_", 0) == 0 && v["elements"][0] == name);
+      CHECK(named == breaks);
+      CHECK_FALSE(breaks);
     }
-    for (const auto& v : summary["violations"]) CHECK(v["kind"].get<std::string>().rfind("coolant_", 0) != 0);
   }
 }

@@ -218,6 +218,10 @@ TEST_CASE("hydraulics: a pump's curve meets the circuits' total flow, found anot
   CHECK(cc.supply == Approx(pump(cc.total_flow)).epsilon(1e-8));  // on the curve
   CHECK(eval::pump_pressure(spec.thermal.pump, 10) == Approx(1.5e5));
   CHECK(eval::pump_pressure(spec.thermal.pump, 50) == 0);
+  // A pump whose curve ends at 5 l/min, still at 1.9 bar: the circuits get no more than 5 l/min.
+  const eval::CoolantCircuits small = eval::coolant_circuits(layout, spec_with("{temperature: 40, pump: [[0, 2], [5, 1.9]]}"));
+  CHECK(small.total_flow <= 5 + 1e-6);
+  CHECK(small.total_flow > 4.9);
   // The flows drive each bore's film, as a supply pressure's do.
   CHECK(eval::thermal_channels(layout, spec)[1].film == Approx(eval::coolant_film(flows[1], 8, 40)));
   CHECK_THROWS_WITH(spec_with("{temperature: 40, pump: [[0, 2], [40, 3]]}"), Catch::Contains("thermal.coolant.pump[1]"));

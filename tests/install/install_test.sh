@@ -13,8 +13,11 @@ for f in bin/mtcs bin/mtcs-bench share/mtcs/plot_fronts.py share/mtcs/plot_penal
 done
 cp "$source/molds/plate.yaml" "$source/molds/plate.layout.yaml" "$prefix/"
 cd "$prefix"
-"$prefix/bin/mtcs" evaluate plate.yaml --layout plate.layout.yaml --json | grep -q '"feasible"'
-"$prefix/bin/mtcs" bench sms-emoa --problem zdt1 --seeds 1 --evaluations 200 --algorithms nsga2 | grep -q '^zdt1,nsga2,1,200,'
+# Whole outputs first: grep -q would close the pipe early and, under pipefail, fail a long writer.
+scored=$("$prefix/bin/mtcs" evaluate plate.yaml --layout plate.layout.yaml --json)
+grep -q '"feasible"' <<<"$scored"
+bench=$("$prefix/bin/mtcs" bench sms-emoa --problem zdt1 --seeds 1 --evaluations 200 --algorithms nsga2)
+grep -q '^zdt1,nsga2,1,200,' <<<"$bench"
 # The plotting script is the installed one: it renders the PNG, or (without matplotlib) the
 # hint to render it later names it.
 log=$("$prefix/bin/mtcs" compare-penalties plate.yaml --variants death --seeds 1 --evaluations 60 --out cmp 2>&1)

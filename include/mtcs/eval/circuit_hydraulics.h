@@ -46,14 +46,14 @@ struct PressureDrop {
 };
 PressureDrop pressure_drop(const CircuitPath& path, double litres_per_minute, const WaterProperties& water,
                            double roughness_mm);
-// The flow (l/min) at which the circuit's drop equals `pascals` (to 1e-10 relative).
+// The flow (l/min) at which the circuit's drop equals `pascals` (to 1e-10 relative); 0 at no pressure.
 double flow_at_pressure(const CircuitPath& path, double pascals, const WaterProperties& water, double roughness_mm);
 
 // W/K: rho Q c_p of `litres_per_minute` of `water`, what warms it by a kelvin.
 double capacity_rate(double litres_per_minute, const WaterProperties& water);
 
-// The pump's pressure (Pa) at a total flow (l/min): linear between the curve's points, its last
-// pressure held beyond them.
+// The pump's pressure (Pa) at a total flow (l/min): linear between the curve's points, 0 past the
+// last (the pump gives no more flow than its curve).
 double pump_pressure(std::span<const std::pair<double, double>> pump, double litres_per_minute);
 // The pressure (Pa) across parallel circuits where the pump's curve meets their total flow: the
 // operating point (TOMS 748 on the pressure, each circuit's flow by flow_at_pressure).

@@ -24,7 +24,10 @@ inline constexpr DesignRange kDepthRange{1.5, 2.5}, kPitchRange{3, 5};
 struct BoreRules {
   std::string bore;  // c0.b2
   double diameter = 0;                                         // mm
-  double depth = std::numeric_limits<double>::infinity();      // mm, axis to the cavity (none: inf)
+  // mm, axis to the cavity: the steel between the drilled hole (dead ends and drill point
+  // included) and the part, plus the radius; exact where the hole's side faces the part, the
+  // radius too deep where its end does (none: inf).
+  double depth = std::numeric_limits<double>::infinity();
   double pitch = std::numeric_limits<double>::infinity();      // mm, axis to axis (no other bore: inf)
   std::string pitch_to;                                        // the nearest bore
   double drilled_ratio = 0;                                    // drilled length / diameter

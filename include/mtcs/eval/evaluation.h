@@ -41,6 +41,9 @@ enum class ViolationKind {
 // temperature_bounds counts only on a layout that meets every geometric rule (a bore through the
 // part has no meaningful temperature).
 bool is_thermal_verdict(ViolationKind kind);
+// A rule of the layout's geometry (clearances, drilling, ports): neither a thermal verdict nor a
+// circuit's coolant limit (coolant_reynolds, coolant_pressure), which no move of a bore can mend.
+bool is_geometric(ViolationKind kind);
 
 // bore_bore, bore_keepout, bore_cavity, bore_surface, depth_ratio, entry_face, entry_angle,
 // inlet_face, outlet_face, drillable, eject, temperature_bounds, coolant_reynolds,

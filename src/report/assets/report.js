@@ -337,7 +337,7 @@ function showLayout(member) {
     }
   }
   setLayerAvailable('coolant', !!coolant, member.coolant ? 'the heat per bore needs a temperature objective'
-    : 'no coolant flow in the spec (thermal.coolant.flow_rate or supply_pressure)');
+    : 'no coolant flow in the spec (thermal.coolant.flow_rate, supply_pressure or pump)');
   const temperatureHere = data.temperature && data.temperature.member === member.rank;
   setLayerAvailable('temperature', !!temperatureHere,
     data.temperature ? `the temperature is of member ${data.temperature.member} only` : 'no temperature in this report');
@@ -462,7 +462,8 @@ function showTables(member) {
       el('td', { class: 'num', text: `${fmt(100 * v.amount)} %` })])));
   // Each circuit's coolant as a shop checks it (the rows that break a shop limit marked).
   const cc = member.coolant;
-  $('coolant-caption').textContent = cc ? `(${fmt(cc.total_flow)} l/min in all${cc.from_supply ? ', from the supply pressure' : ''})` : '(no flow in the spec)';
+  const driven = cc && cc.from_supply ? `, ${cc.from_pump ? 'from the pump at' : 'from the supply at'} ${fmt(cc.supply_pressure / 1e5)} bar` : '';
+  $('coolant-caption').textContent = cc ? `(${fmt(cc.total_flow)} l/min in all${driven})` : '(no flow in the spec)';
   const failing = new Set((cc ? cc.checks : []).map((c) => c.circuit));
   fillTable($('coolant-table'), [['circuit'], ['l/min', 'num'], ['m/s', 'num'], ['Reynolds', 'num'], ['drop bar', 'num'],
     ['heat W', 'num'], ['share', 'num'], ['out °C', 'num'], ['rise K', 'num'], ['film W/(m² K)', 'num']],
