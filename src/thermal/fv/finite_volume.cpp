@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 #include "thermal/fv/fv_grid.h"
@@ -29,23 +30,6 @@ struct Sink {
   int channel;  // -1 for an outer face, kPartFilm for the part's film (heat in)
 };
 constexpr int kPartFilm = -2;
-
-template <class Preconditioner>
-Eigen::VectorXd conjugate_gradient(const Eigen::SparseMatrix<double>& matrix, const Eigen::VectorXd& rhs,
-                                   const FvOptions& options, FvResult& result) {
-  const auto start = std::chrono::steady_clock::now();
-  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper, Preconditioner> solver;
-  solver.setTolerance(options.tolerance);
-  solver.setMaxIterations(options.max_iterations);
-  solver.compute(matrix);
-  if (solver.info() != Eigen::Success) throw std::runtime_error("finite volume: the preconditioner failed");
-  Eigen::VectorXd x = solver.solve(rhs);
-  result.iterations = int(solver.iterations());
-  result.residual = solver.error();
-  result.converged = solver.info() == Eigen::Success;
-  result.solver_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return x;
-}
 
 // The heat each steel cell takes from the cavity over the area of its faces to it (W/mm^2),
 // for extrapolating samples to the cavity wall.
@@ -166,116 +150,175 @@ System assemble(const Model& model, const fv::Grid& grid, const FvField& field, 
 
 }  // namespace
 
-static FvResult solve_at_coolants(const Model& model, const Samples& samples, const FvOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  FvResult result;
-  FvField& field = result.field;
-  const Setting& setting = model.setting;
-  const double k = setting.conductivity;
-  const fv::Grid grid(model, options, field);
-  field.conductivity = k;
-  field.faces = setting.faces;
-  for (int face = 0; face < 6; ++face) {
-    if (!(setting.faces[std::size_t(face)].film >= 0) ||
-        !std::isfinite(setting.faces[std::size_t(face)].film) ||
-        !std::isfinite(setting.faces[std::size_t(face)].ambient))
-      throw std::invalid_argument("finite volume: face films must be finite and >= 0");
-    const auto [ab, ac] = face_plane_axes(face);
-    field.face_heat[std::size_t(face)].assign(std::size_t(field.cells[ab]) * std::size_t(field.cells[ac]),
-                                              0.0);
-    field.face_covered[std::size_t(face)] = field.face_heat[std::size_t(face)];
+namespace {
+
+// The finite volumes of one model, built once: the grid, the heat input, the matrix and its
+// preconditioner. Solved for any coolant temperatures of the channels: the coolant's warming
+// along its circuits (a fixed point of a few solves) changes nothing else.
+class Assembled {
+ public:
+  Assembled(const Model& model, const FvOptions& options)
+      : model_(model), options_(options), grid_(model, options, field_), source_(prepare(field_, model.setting)),
+        heat_(model, grid_, field_, source_) {
+    system_ = assemble(model, grid_, field_, source_, heat_.films());
+    const auto start = std::chrono::steady_clock::now();
+    if (options.preconditioner == FvPreconditioner::IncompleteCholesky) compute(ic_);
+    else compute(diagonal_);
+    preconditioner_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
-  const std::size_t n_cells = std::size_t(field.cells[0]) * field.cells[1] * field.cells[2];
-  std::vector<double> source(n_cells, 0.0);
-  const fv::HeatInput heat(model, grid, field, source);
-  System system = assemble(model, grid, field, source, heat.films());
-  const std::vector<int>& row = system.row;
-  const int n = int(system.heat.size());
+  // coolant: each channel's (degrees C), in model.channels' order.
+  FvResult solve(const std::vector<double>& coolant, const Samples& samples) const {
+    FvResult result;
+    result.field = field_;
+    FvField& field = result.field;
+    std::vector<double> source = source_;
+    std::vector<Sink> sinks = system_.sinks;
+    for (Sink& s : sinks)
+      if (s.channel >= 0) s.temperature = coolant[std::size_t(s.channel)];
+    const std::vector<int>& row = system_.row;
+    const int n = int(system_.heat.size());
 
-  // A cell whose centre is a hair from a bore wall has a conductance to it many orders above
-  // the others. Measured against the raw right-hand side, which such rows dominate, the CG
-  // tolerance would mean nothing for the rest; and the heat through such a link is a tiny
-  // temperature difference times a huge conductance, lost if T is rounded near 40 degrees.
-  // So each cell with sinks starts at its dominant sink's temperature `base` plus `offset`
-  // (the conductance-weighted pull of the others); we solve for the correction to that guess,
-  // whose right-hand side is of the scale of the ordinary rows, and keep T - base unrounded.
-  Eigen::VectorXd base = Eigen::VectorXd::Zero(n), offset = Eigen::VectorXd::Zero(n);
-  {
-    Eigen::VectorXd strongest = Eigen::VectorXd::Zero(n), total = Eigen::VectorXd::Zero(n);
-    double sum = 0, weight = 0;
-    for (const Sink& s : system.sinks) {
-      if (s.conductance > strongest[s.row]) strongest[s.row] = s.conductance, base[s.row] = s.temperature;
-      sum += s.conductance * s.temperature, weight += s.conductance;
-    }
-    const double mean = weight > 0 ? sum / weight : 0.0;
-    for (int r = 0; r < n; ++r)
-      if (strongest[r] == 0) base[r] = mean;
-    for (const Sink& s : system.sinks) {
-      offset[s.row] += s.conductance * (s.temperature - base[s.row]);
-      total[s.row] += s.conductance;
-    }
-    for (int r = 0; r < n; ++r)
-      if (total[r] > 0) offset[r] /= total[r];
-  }
-  // The guess's residual, each term a difference of nearby temperatures (no g T - g T).
-  Eigen::VectorXd residual = system.heat;
-  for (const Sink& s : system.sinks)
-    residual[s.row] += s.conductance * ((s.temperature - base[s.row]) - offset[s.row]);
-  for (int col = 0; col < n; ++col)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(system.matrix, col); it; ++it)
-      if (it.row() != col)
-        residual[it.row()] += it.value() * ((base[it.row()] - base[col]) + (offset[it.row()] - offset[col]));
-  if (options.preconditioner == FvPreconditioner::IncompleteCholesky)
-    offset +=
-        conjugate_gradient<Eigen::IncompleteCholesky<double, Eigen::Lower, Eigen::NaturalOrdering<int>>>(
-            system.matrix, residual, options, result);
-  else
-    offset +=
-        conjugate_gradient<Eigen::DiagonalPreconditioner<double>>(system.matrix, residual, options, result);
-  result.steel_cells = std::size_t(n);
-
-  field.kind.resize(n_cells);
-  field.temperature.assign(n_cells, fv::kNoTemperature);
-  for (int kk = 0; kk < field.cells[2]; ++kk)
-    for (int j = 0; j < field.cells[1]; ++j)
-      for (int i = 0; i < field.cells[0]; ++i) {
-        const std::size_t cell = field.index(i, j, kk);
-        const int kind = grid.kind(i, j, kk);
-        field.kind[cell] = kind;
-        if (kind == kSteel)
-          field.temperature[cell] = base[row[cell]] + offset[row[cell]];
-        else if (kind >= 0)
-          field.temperature[cell] = model.channels[std::size_t(kind)].coolant;
+    // A cell whose centre is a hair from a bore wall has a conductance to it many orders above
+    // the others. Measured against the raw right-hand side, which such rows dominate, the CG
+    // tolerance would mean nothing for the rest; and the heat through such a link is a tiny
+    // temperature difference times a huge conductance, lost if T is rounded near 40 degrees.
+    // So each cell with sinks starts at its dominant sink's temperature `base` plus `offset`
+    // (the conductance-weighted pull of the others); we solve for the correction to that guess,
+    // whose right-hand side is of the scale of the ordinary rows, and keep T - base unrounded.
+    Eigen::VectorXd base = Eigen::VectorXd::Zero(n), offset = Eigen::VectorXd::Zero(n);
+    {
+      Eigen::VectorXd strongest = Eigen::VectorXd::Zero(n), total = Eigen::VectorXd::Zero(n);
+      double sum = 0, weight = 0;
+      for (const Sink& s : sinks) {
+        if (s.conductance > strongest[s.row]) strongest[s.row] = s.conductance, base[s.row] = s.temperature;
+        sum += s.conductance * s.temperature, weight += s.conductance;
       }
+      const double mean = weight > 0 ? sum / weight : 0.0;
+      for (int r = 0; r < n; ++r)
+        if (strongest[r] == 0) base[r] = mean;
+      for (const Sink& s : sinks) {
+        offset[s.row] += s.conductance * (s.temperature - base[s.row]);
+        total[s.row] += s.conductance;
+      }
+      for (int r = 0; r < n; ++r)
+        if (total[r] > 0) offset[r] /= total[r];
+    }
+    // The guess's residual, each term a difference of nearby temperatures (no g T - g T).
+    Eigen::VectorXd residual = system_.heat;
+    for (const Sink& s : sinks) residual[s.row] += s.conductance * ((s.temperature - base[s.row]) - offset[s.row]);
+    for (int col = 0; col < n; ++col)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(system_.matrix, col); it; ++it)
+        if (it.row() != col)
+          residual[it.row()] += it.value() * ((base[it.row()] - base[col]) + (offset[it.row()] - offset[col]));
+    if (options_.preconditioner == FvPreconditioner::IncompleteCholesky) offset += iterate(*ic_, residual, result);
+    else offset += iterate(*diagonal_, residual, result);
+    result.steel_cells = std::size_t(n);
 
-  result.heat_in = heat.total();
-  result.heat_to_channel.assign(model.channels.size(), 0.0);
-  for (const Sink& s : system.sinks) {
-    const double q = s.conductance * ((base[s.row] - s.temperature) + offset[s.row]);
-    if (s.channel >= 0)
-      result.heat_to_channel[std::size_t(s.channel)] += q;
-    else if (s.channel == -1)
-      result.heat_to_faces += q;
-  }
-  // What the part's films let in, where the samples' extrapolation to the wall reads it: the
-  // patches' face cells, the cavity's cells.
-  for (const fv::PartFilm& f : heat.films()) {
-    const double q = f.conductance * (f.temperature - field.temperature[f.cell]);
-    result.heat_in += q;
-    if (f.face >= 0)
-      field.face_heat[std::size_t(f.face)][f.face_cell] += q;
-    else
-      source[f.cell] += q;
-  }
-  record_wall_flux(grid, source, field);
-  for (double q : result.heat_to_channel) result.heat_to_channels += q;
+    const std::size_t n_cells = source.size();
+    field.kind.resize(n_cells);
+    field.temperature.assign(n_cells, fv::kNoTemperature);
+    for (int kk = 0; kk < field.cells[2]; ++kk)
+      for (int j = 0; j < field.cells[1]; ++j)
+        for (int i = 0; i < field.cells[0]; ++i) {
+          const std::size_t cell = field.index(i, j, kk);
+          const int kind = grid_.kind(i, j, kk);
+          field.kind[cell] = kind;
+          if (kind == kSteel)
+            field.temperature[cell] = base[row[cell]] + offset[row[cell]];
+          else if (kind >= 0)
+            field.temperature[cell] = coolant[std::size_t(kind)];
+        }
 
-  result.temperature.reserve(samples.size());
-  for (const Vec3& p : samples.points) result.temperature.push_back(field.temperature_at(p));
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return result;
+    result.heat_in = heat_.total();
+    result.heat_to_channel.assign(model_.channels.size(), 0.0);
+    for (const Sink& s : sinks) {
+      const double q = s.conductance * ((base[s.row] - s.temperature) + offset[s.row]);
+      if (s.channel >= 0)
+        result.heat_to_channel[std::size_t(s.channel)] += q;
+      else if (s.channel == -1)
+        result.heat_to_faces += q;
+    }
+    // What the part's films let in, where the samples' extrapolation to the wall reads it: the
+    // patches' face cells, the cavity's cells.
+    for (const fv::PartFilm& f : heat_.films()) {
+      const double q = f.conductance * (f.temperature - field.temperature[f.cell]);
+      result.heat_in += q;
+      if (f.face >= 0)
+        field.face_heat[std::size_t(f.face)][f.face_cell] += q;
+      else
+        source[f.cell] += q;
+    }
+    record_wall_flux(grid_, source, field);
+    for (double q : result.heat_to_channel) result.heat_to_channels += q;
+
+    result.temperature.reserve(samples.size());
+    for (const Vec3& p : samples.points) result.temperature.push_back(field.temperature_at(p));
+    return result;
+  }
+
+ private:
+  template <class Preconditioner>
+  using Cg = Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper, Preconditioner>;
+  using IcCg = Cg<Eigen::IncompleteCholesky<double, Eigen::Lower, Eigen::NaturalOrdering<int>>>;
+  using DiagonalCg = Cg<Eigen::DiagonalPreconditioner<double>>;
+
+  // The field's conductivity and faces, each face's heat and covered area sized (the heat input
+  // fills them); the source per cell, zero. After the grid has set the cells.
+  static std::vector<double> prepare(FvField& field, const Setting& setting) {
+    field.conductivity = setting.conductivity;
+    field.faces = setting.faces;
+    for (int face = 0; face < 6; ++face) {
+      if (!(setting.faces[std::size_t(face)].film >= 0) || !std::isfinite(setting.faces[std::size_t(face)].film) ||
+          !std::isfinite(setting.faces[std::size_t(face)].ambient))
+        throw std::invalid_argument("finite volume: face films must be finite and >= 0");
+      const auto [ab, ac] = face_plane_axes(face);
+      field.face_heat[std::size_t(face)].assign(std::size_t(field.cells[ab]) * std::size_t(field.cells[ac]), 0.0);
+      field.face_covered[std::size_t(face)] = field.face_heat[std::size_t(face)];
+    }
+    return std::vector<double>(std::size_t(field.cells[0]) * std::size_t(field.cells[1]) * std::size_t(field.cells[2]), 0.0);
+  }
+
+  template <class Solver>
+  void compute(std::unique_ptr<Solver>& solver) {
+    solver = std::make_unique<Solver>();
+    solver->setTolerance(options_.tolerance);
+    solver->setMaxIterations(options_.max_iterations);
+    solver->compute(system_.matrix);
+    if (solver->info() != Eigen::Success) throw std::runtime_error("finite volume: the preconditioner failed");
+  }
+
+  template <class Solver>
+  Eigen::VectorXd iterate(const Solver& solver, const Eigen::VectorXd& rhs, FvResult& result) const {
+    const auto start = std::chrono::steady_clock::now();
+    Eigen::VectorXd x = solver.solve(rhs);
+    result.iterations = int(solver.iterations());
+    result.residual = solver.error();
+    result.converged = solver.info() == Eigen::Success;
+    result.solver_seconds = preconditioner_seconds_ +
+                            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return x;
+  }
+
+  const Model& model_;
+  FvOptions options_;
+  FvField field_;  // the grid's cells, the faces' heat: filled by grid_ and heat_
+  fv::Grid grid_;
+  std::vector<double> source_;  // W per cell from the fixed flux, before the part's films
+  fv::HeatInput heat_;
+  System system_;
+  std::unique_ptr<IcCg> ic_;
+  std::unique_ptr<DiagonalCg> diagonal_;
+  double preconditioner_seconds_ = 0;
+};
+
+std::vector<double> coolants_of(const Model& model) {
+  std::vector<double> out;
+  for (const Channel& c : model.channels) out.push_back(c.coolant);
+  return out;
 }
+
+}  // namespace
 
 // Each bore's coolant at its mean along the bore: the inlet's plus, over the circuit's capacity
 // rate, the heat of the bores upstream and half its own. The heat depends on the coolant only
@@ -283,16 +326,18 @@ static FvResult solve_at_coolants(const Model& model, const Samples& samples, co
 // change by about that share (a few % at 2-8 l/min), so two or three solves bring the last step
 // under kTolerance. One that does not settle in kMaxSolves is reported as not converged.
 FvResult solve_finite_volume(const Model& model, const Samples& samples, const FvOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const Assembled assembled(model, options);
+  std::vector<double> coolant = coolants_of(model);
   const bool warms = std::any_of(model.channels.begin(), model.channels.end(),
                                  [](const Channel& c) { return c.circuit >= 0 && c.capacity > 0; });
-  if (!warms) return solve_at_coolants(model, samples, options);
   constexpr double kTolerance = 0.02;  // K, the largest change of a bore's coolant in the last step
   constexpr int kMaxSolves = 8;
-  const auto start = std::chrono::steady_clock::now();
-  Model warmed = model;
   FvResult result;
   for (int solve = 1;; ++solve) {
-    result = solve_at_coolants(warmed, samples, options);
+    result = assembled.solve(coolant, samples);
+    result.coolant_solves = solve;
+    if (!warms) break;
     double change = 0;
     for (std::size_t c = 0; c < model.channels.size(); ++c) {
       const Channel& ch = model.channels[c];
@@ -301,11 +346,10 @@ FvResult solve_finite_volume(const Model& model, const Samples& samples, const F
       for (std::size_t d = 0; d < model.channels.size(); ++d)
         if (d != c && model.channels[d].circuit == ch.circuit && model.channels[d].position < ch.position)
           upstream += result.heat_to_channel[d];
-      const double coolant = ch.coolant + upstream / ch.capacity;
-      change = std::max(change, std::abs(coolant - warmed.channels[c].coolant));
-      warmed.channels[c].coolant = coolant;
+      const double next = ch.coolant + upstream / ch.capacity;
+      change = std::max(change, std::abs(next - coolant[c]));
+      coolant[c] = next;
     }
-    result.coolant_solves = solve;
     if (change <= kTolerance) break;
     if (solve == kMaxSolves) {
       result.converged = false;
