@@ -61,7 +61,11 @@ std::vector<CircuitPath> circuit_paths(const mold::Layout& layout) {
     CircuitPath p;
     p.circuit = circuit;
     p.bores = bores;
-    p.diameter = layout.bores[bores.front()].diameter;
+    const mold::Bore& first = layout.bores[bores.front()];
+    p.diameter = first.diameter;
+    p.kind = first.kind;
+    p.passage = wall_passage(first);
+    p.tube_inner = first.tube_inner;
     for (std::size_t k = 0; k < bores.size(); ++k) {
       const mold::Bore& b = layout.bores[bores[k]];
       const geometry::Vec3 along = b.flow_end - b.flow_start;
@@ -77,8 +81,39 @@ std::vector<CircuitPath> circuit_paths(const mold::Layout& layout) {
   return paths;
 }
 
+namespace {
+
+// A baffle's or bubbler's drop (pressure_drop's comment).
+PressureDrop blind_drop(const CircuitPath& path, double litres_per_minute, const WaterProperties& water,
+                        double roughness_mm) {
+  PressureDrop p;
+  const double dh = path.passage.hydraulic_diameter;
+  const PassageFlow wall = passage_flow(path.passage, litres_per_minute, water);
+  p.velocity = wall.velocity, p.reynolds = wall.reynolds;
+  p.friction = darcy_friction(p.reynolds, roughness_mm / dh);
+  const double dynamic = water.density * p.velocity * p.velocity / 2;
+  const double L = path.length * 1e-3;  // m, entry to tip
+  if (path.kind == mold::CircuitKind::Baffle) {
+    p.pipe = p.friction * (2 * L / (dh * 1e-3)) * dynamic;
+    p.turns = 2 * turn_loss(pi / 2) * dynamic;
+    p.ports = (kInletLoss + kOutletLoss) * dynamic;
+    return p;
+  }
+  const double di = path.tube_inner;
+  const WallPassage tube{pi * di * di / 4, di, 1};
+  const PassageFlow up = passage_flow(tube, litres_per_minute, water);
+  const double tube_dynamic = water.density * up.velocity * up.velocity / 2;
+  p.pipe = (p.friction * dynamic / (dh * 1e-3) + darcy_friction(up.reynolds, roughness_mm / di) * tube_dynamic / (di * 1e-3)) * L;
+  p.turns = 1.0 * tube_dynamic + 0.5 * dynamic;
+  p.ports = kInletLoss * tube_dynamic + kOutletLoss * dynamic;
+  return p;
+}
+
+}  // namespace
+
 PressureDrop pressure_drop(const CircuitPath& path, double litres_per_minute, const WaterProperties& water,
                            double roughness_mm) {
+  if (is_blind(path.kind)) return blind_drop(path, litres_per_minute, water, roughness_mm);
   PressureDrop p;
   const double d = path.diameter * 1e-3;
   p.velocity = litres_per_minute * kLitresPerMinute / area(path.diameter);
@@ -223,13 +258,14 @@ CoolantCircuits coolant_circuits(const mold::Layout& layout, const mold::MoldSpe
     CircuitHydraulics c;
     c.circuit = p.circuit;
     c.bores = int(p.bores.size());
-    c.turns = int(p.turns.size());
+    c.turns = is_blind(p.kind) ? 1 : int(p.turns.size());
+    c.kind = p.kind;
     c.diameter = p.diameter;
     c.length = p.length;
     c.flow = flows[k];
     c.drop = pressure_drop(p, c.flow, water, t.roughness);
     c.regime = regime(c.drop.reynolds);
-    c.film = coolant_film(c.flow, c.diameter, t.coolant_temperature) * 1e6;
+    c.film = wall_film(layout.bores[std::size_t(p.bores.front())], c.flow, t.coolant_temperature) * 1e6;
     c.coolant_in = c.coolant_out = t.coolant_temperature;
     c.heat_known = heat_known;
     if (heat_known) {

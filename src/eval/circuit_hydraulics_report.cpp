@@ -26,7 +26,9 @@ std::string coolant_circuits_text(const CoolantCircuits& cc) {
         << "%" << std::setprecision(2) << std::setw(10) << c.coolant_out << std::setw(8) << c.rise;
     else
       s << std::setw(8) << "-" << std::setw(7) << "-" << std::setw(10) << "-" << std::setw(8) << "-";
-    s << std::setprecision(0) << std::setw(16) << c.film << "\n";
+    s << std::setprecision(0) << std::setw(16) << c.film;
+    if (is_blind(c.kind)) s << "  (" << mold::to_string(c.kind) << ")";
+    s << "\n";
   }
   if (cc.checks.empty()) s << "  shop checks passed (Reynolds, coolant rise, pressure drop, balance)\n";
   for (const ShopCheck& c : cc.checks) s << "  shop check: " << c.text() << "\n";
@@ -40,6 +42,7 @@ nlohmann::ordered_json coolant_circuits_json(const CoolantCircuits& cc) {
   j["circuits"] = nlohmann::ordered_json::array();
   for (const CircuitHydraulics& c : cc.circuits) {
     nlohmann::ordered_json row{{"circuit", c.circuit},
+                               {"kind", mold::to_string(c.kind)},
                                {"bores", c.bores},
                                {"turns", c.turns},
                                {"diameter", c.diameter},

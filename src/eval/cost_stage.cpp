@@ -1,6 +1,6 @@
 // Manufacturing cost (shared/notes/mtcs_literature.md 7.4, f3): per hole a setup cost plus a
-// cost per drilled mm that grows for deep holes, plus a cost per plug:
-//   sum_holes [setup + per_mm L (1 + deep_factor max(0, L/D - 10))] + plug n_plugs.
+// cost per drilled mm that grows for deep holes, plus a cost per plug and per baffle or bubbler:
+//   sum_holes [setup + per_mm L (1 + deep_factor max(0, L/D - 10))] + plug n_plugs + insert n_inserts.
 
 #include <algorithm>
 
@@ -13,6 +13,7 @@ double drilling_cost(const mold::Layout& layout, const mold::Objectives& o) {
   for (const mold::Bore& b : layout.bores) {
     const double L = b.drilled_length;
     cost += o.cost_setup + o.cost_per_mm * L * (1 + o.cost_deep_factor * std::max(0.0, L / b.diameter - 10));
+    if (is_blind(b.kind)) cost += o.cost_insert;
   }
   return cost;
 }

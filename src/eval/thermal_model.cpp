@@ -7,6 +7,7 @@
 #include "mtcs/eval/coolant.h"
 #include "mtcs/eval/cycle_time.h"
 #include "mtcs/eval/part_coupling.h"
+#include "mtcs/eval/wall_passage.h"
 #include "surface_samples.h"
 
 namespace mtcs::eval {
@@ -165,7 +166,7 @@ std::vector<thermal::Channel> thermal_channels(const mold::Layout& layout, const
     c.radius = b.diameter / 2;
     c.coolant = t.coolant_temperature;
     if (t.coolant_film) c.film = *t.coolant_film;
-    else if (flow_of(i) > 0) c.film = coolant_film(flow_of(i), b.diameter, t.coolant_temperature);
+    else if (flow_of(i) > 0) c.film = wall_film(b, flow_of(i), t.coolant_temperature);
     if (t.coolant_rise && flow_of(i) > 0) {
       c.circuit = b.circuit;
       c.position = b.segment;

@@ -78,9 +78,41 @@ void route(const Scene& scene, const Circuit& circuit, std::vector<Vec3>& pts, s
   }
 }
 
+double drill_point(const Drilling& drill, double diameter) {
+  return 0.5 * diameter / std::tan(drill.tip_angle_deg * pi / 360);
+}
+
 }  // namespace
 
+BlindAxis blind_axis(const Scene& scene, const Circuit& circuit) {
+  const Box& block = scene.block_bounds();
+  const Drilling& drill = scene.spec().drilling;
+  const std::vector<Face>& faces = drill.baffles ? drill.baffles->faces : drill.allowed_faces;
+  const Vec3 at = circuit.waypoints.front(), to = circuit.waypoints.back();
+  Face face = faces.front();
+  for (const Face f : faces)
+    if (std::abs(at[axis_of(f)] - face_plane(block, f)) < std::abs(at[axis_of(face)] - face_plane(block, face))) face = f;
+  const int k = axis_of(face);
+  const Vec3 inward = -normal_of(face);
+  BlindAxis a;
+  a.face = face;
+  a.entry = at;
+  a.entry[k] = face_plane(block, face);
+  for (int j = 0; j < 3; ++j)
+    if (j != k) a.entry[j] = std::clamp(a.entry[j], block.min[j], block.max[j]);
+  // At least a diameter deep, and the drill point inside the block.
+  const double D = circuit.diameter;
+  const double deepest = std::max(D, block.size()[k] - drill_point(drill, D) - 1e-6 * block.size()[k]);
+  const double depth = std::clamp((to - a.entry).dot(inward), D, deepest);
+  a.tip = a.entry + depth * inward;
+  return a;
+}
+
 std::vector<Vec3> routed_waypoints(const Scene& scene, const Circuit& circuit) {
+  if (is_blind(circuit.kind)) {
+    const BlindAxis a = blind_axis(scene, circuit);
+    return {a.entry, a.tip};
+  }
   std::vector<Vec3> pts, merged;
   route(scene, circuit, pts, merged);
   return merged;
@@ -89,7 +121,7 @@ std::vector<Vec3> routed_waypoints(const Scene& scene, const Circuit& circuit) {
 Genome drilled_genome(const Scene& scene, const Genome& genome) {
   Genome out;
   for (const Circuit& c : genome.circuits) {
-    Circuit d{routed_waypoints(scene, c), c.diameter};
+    Circuit d{routed_waypoints(scene, c), c.diameter, c.kind};
     if (d.waypoints.size() >= 2) out.circuits.push_back(std::move(d));
   }
   return out;
@@ -107,6 +139,27 @@ Layout decode(const Scene& scene, const Genome& genome) {
   static thread_local std::vector<Vec3> legs, pts;
   for (std::size_t c = 0; c < genome.circuits.size(); ++c) {
     const Circuit& circuit = genome.circuits[c];
+    if (is_blind(circuit.kind)) {
+      if (circuit.waypoints.empty()) continue;
+      const BlindAxis a = blind_axis(scene, circuit);
+      const std::vector<Face>& faces = drill.baffles ? drill.baffles->faces : drill.allowed_faces;
+      Bore b;
+      b.hole = {a.entry, a.tip - drill_point(drill, circuit.diameter) * normal_of(a.face), circuit.diameter / 2};
+      b.flow_start = a.entry;
+      b.flow_end = a.tip;
+      b.entry_face = a.face;
+      b.entry_allowed = contains(faces, a.face);
+      b.drilled_length = (b.hole.p1 - b.hole.p0).norm();
+      b.diameter = circuit.diameter;
+      b.circuit = int(c);
+      b.kind = circuit.kind;
+      if (circuit.kind == CircuitKind::Bubbler) {
+        const BaffleSpec tube = drill.baffles ? *drill.baffles : BaffleSpec{};
+        b.tube_outer = tube.tube_outer * circuit.diameter, b.tube_inner = tube.tube_inner * circuit.diameter;
+      }
+      layout.bores.push_back(b);
+      continue;
+    }
     route(scene, circuit, legs, pts);
     if (pts.size() < 2) continue;
     const double inlet_off = off_faces(scene.block_bounds(), pts.front(), spec.circuits.inlet_faces);
@@ -115,8 +168,7 @@ Layout decode(const Scene& scene, const Genome& genome) {
     if (outlet_off > port_tol) layout.ports.push_back({int(c), false, outlet_off});
 
     const double D = circuit.diameter;
-    const double tip = 0.5 * D / std::tan(drill.tip_angle_deg * pi / 360);
-    const double overshoot = tip + drill.min_overlap;
+    const double overshoot = drill_point(drill, D) + drill.min_overlap;
     const int n = int(pts.size()) - 1;  // flow segments
     const int first = int(layout.bores.size());
     for (int j = 1; j <= n; ++j) {

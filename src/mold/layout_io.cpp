@@ -75,9 +75,42 @@ void check_circuit(const YamlReader& r, const YAML::Node& w, const std::string& 
   }
 }
 
+// A baffle's or bubbler's two waypoints: the entry on a face of drilling.baffles.faces, the tip
+// straight below it (within kLayoutSnap), deep enough and inside the block.
+void check_blind(const YamlReader& r, const YAML::Node& node, const std::string& path, const MoldSpec& spec,
+                 const Box& block, int c, Circuit& circuit) {
+  const std::string who = "circuit " + std::to_string(c) + " (" + to_string(circuit.kind) + ")";
+  if (!spec.drilling.baffles)
+    r.fail(node["kind"], path + ".kind", who + ": the mold spec allows no baffles or bubblers; add drilling.baffles: {faces: [...]}");
+  const YAML::Node& w = node["waypoints"];
+  if (circuit.waypoints.size() != 2)
+    r.fail(w, path + ".waypoints", who + " is one blind hole: give two waypoints, the entry on a face and the tip");
+  const std::vector<Face>& faces = spec.drilling.baffles->faces;
+  const Vec3 entry = circuit.waypoints[0], tip = circuit.waypoints[1];
+  std::optional<Face> face;
+  for (const Face f : faces)
+    if (std::abs(entry[axis_of(f)] - face_plane(block, f)) <= kLayoutSnap) face = f;
+  if (!face)
+    r.fail(w[0], indexed(path + ".waypoints", 0),
+           who + ": the entry " + point(entry) + " is on none of drilling.baffles.faces (" + faces_text(faces) + ")");
+  const int k = axis_of(*face);
+  for (int j = 0; j < 3; ++j)
+    if (j != k && std::abs(tip[j] - entry[j]) > kLayoutSnap)
+      r.fail(w[1], indexed(path + ".waypoints", 1),
+             who + ": the tip " + point(tip) + " is not straight below the entry " + point(entry) +
+                 ": a blind hole is drilled along the face's normal");
+  const double depth = (tip - entry).dot(-normal_of(*face));
+  if (depth < circuit.diameter)
+    r.fail(w[1], indexed(path + ".waypoints", 1), who + ": the tip is " + mm(depth) + " into the block; at least a diameter (" +
+                                                      mm(circuit.diameter) + ") is drilled");
+  if (!block.contains(tip))
+    r.fail(w[1], indexed(path + ".waypoints", 1), who + ": the tip " + point(tip) + " is outside the block");
+}
+
 }  // namespace
 
 WrittenLayout read_layout(const std::string& path, const MoldSpec& spec) {
+  const Box block = spec.block.box ? *spec.block.box : spec.block.mesh->mesh.bounds();
   const YamlReader r(path);
   const YAML::Node root = r.load();
   r.expect_map(root, "", {"circuits"});
@@ -89,7 +122,7 @@ WrittenLayout read_layout(const std::string& path, const MoldSpec& spec) {
   Genome& g = out.genome;
   for (std::size_t c = 0; c < cs.size(); ++c) {
     const std::string cp = indexed("circuits", c);
-    r.expect_map(cs[c], cp, {"diameter", "waypoints"});
+    r.expect_map(cs[c], cp, {"diameter", "waypoints", "kind"});
     if (!cs[c]["diameter"] || !cs[c]["waypoints"]) r.fail(cs[c], cp, "a circuit needs diameter and waypoints");
     Circuit circuit;
     circuit.diameter = r.number(cs[c]["diameter"], cp + ".diameter", 1e-9, 1e9);
@@ -108,7 +141,14 @@ WrittenLayout read_layout(const std::string& path, const MoldSpec& spec) {
     bool moves = false;
     for (const Vec3& p : circuit.waypoints) moves = moves || p != circuit.waypoints.front();
     if (!moves) r.fail(w, cp + ".waypoints", "circuit " + std::to_string(c) + " drills nothing: all its waypoints are the same point");
-    check_circuit(r, w, cp + ".waypoints", spec, int(c), circuit, out.changes);
+    if (cs[c]["kind"]) {
+      const std::string name = r.text(cs[c]["kind"], cp + ".kind");
+      const std::optional<CircuitKind> kind = circuit_kind(name);
+      if (!kind) r.fail(cs[c]["kind"], cp + ".kind", "unknown kind '" + name + "': expected drilled, baffle or bubbler");
+      circuit.kind = *kind;
+    }
+    if (is_blind(circuit.kind)) check_blind(r, cs[c], cp, spec, block, int(c), circuit);
+    else check_circuit(r, w, cp + ".waypoints", spec, int(c), circuit, out.changes);
     g.circuits.push_back(std::move(circuit));
   }
   return out;
@@ -122,6 +162,7 @@ void save_layout(const std::string& path, const Genome& genome) {
   out << YAML::BeginMap << YAML::Key << "circuits" << YAML::Value << YAML::BeginSeq;
   for (const Circuit& c : genome.circuits) {
     out << YAML::BeginMap << YAML::Key << "diameter" << YAML::Value << io::shortest(c.diameter);
+    if (is_blind(c.kind)) out << YAML::Key << "kind" << YAML::Value << to_string(c.kind);
     out << YAML::Key << "waypoints" << YAML::Value << YAML::BeginSeq;
     // The fewest digits that read back exactly: a rounded layout reads 35.12, not 35.119999999999997.
     for (const Vec3& p : c.waypoints)
@@ -153,7 +194,7 @@ void save_holes_csv(const std::string& path, const Layout& layout) {
   auto& out = file.stream();
   const auto n = [](double v) { return io::shortest(v); };
   out << "hole,circuit,entry_x,entry_y,entry_z,direction_x,direction_y,direction_z,diameter,depth,entry_face,"
-         "plug_x,plug_y,plug_z\n";
+         "plug_x,plug_y,plug_z,insert\n";
   for (const Bore& b : layout.bores) {
     const Vec3 axis = b.hole.p1 - b.hole.p0;
     const double depth = axis.norm();
@@ -163,8 +204,9 @@ void save_holes_csv(const std::string& path, const Layout& layout) {
     out << b.name() << ',' << b.circuit << ',' << n(b.hole.p0.x()) << ',' << n(b.hole.p0.y()) << ',' << n(b.hole.p0.z())
         << ',' << dir(u.x()) << ',' << dir(u.y()) << ',' << dir(u.z()) << ',' << n(b.diameter) << ',' << n(depth) << ','
         << to_string(b.entry_face);
-    if (b.plugged) out << ',' << n(b.hole.p0.x()) << ',' << n(b.hole.p0.y()) << ',' << n(b.hole.p0.z()) << '\n';
-    else out << ",,,\n";
+    if (b.plugged) out << ',' << n(b.hole.p0.x()) << ',' << n(b.hole.p0.y()) << ',' << n(b.hole.p0.z());
+    else out << ",,,";
+    out << ',' << (is_blind(b.kind) ? to_string(b.kind) : "") << '\n';
   }
   file.commit();
 }

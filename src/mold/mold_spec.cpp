@@ -270,9 +270,39 @@ KeepOut parse_keep_out(const YamlReader& r, const YAML::Node& n, const std::stri
   return k;
 }
 
+// `baffles: true`: the defaults; false: none.
+std::optional<BaffleSpec> parse_baffles(const YamlReader& r, const YAML::Node& n) {
+  BaffleSpec b;
+  if (n.IsScalar()) return r.boolean(n, "drilling.baffles") ? std::optional(b) : std::nullopt;
+  r.expect_map(n, "drilling.baffles", {"faces", "kinds", "max", "tube"});
+  if (n["faces"]) b.faces = parse_faces(r, n["faces"], "drilling.baffles.faces");
+  if (n["kinds"]) {
+    const YAML::Node& k = n["kinds"];
+    r.expect_sequence(k, "drilling.baffles.kinds");
+    b.kinds.clear();
+    for (std::size_t i = 0; i < k.size(); ++i) {
+      const std::string name = r.text(k[i], at("drilling.baffles.kinds", i));
+      const std::optional<CircuitKind> kind = circuit_kind(name);
+      if (!kind || *kind == CircuitKind::Drilled)
+        r.fail(k[i], at("drilling.baffles.kinds", i), "unknown kind '" + name + "': expected baffle or bubbler");
+      b.kinds.push_back(*kind);
+    }
+    if (b.kinds.empty()) r.fail(k, "drilling.baffles.kinds", "at least one of baffle, bubbler");
+  }
+  if (n["max"]) b.max = r.integer(n["max"], "drilling.baffles.max", 0, 1000);
+  if (n["tube"]) {
+    const YAML::Node& t = n["tube"];
+    if (!t.IsSequence() || t.size() != 2)
+      r.fail(t, "drilling.baffles.tube", "expected [outside, inside]: the bubbler tube's diameters over the bore's, e.g. [0.7, 0.55]");
+    b.tube_outer = r.number(t[0], "drilling.baffles.tube[0]", 0.1, 0.95);
+    b.tube_inner = r.number(t[1], "drilling.baffles.tube[1]", 0.05, b.tube_outer - 1e-3);
+  }
+  return b;
+}
+
 Drilling parse_drilling(const YamlReader& r, const YAML::Node& n) {
   r.expect_map(n, "drilling", {"diameters", "axis_parallel", "max_angle_deg", "allowed_faces",
-                               "max_depth_ratio", "tip_angle_deg", "min_overlap", "access_map"});
+                               "max_depth_ratio", "tip_angle_deg", "min_overlap", "access_map", "baffles"});
   Drilling d;
   if (n["diameters"]) {
     r.expect_sequence(n["diameters"], "drilling.diameters");
@@ -301,6 +331,7 @@ Drilling parse_drilling(const YamlReader& r, const YAML::Node& n) {
     if (m["entry_step"]) a.entry_step = r.number(m["entry_step"], "drilling.access_map.entry_step", 1e-3, kHuge);
     d.access_map = a;
   }
+  if (n["baffles"]) d.baffles = parse_baffles(r, n["baffles"]);
   return d;
 }
 
@@ -369,11 +400,12 @@ Objectives parse_objectives(const YamlReader& r, const YAML::Node& n) {
     o.target_wall_distance = parse_length(r, n["target_wall_distance"], "objectives.target_wall_distance");
   if (n["cost"]) {
     const YAML::Node& c = n["cost"];
-    r.expect_map(c, "objectives.cost", {"setup", "per_mm", "deep_factor", "plug"});
+    r.expect_map(c, "objectives.cost", {"setup", "per_mm", "deep_factor", "plug", "insert"});
     if (c["setup"]) o.cost_setup = r.number(c["setup"], "objectives.cost.setup", 0, kHuge);
     if (c["per_mm"]) o.cost_per_mm = r.number(c["per_mm"], "objectives.cost.per_mm", 0, kHuge);
     if (c["deep_factor"]) o.cost_deep_factor = r.number(c["deep_factor"], "objectives.cost.deep_factor", 0, kHuge);
     if (c["plug"]) o.cost_plug = r.number(c["plug"], "objectives.cost.plug", 0, kHuge);
+    if (c["insert"]) o.cost_insert = r.number(c["insert"], "objectives.cost.insert", 0, kHuge);
   }
   if (n["production"]) {
     const YAML::Node& p = n["production"];
@@ -650,6 +682,21 @@ MoldSpec load_mold_spec(const std::string& path) {
   check_scene(r, root, s);
   if (s.cavity) check_samples(r, root["cavity"], *s.cavity);
   return s;
+}
+
+std::string to_string(CircuitKind k) {
+  switch (k) {
+    case CircuitKind::Drilled: return "drilled";
+    case CircuitKind::Baffle: return "baffle";
+    case CircuitKind::Bubbler: return "bubbler";
+  }
+  return "drilled";
+}
+
+std::optional<CircuitKind> circuit_kind(const std::string& name) {
+  for (const CircuitKind k : {CircuitKind::Drilled, CircuitKind::Baffle, CircuitKind::Bubbler})
+    if (to_string(k) == name) return k;
+  return std::nullopt;
 }
 
 std::string to_string(Face f) {

@@ -17,6 +17,33 @@ using geometry::Vec3;
 using mold::axis_of;
 using mold::face_plane;
 
+namespace {
+
+// A circuit's diameter slot holds its diameter's index plus kKindCode times its kind (0 drilled,
+// 1 baffle, 2 bubbler): genotypes stored before baffles read as drilled.
+constexpr int kKindCode = 100;
+
+mold::CircuitKind kind_of_code(int code) {
+  switch (code / kKindCode) {
+    case 1: return mold::CircuitKind::Baffle;
+    case 2: return mold::CircuitKind::Bubbler;
+    default: return mold::CircuitKind::Drilled;
+  }
+}
+
+int count_blind(const mold::Genome& g) {
+  return int(std::count_if(g.circuits.begin(), g.circuits.end(), [](const mold::Circuit& c) { return is_blind(c.kind); }));
+}
+
+// The index of the k-th circuit that is (or is not) blind.
+std::size_t nth_circuit(const mold::Genome& g, bool blind, int k) {
+  for (std::size_t i = 0; i < g.circuits.size(); ++i)
+    if (is_blind(g.circuits[i].kind) == blind && k-- == 0) return i;
+  return g.circuits.size();
+}
+
+}  // namespace
+
 MoldProblem::MoldProblem(const eval::Pipeline& pipeline, std::vector<double> weights, MutationRates rates,
                          std::optional<mold::PenaltyVariant> penalty, const eval::Pipeline* screen)
     : pipeline_(pipeline), screen_(screen), spec_(pipeline.scene().spec()), block_(pipeline.scene().block_bounds()),
@@ -44,7 +71,9 @@ mold::Genome MoldProblem::genome(const opt::Genotype& g) const {
   out.circuits.reserve(std::size_t(std::max(circuits, 0)));  // one allocation each, not one per doubling
   for (int c = 0; c < circuits; ++c) {
     mold::Circuit circuit;
-    circuit.diameter = diameters[std::size_t(std::clamp(int(g[i++]), 0, int(diameters.size()) - 1))];
+    const int code = std::max(int(g[i++]), 0);
+    circuit.kind = kind_of_code(code);
+    circuit.diameter = diameters[std::size_t(std::clamp(code % kKindCode, 0, int(diameters.size()) - 1))];
     const int n = int(g[i++]);
     circuit.waypoints.reserve(std::size_t(std::max(n, 0)));
     for (int p = 0; p < n; ++p, i += 3) circuit.waypoints.emplace_back(g[i], g[i + 1], g[i + 2]);
@@ -68,7 +97,7 @@ opt::Genotype MoldProblem::encode(const mold::Genome& genome) const {
   for (const auto& c : genome.circuits) {
     const auto it = std::min_element(diameters.begin(), diameters.end(),
                                      [&](double a, double b) { return std::abs(a - c.diameter) < std::abs(b - c.diameter); });
-    g.push_back(double(it - diameters.begin()));
+    g.push_back(double(it - diameters.begin()) + kKindCode * double(int(c.kind)));
     g.push_back(double(c.waypoints.size()));
     for (const Vec3& p : c.waypoints) g.insert(g.end(), {p.x(), p.y(), p.z()});
   }
@@ -114,14 +143,39 @@ mold::Circuit MoldProblem::random_circuit(opt::Rng& rng) const {
   return c;
 }
 
+mold::Circuit MoldProblem::random_blind(opt::Rng& rng) const {
+  // Straight down from a baffle face, over the part, its tip anywhere across the part's depth.
+  const mold::BaffleSpec& b = *spec_.drilling.baffles;
+  const geometry::Box& r = region_;
+  mold::Circuit c;
+  c.kind = b.kinds[std::size_t(rng.below(int(b.kinds.size())))];
+  c.diameter = spec_.drilling.diameters[std::size_t(rng.below(int(spec_.drilling.diameters.size())))];
+  const mold::Face face = b.faces[std::size_t(rng.below(int(b.faces.size())))];
+  Vec3 entry(r.min.x() + rng.uniform() * r.size().x(), r.min.y() + rng.uniform() * r.size().y(),
+             r.min.z() + rng.uniform() * r.size().z());
+  Vec3 tip = entry;
+  entry[axis_of(face)] = face_plane(block_, face);
+  c.waypoints = {entry, tip};
+  repair(c);
+  return c;
+}
+
 opt::Genotype MoldProblem::sample(opt::Rng& rng) const {
   mold::Genome g;
   const int k = spec_.circuits.min + rng.below(spec_.circuits.max - spec_.circuits.min + 1);
   for (int c = 0; c < k; ++c) g.circuits.push_back(random_circuit(rng));
+  if (spec_.drilling.baffles)
+    for (int n = rng.below(spec_.drilling.baffles->max + 1); n > 0; --n) g.circuits.push_back(random_blind(rng));
   return encode(g);
 }
 
 void MoldProblem::repair(mold::Circuit& c) const {
+  if (is_blind(c.kind)) {
+    // The drilled axis (entry on its face, the tip straight below, at least a diameter deep).
+    const mold::BlindAxis a = mold::blind_axis(pipeline_.scene(), c);
+    c.waypoints = {a.entry, a.tip};
+    return;
+  }
   for (Vec3& p : c.waypoints) p = p.cwiseMax(block_.min).cwiseMin(block_.max);
   auto snap = [&](Vec3& p, const std::vector<mold::Face>& faces) {
     mold::Face best = faces.front();
@@ -161,15 +215,35 @@ long MoldProblem::mutate_within(opt::Genotype& x, const std::vector<double>& ste
   if (rates_.moves > 0)
     for (const auto& c : g.circuits) parts += movable_parts(c);
   const double move_probability = parts > 0 ? std::min(1.0, rates_.moves / parts) : 1.0;
-  // Structural moves.
+  // Structural moves (circuits.min and max count the drilled circuits; drilling.baffles.max the blind).
   if (rng.uniform() < rates_.circuit) {
-    if (int(g.circuits.size()) < lim.max && (rng.uniform() < 0.5 || int(g.circuits.size()) <= lim.min))
+    const int drilled = int(g.circuits.size()) - count_blind(g);
+    if (drilled < lim.max && (rng.uniform() < 0.5 || drilled <= lim.min))
       g.circuits.push_back(random_circuit(rng));
-    else if (int(g.circuits.size()) > lim.min)
-      g.circuits.erase(g.circuits.begin() + rng.below(int(g.circuits.size())));
+    else if (drilled > lim.min)
+      g.circuits.erase(g.circuits.begin() + std::ptrdiff_t(nth_circuit(g, false, rng.below(drilled))));
+  }
+  if (spec_.drilling.baffles && rng.uniform() < rates_.baffle) {
+    const int blind = count_blind(g);
+    if (blind < spec_.drilling.baffles->max && (rng.uniform() < 0.5 || blind == 0))
+      g.circuits.push_back(random_blind(rng));
+    else if (blind > 0)
+      g.circuits.erase(g.circuits.begin() + std::ptrdiff_t(nth_circuit(g, true, rng.below(blind))));
   }
   for (auto& c : g.circuits) {
     auto& w = c.waypoints;
+    if (is_blind(c.kind)) {
+      // One hole: a bigger or smaller drill, the entry across the face, the tip deeper or shallower.
+      if (rng.uniform() < rates_.diameter) {
+        const auto& d = spec_.drilling.diameters;
+        int idx = int(std::find(d.begin(), d.end(), c.diameter) - d.begin());
+        idx = std::clamp(idx + (rng.uniform() < 0.5 ? -1 : 1), 0, int(d.size()) - 1);
+        c.diameter = d[std::size_t(idx)];
+      }
+      moved += move_some(c, sigma, rates_.moves > 0 ? move_probability : 1.0, rng);
+      repair(c);
+      continue;
+    }
     if (rng.uniform() < rates_.insert && int(w.size()) < lim.max_waypoints) {
       const int seg = rng.below(int(w.size()) - 1);
       const Vec3 p = w[std::size_t(seg)] + rng.uniform() * (w[std::size_t(seg + 1)] - w[std::size_t(seg)]);
@@ -216,7 +290,7 @@ long MoldProblem::mutate_within(opt::Genotype& x, const std::vector<double>& ste
     mold::Circuit& c = g.circuits[std::size_t(rng.below(int(g.circuits.size())))];
     move_some(c, sigma, 1.0, rng);
     repair(c);
-    if (access_) {
+    if (access_ && !is_blind(c.kind)) {
       aim_bores(*access_, pipeline_.scene(), c, rng);
       repair(c);
     }
@@ -248,6 +322,7 @@ void MoldProblem::jog(mold::Circuit& c, opt::Rng& rng) const {
 }
 
 int MoldProblem::movable_parts(const mold::Circuit& c) const {
+  if (is_blind(c.kind)) return 3;  // across the face (two) and the depth
   if (!spec_.drilling.axis_parallel) return int(c.waypoints.size());
   int n = 0;
   for (int k = 0; k < 3; ++k) for_each_aligned_run(c.waypoints, k, [&](std::size_t, std::size_t) { ++n; });
@@ -257,7 +332,17 @@ int MoldProblem::movable_parts(const mold::Circuit& c) const {
 int MoldProblem::move_some(mold::Circuit& c, double sigma, double probability, opt::Rng& rng) const {
   auto& w = c.waypoints;
   int moved = 0;
-  if (spec_.drilling.axis_parallel) {
+  if (is_blind(c.kind)) {
+    // The entry's two coordinates on its face move the whole hole; the normal's, the tip alone.
+    const int normal = axis_of(mold::blind_axis(pipeline_.scene(), c).face);
+    for (int k = 0; k < 3; ++k) {
+      if (rng.uniform() >= probability) continue;
+      const double shift = sigma * rng.normal();
+      if (k == normal) w.back()[k] += shift;
+      else for (Vec3& p : w) p[k] += shift;
+      ++moved;
+    }
+  } else if (spec_.drilling.axis_parallel) {
     for (int k = 0; k < 3; ++k)
       for_each_aligned_run(w, k, [&](std::size_t first, std::size_t last) {
         if (rng.uniform() >= probability) return;
@@ -295,7 +380,7 @@ bool MoldProblem::blend_circuits(mold::Genome& a, const mold::Genome& b, opt::Rn
   for (std::size_t i = 0; i < a.circuits.size() && i < b.circuits.size(); ++i) {
     auto& w = a.circuits[i].waypoints;
     const auto& v = b.circuits[i].waypoints;
-    if (w.size() != v.size()) continue;
+    if (w.size() != v.size() || a.circuits[i].kind != b.circuits[i].kind) continue;
     if (spec_.drilling.axis_parallel) {
       // One variable per hole (aligned run) as the moves: the runs must be the same in both.
       bool same = true;
@@ -341,21 +426,23 @@ bool MoldProblem::reach_worst(mold::Genome& g, opt::Rng& rng, long& evaluations)
   }
   if (!c.circuit) return false;
   // Added, or in place of the circuit nearest the sample (which does not reach it) or of any one.
+  // Only drilled circuits are counted and replaced (circuits.min and max count those).
   const auto& lim = spec_.circuits;
-  const int n = int(g.circuits.size());
-  std::size_t at = std::size_t(n);
+  const int n = int(g.circuits.size()) - count_blind(g);
+  std::size_t at = g.circuits.size();
   if (n < lim.max && (n < lim.min || n == 0 || rng.uniform() < 0.5)) {
     g.circuits.push_back(*c.circuit);
   } else {
-    at = 0;
+    at = nth_circuit(g, false, 0);
     if (rng.uniform() < 0.5) {
       double least = std::numeric_limits<double>::infinity();
       for (std::size_t k = 0; k < g.circuits.size(); ++k) {
+        if (is_blind(g.circuits[k].kind)) continue;
         const double d = wall_distance(scene, g.circuits[k], worst.point);
         if (d < least) least = d, at = k;
       }
     } else {
-      at = std::size_t(rng.below(n));
+      at = nth_circuit(g, false, rng.below(n));
     }
     g.circuits[at] = *c.circuit;
   }
@@ -387,12 +474,16 @@ opt::Genotype MoldProblem::recombine(const opt::Genotype& a, const opt::Genotype
   if (rates_.blend > 0 && rng.uniform() < rates_.blend && blend_circuits(ga, gb, rng)) return encode(ga);
   // Whole-circuit crossover: a's circuits, each swapped with probability 1/2 for b's circuit
   // whose inlet is nearest.
+  // A baffle swaps only with a baffle or bubbler, a drilled circuit with a drilled one: the counts stay.
   for (auto& c : ga.circuits) {
     if (rng.uniform() >= 0.5) continue;
-    const auto it = std::min_element(gb.circuits.begin(), gb.circuits.end(), [&](const auto& p, const auto& q) {
-      return (p.waypoints.front() - c.waypoints.front()).squaredNorm() < (q.waypoints.front() - c.waypoints.front()).squaredNorm();
-    });
-    c = *it;
+    const mold::Circuit* nearest = nullptr;
+    for (const mold::Circuit& q : gb.circuits)
+      if (is_blind(q.kind) == is_blind(c.kind) &&
+          (!nearest || (q.waypoints.front() - c.waypoints.front()).squaredNorm() <
+                           (nearest->waypoints.front() - c.waypoints.front()).squaredNorm()))
+        nearest = &q;
+    if (nearest) c = *nearest;
   }
   return encode(ga);
 }

@@ -98,7 +98,7 @@ RunConfig parse_run_config(const std::string& text, const std::string& origin,
   if (root["mutation"]) {
     const YAML::Node& m = root["mutation"];
     r.expect_map(m, "mutation",
-                 {"insert", "remove", "snap", "diameter", "circuit", "access_guided", "moves", "blend", "reach", "jog"});
+                 {"insert", "remove", "snap", "diameter", "circuit", "access_guided", "moves", "blend", "reach", "jog", "baffle"});
     if (m["insert"]) c.mutation.insert = r.number(m["insert"], "mutation.insert", 0, 1);
     if (m["remove"]) c.mutation.remove = r.number(m["remove"], "mutation.remove", 0, 1);
     if (m["snap"]) c.mutation.snap = r.number(m["snap"], "mutation.snap", 0, 1);
@@ -109,6 +109,7 @@ RunConfig parse_run_config(const std::string& text, const std::string& origin,
     if (m["blend"]) c.mutation.blend = r.number(m["blend"], "mutation.blend", 0, 1);
     if (m["reach"]) c.mutation.reach = r.number(m["reach"], "mutation.reach", 0, 1);
     if (m["jog"]) c.mutation.jog = r.number(m["jog"], "mutation.jog", 0, 1);
+    if (m["baffle"]) c.mutation.baffle = r.number(m["baffle"], "mutation.baffle", 0, 1);
   }
   return c;
 }
@@ -176,6 +177,7 @@ std::string RunConfig::to_yaml(const std::vector<std::string>& objective_names) 
       << YAML::Value << mutation.reach;
   if (mutation.blend > 0) out << YAML::Key << "blend" << YAML::Value << mutation.blend;  // older runs' configs stay as they were
   if (mutation.jog > 0) out << YAML::Key << "jog" << YAML::Value << mutation.jog;
+  if (mutation.baffle != MutationRates{}.baffle) out << YAML::Key << "baffle" << YAML::Value << mutation.baffle;
   out << YAML::EndMap;
   out << YAML::EndMap;
   std::string s = out.c_str();

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mtcs/eval/coolant.h"
+#include "mtcs/eval/wall_passage.h"
 #include "mtcs/mold/layout.h"
 #include "mtcs/mold/mold_spec.h"
 
@@ -28,17 +29,27 @@ double turn_loss(double angle);
 inline constexpr double kInletLoss = 0.5, kOutletLoss = 1.0;
 
 // One circuit as the coolant meets it: its bores' flow lengths in flow order, one diameter, the
-// turns between consecutive bores.
+// turns between consecutive bores. A baffle's or bubbler's: its blind bore, entry to tip (the
+// coolant goes down and back), and the insert.
 struct CircuitPath {
   int circuit = 0;
   std::vector<int> bores;     // indices into the layout's bores, in flow order
   double diameter = 0;        // mm
   double length = 0;          // mm, the flow's
   std::vector<double> turns;  // radians from straight on, one per junction
+  mold::CircuitKind kind = mold::CircuitKind::Drilled;
+  WallPassage passage;        // along the bore's wall
+  double tube_inner = 0;      // mm, a bubbler's tube (the flow up it)
 };
 std::vector<CircuitPath> circuit_paths(const mold::Layout& layout);
 
-// The parts of a circuit's pressure drop (Pa) at a flow of `litres_per_minute` of `water`.
+// The parts of a circuit's pressure drop (Pa) at a flow of `litres_per_minute` of `water`. The
+// velocity, Reynolds number and friction factor are the wall passage's (what the film sees). A
+// baffle: friction down and back (twice the bore's depth) in its half, the turn around the blade's
+// end as two right-angled turns; a bubbler: friction up the tube and down the annulus, the jet's
+// exit from the tube (1.0 of the tube's dynamic pressure) and the entry into the annulus (0.5);
+// the ports as a drilled circuit's, inlet at the feeding passage's velocity, outlet at the
+// returning one's.
 struct PressureDrop {
   double velocity = 0, reynolds = 0, friction = 0;  // m/s, -, Darcy's f
   double pipe = 0, turns = 0, ports = 0;            // Pa
@@ -68,7 +79,8 @@ std::vector<double> circuit_flows(std::span<const CircuitPath> paths, const mold
 std::vector<double> bore_flows(const mold::Layout& layout, const mold::MoldSpec& spec);
 
 struct CircuitHydraulics {
-  int circuit = 0, bores = 0, turns = 0;
+  int circuit = 0, bores = 0, turns = 0;  // a blind bore's one turn: at its tip
+  mold::CircuitKind kind = mold::CircuitKind::Drilled;
   double diameter = 0, length = 0;  // mm
   double flow = 0;                  // l/min
   PressureDrop drop;

@@ -16,7 +16,18 @@ namespace mtcs::mold {
 // gives the shorter hole through an allowed face (any face when neither is allowed; the
 // violation is reported). Holes extend past their far waypoint by the drill point,
 // 0.5 D cot(tip/2), plus drilling.min_overlap, unless that waypoint is the inlet or outlet.
+// A baffle's or bubbler's circuit is one blind hole: drilled from the face of
+// drilling.baffles.faces nearest its entry waypoint, along that face's inward normal, to the depth
+// of its tip waypoint (at least a diameter; the drill point inside the block), the flow from the
+// entry to the tip and back, both ports at the entry.
 Layout decode(const Scene& scene, const Genome& genome);
+
+// A blind circuit's drilled axis: its entry on the face, its tip below the entry, the face.
+struct BlindAxis {
+  geometry::Vec3 entry, tip;
+  Face face = Face::PosZ;
+};
+BlindAxis blind_axis(const Scene& scene, const Circuit& circuit);
 
 // The waypoints actually drilled, after axis-parallel routing, dropping repeated points and
 // merging straight runs.

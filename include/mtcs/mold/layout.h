@@ -25,6 +25,8 @@ struct Bore {
   double diameter = 0;
   int circuit = 0;
   int segment = 0;             // index of the flow segment in its circuit
+  CircuitKind kind = CircuitKind::Drilled;  // blind: a baffle's or bubbler's bore, flow entry -> tip and back
+  double tube_outer = 0, tube_inner = 0;    // mm, a bubbler's tube (drilling.baffles.tube)
 
   std::string name() const { return "c" + std::to_string(circuit) + ".b" + std::to_string(segment); }
 };

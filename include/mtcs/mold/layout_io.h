@@ -5,6 +5,9 @@
 //   circuits:
 //     - diameter: 8
 //       waypoints: [[0, 40, 30], [150, 40, 30], [150, 80, 30], [0, 80, 30]]
+//     - diameter: 10
+//       kind: baffle             # or bubbler: a blind hole, entry on a face then tip
+//       waypoints: [[110, 90, 120], [110, 90, 50]]
 //
 // and the drilling plan as CSV and STL for CAD.
 
@@ -36,7 +39,9 @@ struct WrittenLayout {
 // A user's layout is scored as written or refused: io::InputError (file, line, column, field)
 // on bad input, diameters not in the spec's drilling.diameters, an empty layout, a circuit whose
 // waypoints are all one point, and (with drilling.axis_parallel) a waypoint that leaves its
-// inlet's coordinate along an axis no allowed face is drilled along by more than kLayoutSnap.
+// inlet's coordinate along an axis no allowed face is drilled along by more than kLayoutSnap;
+// a baffle or bubbler without drilling.baffles, or whose entry is off those faces, whose tip is
+// not straight below the entry, less than a diameter deep or outside the block.
 // The optimiser's genomes are not read here: mold::decode repairs them silently.
 WrittenLayout read_layout(const std::string& path, const MoldSpec& spec);
 // read_layout's genome; the changes are dropped (callers that show them use read_layout).
@@ -48,7 +53,8 @@ void save_layout(const std::string& path, const Genome& genome);
 void save_bores_csv(const std::string& path, const Layout& layout);
 // holes.csv, the shop's hole table, mm: hole,circuit,entry_x,entry_y,entry_z (on the block face),
 // direction_x,direction_y,direction_z (unit, into the block),diameter,depth (entry to the drill's
-// tip),entry_face,plug_x,plug_y,plug_z (the plug at the entry of a plugged hole; empty otherwise).
+// tip),entry_face,plug_x,plug_y,plug_z (the plug at the entry of a plugged hole; empty otherwise),
+// insert (baffle or bubbler: the blind hole takes that insert; empty otherwise).
 void save_holes_csv(const std::string& path, const Layout& layout);
 // bores.stl: every hole as a closed 24-gon prism.
 void save_bores_stl(const std::string& path, const Layout& layout);

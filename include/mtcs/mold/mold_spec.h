@@ -9,6 +9,7 @@
 #include "mtcs/geometry/primitives.h"
 #include "mtcs/geometry/triangle_distance.h"
 #include "mtcs/mesh/triangle_mesh.h"
+#include "mtcs/mold/genome.h"
 
 namespace mtcs::mold {
 
@@ -87,6 +88,17 @@ struct AccessMapSpec {
   double entry_step = 1.0;  // mm
 };
 
+// Blind bores with a baffle blade or a bubbler tube (drilling.baffles, docs/coolant-circuits.md):
+// the faces they are drilled from (along the face's normal), the kinds the optimiser may lay, how
+// many per layout (besides circuits.max), and the bubbler's tube as fractions of the bore's
+// diameter (outside and inside).
+struct BaffleSpec {
+  std::vector<Face> faces{Face::PosZ};
+  std::vector<CircuitKind> kinds{CircuitKind::Baffle, CircuitKind::Bubbler};
+  int max = 2;
+  double tube_outer = 0.7, tube_inner = 0.55;
+};
+
 struct Drilling {
   std::vector<double> diameters{8.0};
   bool axis_parallel = true;
@@ -96,6 +108,7 @@ struct Drilling {
   double tip_angle_deg = 118;        // drill point angle: overshoot 0.5 D cot(tip/2)
   double min_overlap = 0;            // extra length beyond a junction, mm
   std::optional<AccessMapSpec> access_map;  // set: the `drillable` constraint and AM-guided mutation
+  std::optional<BaffleSpec> baffles;        // set: layouts may hold baffles and bubblers
 };
 
 struct Clearances {
@@ -147,6 +160,7 @@ struct Objectives {
   double scale_temperature_std_side = 1;     // K
   Length target_wall_distance{2.0, true};
   double cost_setup = 20, cost_per_mm = 0.05, cost_deep_factor = 0.02, cost_plug = 5;
+  double cost_insert = 10;  // a baffle's blade or a bubbler's tube, with its fitting
   // objectives.production, which cost_per_part needs: the lot the mold makes and what an hour
   // of the molding machine costs (the drilling cost's units).
   struct Production {

@@ -3,7 +3,8 @@
 // encodes circuits of waypoints, the mutations are the structural moves a bore set needs
 // (shared/notes/mtcs_literature.md 7.3), the score comes from the evaluation pipeline.
 //
-// Genotype layout: [K, then per circuit: diameter index, n, x0, y0, z0, ..., x(n-1), y, z].
+// Genotype layout: [K, then per circuit: diameter index + 100 x kind, n, x0, y0, z0, ..., x(n-1), y, z]
+// (kind 0 drilled, 1 baffle, 2 bubbler: mold::CircuitKind).
 // Two forms of one layout, on purpose (docs/architecture.md, "One layout"): opt and the run store
 // carry the flat opt::Genotype; the operators, the decoder and layout files work on mold::Genome.
 // genome() and encode() are the one codec between them, called once on the way into and once
@@ -21,6 +22,8 @@ namespace mtcs::run {
 
 struct MutationRates {
   double insert = 0.1, remove = 0.1, snap = 0.05, diameter = 0.05, circuit = 0.02;
+  // With drilling.baffles: the probability per offspring of adding or removing a baffle or bubbler.
+  double baffle = 0.05;
   // With drilling.access_map and angled holes: new and mutated circuits have their blocked bores
   // turned to free directions of the accessibility map at their entry (src/run/aim_bores.h).
   bool access_guided = true;
@@ -89,6 +92,8 @@ class MoldProblem final : public opt::Problem {
 
  private:
   mold::Circuit random_circuit(opt::Rng& rng) const;
+  // A baffle or bubbler of a kind drilling.baffles allows, down from one of its faces over the part.
+  mold::Circuit random_blind(opt::Rng& rng) const;
   // Puts a port back on its face (nearest allowed one) and interior points inside the block.
   void repair(mold::Circuit& c) const;
   // The holes (or waypoints) of a circuit the geometric move acts on, and the move itself: each
