@@ -25,13 +25,20 @@ Json layout_json(const mold::Layout& layout) {
                      {"plugged", b.plugged},
                      {"through", b.through},
                      {"dead_end", b.dead_end}});
+    if (is_blind(b.kind)) {
+      bores.back()["insert"] = mold::to_string(b.kind);
+      if (b.tube_outer > 0) bores.back()["tube"] = {b.tube_outer, b.tube_inner};
+    }
     auto [it, fresh] = ends.try_emplace(b.circuit, &b, &b);
     if (b.segment < it->second.first->segment) it->second.first = &b;
     if (b.segment > it->second.second->segment) it->second.second = &b;
   }
   Json ports = Json::array();
   for (const auto& [circuit, e] : ends)
-    ports.push_back({{"circuit", circuit}, {"inlet", vec_json(e.first->flow_start)}, {"outlet", vec_json(e.second->flow_end)}});
+    ports.push_back({{"circuit", circuit},
+                     {"inlet", vec_json(e.first->flow_start)},
+                     // A blind bore's coolant comes back out at its entry.
+                     {"outlet", vec_json(is_blind(e.second->kind) ? e.second->flow_start : e.second->flow_end)}});
   return {{"bores", std::move(bores)}, {"ports", std::move(ports)}, {"circuits", ends.size()}, {"plugs", layout.plugs}};
 }
 

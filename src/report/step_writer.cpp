@@ -42,7 +42,9 @@ void write_step(const std::string& path, const mold::Layout& layout) {
       if (axis.norm() == 0) continue;  // as bores.stl: no solid of a zero-length hole
       const gp_Ax2 frame(gp_Pnt(b.hole.p0.x(), b.hole.p0.y(), b.hole.p0.z()), gp_Dir(axis.x(), axis.y(), axis.z()));
       const TopoDS_Shape solid = BRepPrimAPI_MakeCylinder(frame, b.hole.radius, axis.norm()).Shape();
-      TDataStd_Name::Set(shapes->AddShape(solid, Standard_False), b.name().c_str());
+      // A blind bore's name says its insert: the shop fits a baffle or a bubbler there.
+      const std::string name = is_blind(b.kind) ? b.name() + " " + mold::to_string(b.kind) : b.name();
+      TDataStd_Name::Set(shapes->AddShape(solid, Standard_False), name.c_str());
     }
     Interface_Static::SetCVal("write.step.schema", "AP214IS");
     Interface_Static::SetCVal("write.step.unit", "MM");

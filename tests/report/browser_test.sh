@@ -20,6 +20,18 @@ node "$src/tests/report/report_page.mjs" "$work/report.html"
 "$mtcs" optimize "$src/molds/plate.yaml" --evaluations 60 --seed 3 --out "$work/run_coolant" --quiet
 "$mtcs" report "$work/run_coolant" --no-temperature --out "$work/report_coolant.html" --quiet
 node "$src/tests/report/report_page.mjs" "$work/report_coolant.html" --coolant
+# The plate with blind bores allowed from below, started from its layout plus a bubbler and a
+# baffle: the report draws their inserts and names them in the bores' table.
+sed 's/  allowed_faces: \[+x, -x, +y, -y\]/  allowed_faces: [+x, -x, +y, -y]\n  baffles: {faces: [-z]}/' \
+  "$src/molds/plate.yaml" > "$work/plate_baffles.yaml"
+grep -q "baffles:" "$work/plate_baffles.yaml"
+{ grep -v '^#' "$src/molds/plate.layout.yaml"
+  printf '  - {diameter: 10, kind: bubbler, waypoints: [[117.5, 100, 0], [117.5, 100, 91]]}\n'
+  printf '  - {diameter: 10, kind: baffle, waypoints: [[182.5, 100, 0], [182.5, 100, 91]]}\n'; } > "$work/plate_baffles.layout.yaml"
+"$mtcs" optimize "$work/plate_baffles.yaml" --start "$work/plate_baffles.layout.yaml" --evaluations 30 --seed 3 \
+  --out "$work/run_baffles" --quiet
+"$mtcs" report "$work/run_baffles" --no-temperature --out "$work/report_baffles.html" --quiet
+node "$src/tests/report/report_page.mjs" "$work/report_baffles.html" --baffles
 # The interference page: homer against the gear at the certified overlap placement; the pair
 # count it must list is the certified one (tests/data/mesh_interference.csv).
 row=$(grep '^homer,mcad_herringbone_gear,' "$src/tests/data/mesh_interference.csv" | awk -F, '$6 > 0' | head -1)

@@ -27,6 +27,7 @@ const reportPath = path.resolve(args[0] ?? '');
 const screenshot = option('--screenshot', null);
 const width = Number(option('--width', 1366)), height = Number(option('--height', 768));
 const expectCoolant = args.includes('--coolant');  // the report's spec has a flow and a temperature objective
+const expectBaffles = args.includes('--baffles');  // the shown layout holds baffles or bubblers
 
 function findChromium() {
   for (const candidate of [process.env.MTCS_CHROMIUM, 'chromium', 'chromium-browser', 'google-chrome']) {
@@ -113,6 +114,23 @@ try {
       bores: m.layout.bores.length, heat: !!(m.coolant && m.coolant.bores.length), disabled: box.disabled, drawn: r.coolantBores(),
       caption: document.getElementById('coolant-caption').textContent, legend: document.getElementById('legend').textContent };
   });
+  if (expectBaffles) {
+    // Each blind bore: its insert drawn (the blade or the tube) and named in the bores' table.
+    const blind = await page.evaluate(() => {
+      const r = window.mtcsReport;
+      const m = r.data.members.find((x) => x.rank === Number(document.body.dataset.shown));
+      const cells = [...document.querySelectorAll('#bores-table tbody tr')].map((tr) => tr.lastChild.textContent);
+      return { blind: m.layout.bores.filter((b) => b.insert).length, inserts: r.inserts(),
+        named: cells.filter((t) => /^blind, (baffle|bubbler)/.test(t)).length,
+        tube: cells.some((t) => /bubbler \(tube ⌀7\/5\.5 mm\)/.test(t)) };
+    });
+    console.log(`blind bores ${blind.blind}, inserts drawn ${blind.inserts}, named ${blind.named}`);
+    check(blind.blind === 2, 'the shown layout keeps its bubbler and its baffle');
+    check(blind.inserts === blind.blind && blind.named === blind.blind, 'every blind bore has its insert drawn and named');
+    check(blind.tube, "the bubbler's tube is given in mm");
+    check(errors.length === 0, `no console errors${errors.length ? ': ' + errors.join(' | ') : ''}`);
+    await finish();
+  }
   const coolant = await coolantOf();
   console.log(`coolant ${coolant.caption}: ${coolant.rows} rows, ${coolant.circuits} circuits, heat ${coolant.heat}, layer ${coolant.disabled ? 'off' : 'on'}`);
   check(coolant.rows === coolant.circuits, 'the coolant table has a row per circuit of the shown layout');

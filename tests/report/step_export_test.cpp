@@ -5,8 +5,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <fstream>
 #include <numbers>
 #include <vector>
 
@@ -132,4 +134,35 @@ TEST_CASE("export step: every bore of every bundled reference layout read back e
     }
   }
   CHECK(layouts >= 1);
+}
+
+TEST_CASE("export step: a baffle's and a bubbler's blind holes are solids named with their insert", "[report][export][step][baffle]") {
+  const path dir = mtcs_test::scratch("step", "blind");
+  mtcs_test::fs::create_directories(dir);
+  std::string spec = mtcs_test::read_text(path(MTCS_SOURCE_DIR) / "molds" / "plate.yaml");
+  const std::string faces = "  allowed_faces: [+x, -x, +y, -y]\n";
+  REQUIRE(spec.find(faces) != std::string::npos);
+  spec.replace(spec.find(faces), faces.size(), faces + "  baffles: {faces: [-z]}\n");
+  std::ofstream(dir / "plate.yaml") << spec;
+  std::ofstream(dir / "blind.layout.yaml")
+      << "circuits:\n"
+         "  - {diameter: 8, waypoints: [[70, 0, 88], [70, 150, 88], [100, 150, 88], [100, 0, 88]]}\n"
+         "  - {diameter: 10, kind: bubbler, waypoints: [[117.5, 100, 0], [117.5, 100, 91]]}\n"
+         "  - {diameter: 6, kind: baffle, waypoints: [[182.5, 100, 0], [182.5, 100, 91]]}\n";
+  const std::string args = "export " + (dir / "plate.yaml").string() + " --layout " + (dir / "blind.layout.yaml").string() + " --quiet";
+  REQUIRE(mtcs_test::run_mtcs(args + " --format step --out " + (dir / "blind.step").string()) == 0);
+  const auto solids = read_step(dir / "blind.step");
+  REQUIRE(solids.size() == 5);
+  const double point = 0.5 / std::tan(59 * std::numbers::pi / 180);  // the drill point per mm of diameter
+  for (const auto& [name, d] : {std::pair{std::string("c1.b0 bubbler"), 10.0}, std::pair{std::string("c2.b0 baffle"), 6.0}}) {
+    INFO(name);
+    const auto s = std::find_if(solids.begin(), solids.end(), [&](const StepSolid& x) { return x.name == name; });
+    REQUIRE(s != solids.end());
+    CHECK(s->radius == Approx(d / 2).epsilon(1e-9));
+    // Up from the bottom face to the tip, and the drill's point past it (the export's coordinates
+    // are the shop's, to 0.01 mm).
+    const double length = std::round((91 + point * d) * 100) / 100;
+    CHECK(s->volume == Approx(std::numbers::pi * d * d / 4 * length).epsilon(1e-9));
+    CHECK(s->centre.Z() == Approx(length / 2).epsilon(1e-9));
+  }
 }

@@ -160,6 +160,15 @@ function cylinder(p0, p1, radius, mat, segments = 28) {
   mesh.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), axis.normalize());
   return mesh;
 }
+// A flat plate `width` x `thickness` mm from p0 to p1 (a baffle's blade), across `across`.
+function blade(p0, p1, width, thickness, mat) {
+  const a = v3(p0), b = v3(p1);
+  const axis = b.clone().sub(a);
+  const mesh = new THREE.Mesh(new THREE.BoxGeometry(width, Math.max(axis.length(), 1e-6), thickness), mat);
+  mesh.position.copy(a).add(b).multiplyScalar(0.5);
+  mesh.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), axis.normalize());
+  return mesh;
+}
 function sphere(at, radius, mat) {
   const m = new THREE.Mesh(new THREE.SphereGeometry(radius, 20, 14), mat);
   m.position.copy(v3(at));
@@ -300,7 +309,22 @@ function showLayout(member) {
     return mats.get(c);
   };
   const plugMaterial = material({ color: 0x222222 });
+  const insertMaterial = material({ color: 0xb08d57 });  // brass
   for (const b of layout.bores) {
+    if (b.insert) {
+      // A blind bore drawn see-through around its insert, which stands a diameter out of the
+      // entry (the fitting): the blade or the tube, from the entry down to the tip.
+      const [start, tip] = b.flow;
+      const up = v3(start).sub(v3(tip)).normalize().multiplyScalar(b.diameter);
+      const top = v3(start).add(up).toArray();
+      boreLayer.add(cylinder(b.p0, b.p1, b.diameter / 2, seeThrough({ color: circuitColor(b.circuit), opacity: 0.45 })));
+      const insert = b.tube ? cylinder(top, tip, b.tube[0] / 2, insertMaterial)
+        : blade(top, tip, b.diameter * 0.92, Math.max(0.8, b.diameter * 0.1), insertMaterial);
+      insert.userData.insert = b.insert;
+      boreLayer.add(insert);
+      boreLayer.add(label(`c${b.circuit} ${b.insert}`, v3(top).add(up).toArray(), markSize * 1.1));
+      continue;
+    }
     boreLayer.add(cylinder(b.p0, b.p1, b.diameter / 2, boreMaterial(b.circuit)));
     if (b.plugged) boreLayer.add(cylinder(b.p0, v3(b.p0).lerp(v3(b.p1), Math.min(1, b.diameter / Math.max(b.length, 1e-9))).toArray(), b.diameter / 2 + 0.6, plugMaterial));
   }
@@ -468,7 +492,8 @@ function showTables(member) {
   fillTable($('coolant-table'), [['circuit'], ['l/min', 'num'], ['m/s', 'num'], ['Reynolds', 'num'], ['drop bar', 'num'],
     ['heat W', 'num'], ['share', 'num'], ['out °C', 'num'], ['rise K', 'num'], ['film W/(m² K)', 'num']],
     (cc ? cc.circuits : []).map((c) => el('tr', failing.has(c.circuit) ? { class: 'bad' } : {}, [
-      el('td', {}, [el('span', { class: 'dot', style: `background:${circuitColor(c.circuit)}` }), `c${c.circuit}`]),
+      el('td', {}, [el('span', { class: 'dot', style: `background:${circuitColor(c.circuit)}` }),
+        `c${c.circuit}` + (c.kind && c.kind !== 'drilled' ? ` ${c.kind}` : '')]),
       el('td', { class: 'num', text: fmt(c.flow) }), el('td', { class: 'num', text: fmt(c.velocity) }),
       el('td', { class: 'num', text: Math.round(c.reynolds).toLocaleString('en') }),
       el('td', { class: 'num', text: fmt(c.pressure_drop.total / 1e5) }),
@@ -486,7 +511,8 @@ function showTables(member) {
       el('td', { class: 'num', text: fmt(b.diameter) }), el('td', { class: 'num', text: fmt(b.length) }),
       inD(rules.get(b.name)?.depth_d, rules.get(b.name)?.depth_verdict), inD(rules.get(b.name)?.pitch_d, rules.get(b.name)?.pitch_verdict),
       el('td', { text: b.entry_face + (b.entry_angle ? ` ${fmt(b.entry_angle)}\u00b0` : '') }),
-      el('td', { text: [b.plugged ? 'plugged' : '', b.through ? 'through' : '', b.dead_end > 0 ? `dead end ${fmt(b.dead_end)} mm` : ''].filter(Boolean).join(', ') })])));
+      el('td', { text: [b.insert ? `blind, ${b.insert}` + (b.tube ? ` (tube \u2300${fmt(b.tube[0])}/${fmt(b.tube[1])} mm)` : '') : '',
+        b.plugged ? 'plugged' : '', b.through ? 'through' : '', b.dead_end > 0 ? `dead end ${fmt(b.dead_end)} mm` : ''].filter(Boolean).join(', ') })])));
 }
 
 function select(rank) {
@@ -846,6 +872,6 @@ render();
 dispose(warmUp);
 // For tests and scripts: the page is drawn.
 window.mtcsReport = { select, frames: () => frames, programs: () => (renderer ? renderer.info.programs.length : 0), data,
-  coolantBores: () => coolantLayer.children.length };
+  coolantBores: () => coolantLayer.children.length, inserts: () => boreLayer.children.filter((m) => m.userData.insert).length };
 performance.mark('mtcs-drawn');
 document.body.dataset.ready = '1';
