@@ -16,7 +16,10 @@ void add_shop_checks(Evaluation& out, std::span<const ShopCheck> checks, const m
     const mold::Bore* end = nullptr;  // the first bore in flow order, or the last for the rise
     for (const mold::Bore& b : layout.bores)
       if (b.circuit == c.circuit && (!end || (rise ? b.segment > end->segment : b.segment < end->segment))) end = &b;
-    const geometry::Vec3 where = !end ? geometry::Vec3::Zero() : rise ? end->flow_end : end->flow_start;
+    // A blind bore's coolant comes back out at its entry.
+    const geometry::Vec3 where = !end                             ? geometry::Vec3::Zero()
+                                 : rise && !is_blind(end->kind) ? end->flow_end
+                                                                : end->flow_start;
     const ViolationKind kind = rise                    ? ViolationKind::CoolantRise
                                : c.what == "reynolds" ? ViolationKind::CoolantReynolds
                                : c.what == "balance"  ? ViolationKind::CoolantBalance

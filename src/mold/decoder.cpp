@@ -88,6 +88,7 @@ BlindAxis blind_axis(const Scene& scene, const Circuit& circuit) {
   const Box& block = scene.block_bounds();
   const Drilling& drill = scene.spec().drilling;
   const std::vector<Face>& faces = drill.baffles ? drill.baffles->faces : drill.allowed_faces;
+  if (circuit.waypoints.empty()) return {};
   const Vec3 at = circuit.waypoints.front(), to = circuit.waypoints.back();
   Face face = faces.front();
   for (const Face f : faces)
@@ -143,9 +144,12 @@ Layout decode(const Scene& scene, const Genome& genome) {
       if (circuit.waypoints.empty()) continue;
       const BlindAxis a = blind_axis(scene, circuit);
       const std::vector<Face>& faces = drill.baffles ? drill.baffles->faces : drill.allowed_faces;
+      // Entered where the block's surface is (a mesh block's may lie inside its bounding box).
+      const BlockExit e = scene.exit_block(a.tip, normal_of(a.face));
+      const Vec3 entry = e.hit ? e.point : a.entry;
       Bore b;
-      b.hole = {a.entry, a.tip - drill_point(drill, circuit.diameter) * normal_of(a.face), circuit.diameter / 2};
-      b.flow_start = a.entry;
+      b.hole = {entry, a.tip - drill_point(drill, circuit.diameter) * normal_of(a.face), circuit.diameter / 2};
+      b.flow_start = entry;
       b.flow_end = a.tip;
       b.entry_face = a.face;
       b.entry_allowed = contains(faces, a.face);

@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
@@ -85,26 +86,38 @@ void check_blind(const YamlReader& r, const YAML::Node& node, const std::string&
   const YAML::Node& w = node["waypoints"];
   if (circuit.waypoints.size() != 2)
     r.fail(w, path + ".waypoints", who + " is one blind hole: give two waypoints, the entry on a face and the tip");
-  const std::vector<Face>& faces = spec.drilling.baffles->faces;
+  const BaffleSpec& baffles = *spec.drilling.baffles;
+  if (std::find(baffles.kinds.begin(), baffles.kinds.end(), circuit.kind) == baffles.kinds.end())
+    r.fail(node["kind"], path + ".kind", who + ": drilling.baffles.kinds of the mold spec does not list " + to_string(circuit.kind));
+  const std::vector<Face>& faces = baffles.faces;
   const Vec3 entry = circuit.waypoints[0], tip = circuit.waypoints[1];
-  std::optional<Face> face;
+  // The nearest face, the first on a tie: the decoder's (mold::blind_axis).
+  const auto off = [&](Face f) { return std::abs(entry[axis_of(f)] - face_plane(block, f)); };
+  Face face = faces.front();
   for (const Face f : faces)
-    if (std::abs(entry[axis_of(f)] - face_plane(block, f)) <= kLayoutSnap) face = f;
-  if (!face)
+    if (off(f) < off(face)) face = f;
+  if (off(face) > kLayoutSnap)
     r.fail(w[0], indexed(path + ".waypoints", 0),
            who + ": the entry " + point(entry) + " is on none of drilling.baffles.faces (" + faces_text(faces) + ")");
-  const int k = axis_of(*face);
+  const int k = axis_of(face);
   for (int j = 0; j < 3; ++j)
     if (j != k && std::abs(tip[j] - entry[j]) > kLayoutSnap)
       r.fail(w[1], indexed(path + ".waypoints", 1),
              who + ": the tip " + point(tip) + " is not straight below the entry " + point(entry) +
                  ": a blind hole is drilled along the face's normal");
-  const double depth = (tip - entry).dot(-normal_of(*face));
-  if (depth < circuit.diameter)
+  const double depth = (tip - entry).dot(-normal_of(face));
+  if (depth < circuit.diameter - kLayoutSnap)
     r.fail(w[1], indexed(path + ".waypoints", 1), who + ": the tip is " + mm(depth) + " into the block; at least a diameter (" +
                                                       mm(circuit.diameter) + ") is drilled");
   if (!block.contains(tip))
     r.fail(w[1], indexed(path + ".waypoints", 1), who + ": the tip " + point(tip) + " is outside the block");
+  // The drill's point past the tip stays in the block (the decoder would shorten the hole).
+  const double point_length = 0.5 * circuit.diameter / std::tan(spec.drilling.tip_angle_deg * 3.14159265358979323846 / 360);
+  const double room = block.size()[k] - depth;
+  if (room <= point_length)
+    r.fail(w[1], indexed(path + ".waypoints", 1),
+           who + ": the drill's point (" + mm(point_length) + " past the tip) would leave the block's far face, " + mm(room) +
+               " beyond the tip");
 }
 
 }  // namespace

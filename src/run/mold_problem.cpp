@@ -460,8 +460,13 @@ bool MoldProblem::reach_worst(mold::Genome& g, opt::Rng& rng, long& evaluations)
     }
   }
   std::sort(gone.rbegin(), gone.rend());
-  for (const std::size_t k : gone)
-    if (int(g.circuits.size()) > lim.min) g.circuits.erase(g.circuits.begin() + std::ptrdiff_t(k));
+  int drilled = int(g.circuits.size()) - count_blind(g);
+  for (const std::size_t k : gone) {
+    const bool blind = is_blind(g.circuits[k].kind);
+    if (!blind && drilled <= lim.min) continue;
+    g.circuits.erase(g.circuits.begin() + std::ptrdiff_t(k));
+    drilled -= blind ? 0 : 1;
+  }
   return true;
 }
 

@@ -262,7 +262,7 @@ TEST_CASE("mtcs optimize --start: the run says what the layout scores and ends n
   const auto few = mtcs_test::run_mtcs_err("optimize_cli", "optimize " + MTCS_SOURCE_DIR + "/docs/first-mold/part.yaml --start "
                                            + MTCS_SOURCE_DIR + "/docs/first-mold/first.layout.yaml --seed 1 --evaluations 300 --out " + one.string());
   CHECK(few.code == 0);
-  CHECK_THAT(few.err, Catch::Contains("has 1 circuit; the search makes 3-4 (circuits.min, circuits.max)"));
+  CHECK_THAT(few.err, Catch::Contains("has 1 drilled circuit; the search makes 3-4 (circuits.min, circuits.max)"));
 
   const auto problem = mtcs_test::run_mtcs_err("optimize_cli", "optimize --problem zdt1 --algorithm sms-emoa --start " + layout);
   CHECK(problem.code == 2);

@@ -150,6 +150,22 @@ TEST_CASE("blind bore: a layout's baffle that cannot be drilled as written is re
   e = error_of("outside.layout.yaml", blind("baffle", "[[100, 100, 0], [100, 100, 130]]"), spec);
   CHECK_THAT(std::string(e.what()), Catch::Contains("is outside the block"));
 
+  // 118 of the block's 120 mm: the drill's point (3 mm for 10 mm) would come out of the top face.
+  e = error_of("point_out.layout.yaml", blind("baffle", "[[100, 100, 0], [100, 100, 118]]"), spec);
+  CHECK(e.field() == "circuits[0].waypoints[1]");
+  CHECK_THAT(std::string(e.what()), Catch::Contains("the drill's point (3.004303 mm past the tip) would leave the block's far face, 2 mm"));
+
+  // A diameter deep within the shop's rounding (what a saved layout holds) is read.
+  CHECK(mold::read_layout(write("one_d.layout.yaml", blind("baffle", "[[100, 100, 0], [100, 100, 7.995]]", "8")), spec)
+            .genome.circuits.size() == 1);
+
+  // A kind the spec's drilling.baffles.kinds leaves out.
+  const mold::MoldSpec baffles_only = mold::load_mold_spec(mtcs_test::bundled_variant(
+      "plate", "  allowed_faces: [+x, -x, +y, -y]\n", "  allowed_faces: [+x, -x, +y, -y]\n  baffles: {faces: [-z], kinds: [baffle]}\n"));
+  e = error_of("kind_not_listed.layout.yaml", blind("bubbler", "[[100, 100, 0], [100, 100, 80]]"), baffles_only);
+  CHECK(e.field() == "circuits[0].kind");
+  CHECK_THAT(std::string(e.what()), Catch::Contains("drilling.baffles.kinds of the mold spec does not list bubbler"));
+
   // A spec without drilling.baffles takes none.
   const mold::MoldSpec plain = mold::load_mold_spec(MTCS_SOURCE_DIR + "/molds/plate.yaml");
   e = error_of("unallowed.layout.yaml", blind("baffle", "[[100, 100, 0], [100, 100, 80]]"), plain);
