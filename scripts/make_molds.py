@@ -201,7 +201,7 @@ def main(out):
         f.write(RIBBED.replace("{physics}", physics(2.5, extra=void_surface(12))))
     write_layout(os.path.join(out, "ribbed_box.layout.yaml"),
                  [(8, u_loop(70, 100, 115, 24)), (8, u_loop(120, 150, 115, 24))],
-                 "ribbed_box: the floor only; the boss stays hot (baffles are out of scope)")
+                 "ribbed_box: the floor only; the boss stays hot (no baffle or bubbler here)")
 
     # A real part: the herringbone gear of molds/meshes (LGPL-2.1, see molds/meshes/LICENSE.md).
     with open(os.path.join(out, "gear.yaml"), "w") as f:
@@ -271,6 +271,7 @@ drilling:
   diameters: [8, 10]
   axis_parallel: true
   allowed_faces: [+x, -x, +y, -y]
+  baffles: {faces: [+z], max: 2}  # blind bores down into the core, with a baffle or a bubbler
 clearances: {bore_bore: 4, bore_cavity: 1.0D, bore_surface: 3}
 circuits: {min: 1, max: 4, waypoints: [2, 14], inlet_faces: [-y], outlet_faces: [-y]}
 {physics}"""
@@ -305,6 +306,7 @@ drilling:
   axis_parallel: true
   allowed_faces: [+x, -x, +y, -y]
   max_depth_ratio: 40
+  baffles: {faces: [+z], max: 2}  # blind bores down into the core, with a baffle or a bubbler
 clearances: {bore_bore: 4, bore_cavity: 1.0D, bore_surface: 3}
 circuits: {min: 1, max: 4, waypoints: [2, 14], inlet_faces: [-y], outlet_faces: [-y]}
 {physics}"""
