@@ -193,11 +193,12 @@ void save_bores_csv(const std::string& path, const Layout& layout) {
   io::AtomicFile file(path);
   auto& out = file.stream();
   const auto n = [](double v) { return io::shortest(v); };
-  out << "name,circuit,segment,p0x,p0y,p0z,p1x,p1y,p1z,diameter,entry_face,plugged,dead_end\n";
+  out << "name,circuit,segment,p0x,p0y,p0z,p1x,p1y,p1z,diameter,entry_face,plugged,dead_end,insert\n";
   for (const Bore& b : layout.bores) {
     out << b.name() << ',' << b.circuit << ',' << b.segment << ',' << n(b.hole.p0.x()) << ',' << n(b.hole.p0.y()) << ','
         << n(b.hole.p0.z()) << ',' << n(b.hole.p1.x()) << ',' << n(b.hole.p1.y()) << ',' << n(b.hole.p1.z()) << ','
-        << n(b.diameter) << ',' << to_string(b.entry_face) << ',' << (b.plugged ? 1 : 0) << ',' << n(b.dead_end) << '\n';
+        << n(b.diameter) << ',' << to_string(b.entry_face) << ',' << (b.plugged ? 1 : 0) << ',' << n(b.dead_end) << ','
+        << (is_blind(b.kind) ? to_string(b.kind) : "") << '\n';
   }
   file.commit();
 }

@@ -96,7 +96,7 @@ TEST_CASE("blind bore: the optimiser's waypoints are put on the drilled axis", "
   CHECK(layout.bores[0].tube_inner == Approx(4.4));
 }
 
-TEST_CASE("blind bore: kinds are written and read back, and holes.csv names the insert", "[mold][baffle]") {
+TEST_CASE("blind bore: kinds are written and read back, and holes.csv and bores.csv name the insert", "[mold][baffle]") {
   const mold::Scene scene(plate_with_baffles());
   mold::Genome g;
   g.circuits.push_back({{{70, 0, 60}, {70, 150, 60}, {100, 150, 60}, {100, 0, 60}}, 8});
@@ -122,6 +122,14 @@ TEST_CASE("blind bore: kinds are written and read back, and holes.csv names the 
   CHECK_THAT(text.str(), Catch::Contains(",-z,,,,bubbler\n"));
   CHECK_THAT(text.str(), Catch::Contains(",-z,,,,baffle\n"));
   CHECK_THAT(text.str(), Catch::Contains("\nc0.b0,0,70,0,60,0,1,0,8,"));
+  // bores.csv names it too (what mtcs clearance --cylinders reads; it takes columns by name).
+  const std::string bores = write("bores.csv", "");
+  mold::save_bores_csv(bores, mold::decode(scene, back));
+  std::ifstream bin(bores);
+  std::stringstream btext;
+  btext << bin.rdbuf();
+  CHECK_THAT(btext.str(), Catch::StartsWith("name,circuit,segment,p0x,p0y,p0z,p1x,p1y,p1z,diameter,entry_face,plugged,dead_end,insert\n"));
+  CHECK_THAT(btext.str(), Catch::Contains(",-z,0,0,bubbler\n") && Catch::Contains(",-z,0,0,baffle\n"));
 }
 
 TEST_CASE("blind bore: a layout's baffle that cannot be drilled as written is refused at its field", "[mold][baffle]") {

@@ -47,7 +47,7 @@ WrittenLayout read_layout(const std::string& path, const MoldSpec& spec);
 // read_layout's genome; the changes are dropped (callers that show them use read_layout).
 Genome load_layout(const std::string& path, const MoldSpec& spec);
 void save_layout(const std::string& path, const Genome& genome);
-// bores.csv: name,circuit,segment,p0x,p0y,p0z,p1x,p1y,p1z,diameter,entry_face,plugged,dead_end
+// bores.csv: name,circuit,segment,p0x,p0y,p0z,p1x,p1y,p1z,diameter,entry_face,plugged,dead_end,insert
 // (p0 the entry on the block face, p1 the far end with the drill point; dead_end in mm); the
 // cylinders `mtcs clearance --cylinders` reads (name as id, diameter / 2 as r).
 void save_bores_csv(const std::string& path, const Layout& layout);

@@ -30,7 +30,7 @@ bool step_available();
 //  - vtp: every bore a closed tube (outward triangles), cell data circuit, bore (index in the
 //    layout) and diameter (mm);
 //  - obj: one object per bore, named as in the bores CSV (c0.b1), the same tubes;
-//  - csv: name,circuit,segment,p0x,...,p1z,diameter,entry_face,plugged,dead_end (mold/layout_io.h).
+//  - csv: name,circuit,segment,p0x,...,p1z,diameter,entry_face,plugged,dead_end,insert (mold/layout_io.h).
 void export_layout(const std::string& path, const mold::Layout& layout, ExportFormat format);
 
 // The layout of a stored run's member (by rank; default 0, the best) of a stored generation
