@@ -35,6 +35,8 @@ slow="read a coupled cup|see a plate-shaped void|shape factor converges|core kee
 slow+="|reference block at 1 mm meets|isothermal face has S|void plane: the line sinks see the plate|surface spread against the FEM"
 slow+="|through a cavity void's wall matches|infeasible children of feasible parents|ranks an infeasible layout as its penalty"
 ctest --test-dir build-asan --output-on-failure -j2 -L "$modules" -E "$slow"
-ctest --test-dir build-asan --output-on-failure -j2 -LE "$modules" -R "CSV|mutated|bad numbers|run store faults|mesh reader|hypervolume|mtcs distance|mtcs evaluate|stiff|segments|circle|mold spec|layout|pipeline|meshes|cylinder-triangle|cylinder vs box|triangle-triangle|interference:|mtcs clearance|mtcs interfere|mtcs thermal|thermal spec|wall thickness|part sides|disk cache|panel matrix|hydraulics|coolant rise: the line sinks|coolant constraints|design rules|molding over a whole face|access-map (rewrites|errors|MESH)"
+ctest --test-dir build-asan --output-on-failure -j2 -LE "$modules" -E "baffle's coolant warms" -R "CSV|mutated|bad numbers|run store faults|mesh reader|hypervolume|mtcs distance|mtcs evaluate|stiff|segments|circle|mold spec|layout|pipeline|meshes|cylinder-triangle|cylinder vs box|triangle-triangle|interference:|mtcs clearance|mtcs interfere|mtcs thermal|thermal spec|wall thickness|part sides|disk cache|panel matrix|hydraulics|coolant rise: the line sinks|coolant constraints|design rules|baffle:|bubbler:|blind bore:|molding over a whole face|access-map (rewrites|errors|MESH)"
+# (the case excluded there solves the plate's finite volumes at 4 mm: 70 s under ASan; the blind
+# bores' film and drop run in the cases kept.)
 # Coverage-guided fuzzing of every reader, a few seconds a target (skipped without clang/libFuzzer).
 if [ "${MTCS_SKIP_FUZZ:-0}" != 1 ]; then bash scripts/fuzz.sh --smoke; fi

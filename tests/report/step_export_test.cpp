@@ -154,7 +154,10 @@ TEST_CASE("export step: a baffle's and a bubbler's blind holes are solids named 
   const auto solids = read_step(dir / "blind.step");
   REQUIRE(solids.size() == 5);
   const double point = 0.5 / std::tan(59 * std::numbers::pi / 180);  // the drill point per mm of diameter
-  for (const auto& [name, d] : {std::pair{std::string("c1.b0 bubbler"), 10.0}, std::pair{std::string("c2.b0 baffle"), 6.0}}) {
+  for (const auto& [named, diameter] : {std::pair{std::string("c1.b0 bubbler"), 10.0}, std::pair{std::string("c2.b0 baffle"), 6.0}}) {
+    // Copies: clang 14 cannot capture a structured binding in a lambda.
+    const std::string name = named;
+    const double d = diameter;
     INFO(name);
     const auto s = std::find_if(solids.begin(), solids.end(), [&](const StepSolid& x) { return x.name == name; });
     REQUIRE(s != solids.end());

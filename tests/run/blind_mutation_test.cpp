@@ -16,9 +16,11 @@ using namespace mtcs;
 
 namespace {
 
+// The plate with the wall-distance objectives (no thermal model to build: the operators alone).
 const mold::MoldSpec& spec() {
   static const mold::MoldSpec s = mold::load_mold_spec(mtcs_test::bundled_variant(
-      "plate", "  allowed_faces: [+x, -x, +y, -y]\n", "  allowed_faces: [+x, -x, +y, -y]\n  baffles: {faces: [-z], max: 3}\n"));
+      "plate_wall_distance", "  allowed_faces: [+x, -x, +y, -y]\n",
+      "  allowed_faces: [+x, -x, +y, -y]\n  baffles: {faces: [-z], max: 3}\n"));
   return s;
 }
 
