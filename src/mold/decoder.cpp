@@ -78,21 +78,14 @@ void route(const Scene& scene, const Circuit& circuit, std::vector<Vec3>& pts, s
   }
 }
 
-double drill_point(const Drilling& drill, double diameter) {
-  return 0.5 * diameter / std::tan(drill.tip_angle_deg * pi / 360);
-}
-
 }  // namespace
 
 BlindAxis blind_axis(const Scene& scene, const Circuit& circuit) {
   const Box& block = scene.block_bounds();
   const Drilling& drill = scene.spec().drilling;
-  const std::vector<Face>& faces = drill.baffles ? drill.baffles->faces : drill.allowed_faces;
   if (circuit.waypoints.empty()) return {};
   const Vec3 at = circuit.waypoints.front(), to = circuit.waypoints.back();
-  Face face = faces.front();
-  for (const Face f : faces)
-    if (std::abs(at[axis_of(f)] - face_plane(block, f)) < std::abs(at[axis_of(face)] - face_plane(block, face))) face = f;
+  const Face face = nearest_face(block, at, drill.blind_faces());
   const int k = axis_of(face);
   const Vec3 inward = -normal_of(face);
   BlindAxis a;
@@ -103,7 +96,7 @@ BlindAxis blind_axis(const Scene& scene, const Circuit& circuit) {
     if (j != k) a.entry[j] = std::clamp(a.entry[j], block.min[j], block.max[j]);
   // At least a diameter deep, and the drill point inside the block.
   const double D = circuit.diameter;
-  const double deepest = std::max(D, block.size()[k] - drill_point(drill, D) - 1e-6 * block.size()[k]);
+  const double deepest = std::max(D, block.size()[k] - drill.point_length(D) - 1e-6 * block.size()[k]);
   const double depth = std::clamp((to - a.entry).dot(inward), D, deepest);
   a.tip = a.entry + depth * inward;
   return a;
@@ -143,22 +136,22 @@ Layout decode(const Scene& scene, const Genome& genome) {
     if (is_blind(circuit.kind)) {
       if (circuit.waypoints.empty()) continue;
       const BlindAxis a = blind_axis(scene, circuit);
-      const std::vector<Face>& faces = drill.baffles ? drill.baffles->faces : drill.allowed_faces;
       // Entered where the block's surface is (a mesh block's may lie inside its bounding box).
       const BlockExit e = scene.exit_block(a.tip, normal_of(a.face));
       const Vec3 entry = e.hit ? e.point : a.entry;
       Bore b;
-      b.hole = {entry, a.tip - drill_point(drill, circuit.diameter) * normal_of(a.face), circuit.diameter / 2};
+      b.hole = {entry, a.tip - drill.point_length(circuit.diameter) * normal_of(a.face), circuit.diameter / 2};
       b.flow_start = entry;
       b.flow_end = a.tip;
       b.entry_face = a.face;
-      b.entry_allowed = contains(faces, a.face);
+      b.entry_allowed = contains(drill.blind_faces(), a.face);
       b.drilled_length = (b.hole.p1 - b.hole.p0).norm();
       b.diameter = circuit.diameter;
       b.circuit = int(c);
       b.kind = circuit.kind;
       if (circuit.kind == CircuitKind::Bubbler) {
-        const BaffleSpec tube = drill.baffles ? *drill.baffles : BaffleSpec{};
+        static const BaffleSpec kDefaultTube;
+        const BaffleSpec& tube = drill.baffles ? *drill.baffles : kDefaultTube;
         b.tube_outer = tube.tube_outer * circuit.diameter, b.tube_inner = tube.tube_inner * circuit.diameter;
       }
       layout.bores.push_back(b);
@@ -172,7 +165,7 @@ Layout decode(const Scene& scene, const Genome& genome) {
     if (outlet_off > port_tol) layout.ports.push_back({int(c), false, outlet_off});
 
     const double D = circuit.diameter;
-    const double overshoot = drill_point(drill, D) + drill.min_overlap;
+    const double overshoot = drill.point_length(D) + drill.min_overlap;
     const int n = int(pts.size()) - 1;  // flow segments
     const int first = int(layout.bores.size());
     for (int j = 1; j <= n; ++j) {

@@ -91,12 +91,8 @@ void check_blind(const YamlReader& r, const YAML::Node& node, const std::string&
     r.fail(node["kind"], path + ".kind", who + ": drilling.baffles.kinds of the mold spec does not list " + to_string(circuit.kind));
   const std::vector<Face>& faces = baffles.faces;
   const Vec3 entry = circuit.waypoints[0], tip = circuit.waypoints[1];
-  // The nearest face, the first on a tie: the decoder's (mold::blind_axis).
-  const auto off = [&](Face f) { return std::abs(entry[axis_of(f)] - face_plane(block, f)); };
-  Face face = faces.front();
-  for (const Face f : faces)
-    if (off(f) < off(face)) face = f;
-  if (off(face) > kLayoutSnap)
+  const Face face = nearest_face(block, entry, faces);  // the decoder's (mold::blind_axis)
+  if (std::abs(entry[axis_of(face)] - face_plane(block, face)) > kLayoutSnap)
     r.fail(w[0], indexed(path + ".waypoints", 0),
            who + ": the entry " + point(entry) + " is on none of drilling.baffles.faces (" + faces_text(faces) + ")");
   const int k = axis_of(face);
@@ -112,7 +108,7 @@ void check_blind(const YamlReader& r, const YAML::Node& node, const std::string&
   if (!block.contains(tip))
     r.fail(w[1], indexed(path + ".waypoints", 1), who + ": the tip " + point(tip) + " is outside the block");
   // The drill's point past the tip stays in the block (the decoder would shorten the hole).
-  const double point_length = 0.5 * circuit.diameter / std::tan(spec.drilling.tip_angle_deg * 3.14159265358979323846 / 360);
+  const double point_length = spec.drilling.point_length(circuit.diameter);
   const double room = block.size()[k] - depth;
   if (room <= point_length)
     r.fail(w[1], indexed(path + ".waypoints", 1),

@@ -723,6 +723,18 @@ double face_plane(const Box& block, Face f) {
   return normal_of(f)[k] > 0 ? block.max[k] : block.min[k];
 }
 
+Face nearest_face(const Box& block, const Vec3& p, const std::vector<Face>& faces) {
+  const auto off = [&](Face f) { return std::abs(p[axis_of(f)] - face_plane(block, f)); };
+  Face best = faces.front();
+  for (const Face f : faces)
+    if (off(f) < off(best)) best = f;
+  return best;
+}
+
+double Drilling::point_length(double diameter) const {
+  return 0.5 * diameter / std::tan(tip_angle_deg * 3.14159265358979323846 / 360);
+}
+
 Face face_of_normal(const Vec3& n) {
   int k = 0;
   n.cwiseAbs().maxCoeff(&k);

@@ -31,10 +31,6 @@ mold::CircuitKind kind_of_code(int code) {
   }
 }
 
-int count_blind(const mold::Genome& g) {
-  return int(std::count_if(g.circuits.begin(), g.circuits.end(), [](const mold::Circuit& c) { return is_blind(c.kind); }));
-}
-
 // The index of the k-th circuit that is (or is not) blind.
 std::size_t nth_circuit(const mold::Genome& g, bool blind, int k) {
   for (std::size_t i = 0; i < g.circuits.size(); ++i)
@@ -234,12 +230,7 @@ long MoldProblem::mutate_within(opt::Genotype& x, const std::vector<double>& ste
     auto& w = c.waypoints;
     if (is_blind(c.kind)) {
       // One hole: a bigger or smaller drill, the entry across the face, the tip deeper or shallower.
-      if (rng.uniform() < rates_.diameter) {
-        const auto& d = spec_.drilling.diameters;
-        int idx = int(std::find(d.begin(), d.end(), c.diameter) - d.begin());
-        idx = std::clamp(idx + (rng.uniform() < 0.5 ? -1 : 1), 0, int(d.size()) - 1);
-        c.diameter = d[std::size_t(idx)];
-      }
+      if (rng.uniform() < rates_.diameter) step_diameter(c, rng);
       moved += move_some(c, sigma, rates_.moves > 0 ? move_probability : 1.0, rng);
       repair(c);
       continue;
@@ -259,12 +250,7 @@ long MoldProblem::mutate_within(opt::Genotype& x, const std::vector<double>& ste
       const int k = rng.below(3);
       w[std::size_t(i)][k] = w[std::size_t(i - 1)][k];
     }
-    if (rng.uniform() < rates_.diameter) {
-      const auto& d = spec_.drilling.diameters;
-      int idx = int(std::find(d.begin(), d.end(), c.diameter) - d.begin());
-      idx = std::clamp(idx + (rng.uniform() < 0.5 ? -1 : 1), 0, int(d.size()) - 1);
-      c.diameter = d[std::size_t(idx)];
-    }
+    if (rng.uniform() < rates_.diameter) step_diameter(c, rng);
     if (rates_.moves > 0) {
       moved += move_some(c, sigma, move_probability, rng);
     } else if (spec_.drilling.axis_parallel) {
@@ -297,6 +283,13 @@ long MoldProblem::mutate_within(opt::Genotype& x, const std::vector<double>& ste
   }
   x = encode(g);
   return spent;
+}
+
+void MoldProblem::step_diameter(mold::Circuit& c, opt::Rng& rng) const {
+  const auto& d = spec_.drilling.diameters;
+  int idx = int(std::find(d.begin(), d.end(), c.diameter) - d.begin());
+  idx = std::clamp(idx + (rng.uniform() < 0.5 ? -1 : 1), 0, int(d.size()) - 1);
+  c.diameter = d[std::size_t(idx)];
 }
 
 void MoldProblem::jog(mold::Circuit& c, opt::Rng& rng) const {

@@ -2,7 +2,6 @@
 
 #include <spdlog/spdlog.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <map>
 
@@ -61,9 +60,7 @@ std::vector<opt::Genotype> start_genotypes(const std::vector<std::string>& paths
                    s.detail);
     // Kept as it is; its children's circuit moves head for the spec's range (of drilled circuits:
     // baffles and bubblers count against drilling.baffles.max).
-    const auto blind = std::count_if(genome.circuits.begin(), genome.circuits.end(),
-                                     [](const mold::Circuit& c) { return is_blind(c.kind); });
-    if (const int k = int(genome.circuits.size() - std::size_t(blind)); k < lim.min || k > lim.max)
+    if (const int k = int(genome.circuits.size()) - count_blind(genome); k < lim.min || k > lim.max)
       spdlog::warn("start layout {} has {} drilled circuit{}; the search makes {}-{} (circuits.min, circuits.max): its "
                    "children add or remove circuits toward that",
                    path, k, k == 1 ? "" : "s", lim.min, lim.max);

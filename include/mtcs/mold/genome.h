@@ -30,4 +30,11 @@ struct Genome {
   std::vector<Circuit> circuits;
 };
 
+// How many of g's circuits are baffles or bubblers.
+inline int count_blind(const Genome& g) {
+  int n = 0;
+  for (const Circuit& c : g.circuits) n += is_blind(c.kind) ? 1 : 0;
+  return n;
+}
+
 }  // namespace mtcs::mold

@@ -23,6 +23,8 @@ Vec3 normal_of(Face f);
 Face face_of_normal(const Vec3& n);  // the axis direction closest to n
 int axis_of(Face f);                 // 0, 1, 2 for x, y, z
 double face_plane(const Box& block, Face f);  // the face's coordinate along its axis
+// Of `faces`, the one whose plane lies nearest p (the first on a tie).
+Face nearest_face(const Box& block, const Vec3& p, const std::vector<Face>& faces);
 
 // A length that is either absolute (mm) or a multiple of the bore diameter ("2.0D").
 struct Length {
@@ -109,6 +111,11 @@ struct Drilling {
   double min_overlap = 0;            // extra length beyond a junction, mm
   std::optional<AccessMapSpec> access_map;  // set: the `drillable` constraint and AM-guided mutation
   std::optional<BaffleSpec> baffles;        // set: layouts may hold baffles and bubblers
+
+  // The drill point's length past a hole's end, 0.5 D cot(tip/2), mm.
+  double point_length(double diameter) const;
+  // The faces a baffle or bubbler is drilled from (drilling.baffles.faces, or the allowed faces).
+  const std::vector<Face>& blind_faces() const { return baffles ? baffles->faces : allowed_faces; }
 };
 
 struct Clearances {

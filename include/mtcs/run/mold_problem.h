@@ -99,6 +99,8 @@ class MoldProblem final : public opt::Problem {
   // The holes (or waypoints) of a circuit the geometric move acts on, and the move itself: each
   // shifted by sigma N(0, 1) with `probability`; returns how many moved.
   int movable_parts(const mold::Circuit& c) const;
+  // The next smaller or larger of drilling.diameters, at random (mutation.diameter).
+  void step_diameter(mold::Circuit& c, opt::Rng& rng) const;
   // mutation.jog on c: one segment split by a leg across it (MutationRates::jog).
   void jog(mold::Circuit& c, opt::Rng& rng) const;
   int move_some(mold::Circuit& c, double sigma, double probability, opt::Rng& rng) const;
