@@ -115,7 +115,7 @@ Command add_interfere_command(CLI::App& app) {
               file.commit();
             }
             if (o->json) {
-              mesh::write_interference_json(std::cout, {o->a, o->b, o->translate, tolerance}, report, pa, pb, groups);
+              mesh::write_interference_json(std::cout, {o->a, o->b, o->translate, tolerance}, a, b, report, pa, pb, groups);
               return 0;
             }
             mesh::write_interference_text(std::cout, {o->a, o->b, o->translate, tolerance}, a, b, report, pa, pb, groups);

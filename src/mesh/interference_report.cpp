@@ -23,9 +23,9 @@ __attribute__((format(printf, 2, 3))) void print(std::ostream& out, const char* 
 
 }  // namespace
 
-void write_interference_json(std::ostream& out, const InterferenceCheck& what,
-                             const InterferenceReport& report, const MeshParts& pa, const MeshParts& pb,
-                             const std::vector<FaceGroup>& groups) {
+void write_interference_json(std::ostream& out, const InterferenceCheck& what, const TriangleMesh& a,
+                             const TriangleMesh& b, const InterferenceReport& report, const MeshParts& pa,
+                             const MeshParts& pb, const std::vector<FaceGroup>& groups) {
   auto point = [](const geometry::Vec3& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); };
   nlohmann::json j;
   j["a"] = what.a, j["b"] = what.b, j["translate"] = what.translate;
@@ -48,13 +48,22 @@ void write_interference_json(std::ostream& out, const InterferenceCheck& what,
                           {"coplanar", p.x.coplanar},
                           {"segment", {point(p.x.p), point(p.x.q)}}});
   j["groups"] = nlohmann::json::array();
-  for (const auto& g : groups)
+  const std::vector<FaceShape> shapes_a = groups.empty() ? std::vector<FaceShape>{} : face_shapes(a, pa);
+  const std::vector<FaceShape> shapes_b = groups.empty() ? std::vector<FaceShape>{} : face_shapes(b, pb);
+  for (const auto& g : groups) {
+    const FaceShape& fa = shapes_a[std::size_t(g.face_a)];
+    const FaceShape& fb = shapes_b[std::size_t(g.face_b)];
     j["groups"].push_back({{"solid_a", g.solid_a},
                            {"face_a", g.face_a},
                            {"solid_b", g.solid_b},
                            {"face_b", g.face_b},
                            {"pairs", g.pairs},
-                           {"penetrating", g.penetrating}});
+                           {"penetrating", g.penetrating},
+                           {"centroid_a", point(fa.centroid)},
+                           {"area_a", fa.area},
+                           {"centroid_b", point(fb.centroid)},
+                           {"area_b", fb.area}});
+  }
   out << j.dump(1) << '\n';
 }
 

@@ -8,6 +8,20 @@
 
 namespace mtcs::mesh {
 
+std::vector<FaceShape> face_shapes(const TriangleMesh& mesh, const MeshParts& parts) {
+  std::vector<FaceShape> shapes(std::size_t(parts.faces()));
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Vec3 &p = mesh.corner(t, 0), &q = mesh.corner(t, 1), &r = mesh.corner(t, 2);
+    const double area = 0.5 * (q - p).cross(r - p).norm();
+    FaceShape& s = shapes[std::size_t(parts.face_of[t])];
+    s.centroid += area * (p + q + r) / 3;
+    s.area += area;
+  }
+  for (FaceShape& s : shapes)
+    if (s.area > 0) s.centroid /= s.area;
+  return shapes;
+}
+
 std::vector<FaceGroup> group_by_face(const InterferenceReport& report, const MeshParts& a, const MeshParts& b) {
   std::map<std::tuple<int, int, int, int>, FaceGroup> groups;
   for (const auto& p : report.pairs) {

@@ -25,7 +25,7 @@ std::string interference_page(const mesh::InterferenceCheck& what, const mesh::T
                               const mesh::InterferenceReport& report, const mesh::MeshParts& pa, const mesh::MeshParts& pb,
                               const std::vector<mesh::FaceGroup>& groups) {
   std::ostringstream check;  // the command's own JSON: the page and --json cannot disagree
-  mesh::write_interference_json(check, what, report, pa, pb, groups);
+  mesh::write_interference_json(check, what, a, b, report, pa, pb, groups);
   std::set<int> hit_a, hit_b;
   for (const auto& p : report.pairs) hit_a.insert(p.a), hit_b.insert(p.b);
   Json data;

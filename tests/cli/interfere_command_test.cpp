@@ -52,6 +52,12 @@ TEST_CASE("mtcs interfere: JSON pairs and distance at the certified placements",
   int grouped = 0;
   for (const auto& g : j["groups"]) grouped += g["pairs"].get<int>();
   CHECK(grouped == 16);
+  for (const auto& g : j["groups"]) {  // where each face is: on its mesh, with an area
+    CHECK(g["area_a"].get<double>() > 0);
+    CHECK(g["area_b"].get<double>() > 0);
+    CHECK(g["centroid_a"].size() == 3);
+    CHECK(g["centroid_b"].size() == 3);
+  }
   CHECK(j["pairs"][0]["segment"].size() == 2);
 
   REQUIRE(run("interfere " + kMeshes + "homer.off " + kMeshes + "mcad_herringbone_gear.off" + kGap + " --json", &out) == 0);

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "mtcs/mesh/interference.h"
+#include "mtcs/mesh/interference_view.h"
 #include "mtcs/mesh/mesh_io.h"
 #include "support/paths.h"
 #include "support/random_draws.h"
@@ -227,6 +228,31 @@ TEST_CASE("parts: solids are connected components, faces near-planar patches", "
   CHECK(gp.solids == 1);
   CHECK(gp.faces() > 10);
   CHECK(gp.faces() < int(gear.triangles.size()) / 4);
+}
+
+TEST_CASE("parts: a face's shape is where its triangles are (centroid, area)", "[mesh][interference]") {
+  // A 3 x 2 x 1 box: six faces, each centred on its side with the side's area.
+  const auto box = mesh::box_mesh({{0, 0, 0}, {3, 2, 1}});
+  const auto parts = mesh::split_parts(box);
+  const auto shapes = mesh::face_shapes(box, parts);
+  REQUIRE(shapes.size() == 6);
+  double total = 0;
+  for (const auto& s : shapes) {
+    total += s.area;
+    const Vec3 c = s.centroid;
+    const int on_side = int(std::abs(c.x()) < 1e-12 || std::abs(c.x() - 3) < 1e-12) +
+                        int(std::abs(c.y()) < 1e-12 || std::abs(c.y() - 2) < 1e-12) +
+                        int(std::abs(c.z()) < 1e-12 || std::abs(c.z() - 1) < 1e-12);
+    CHECK(on_side == 1);  // on exactly one side, in its middle
+    if (std::abs(c.x()) < 1e-12 || std::abs(c.x() - 3) < 1e-12) CHECK(s.area == Approx(2.0));
+    if (std::abs(c.z()) < 1e-12 || std::abs(c.z() - 1) < 1e-12) CHECK(s.area == Approx(6.0));
+  }
+  CHECK(total == Approx(2 * (6 + 3 + 2)));
+  // On a curved mesh the faces' areas add up to the surface's.
+  const auto& gear = cached("mcad_herringbone_gear");
+  double sum = 0;
+  for (const auto& s : mesh::face_shapes(gear, mesh::split_parts(gear))) sum += s.area;
+  CHECK(sum == Approx(gear.area()).epsilon(1e-12));
 }
 
 TEST_CASE("self-intersections: none in the shipped meshes, found in overlapping boxes", "[mesh][interference]") {

@@ -19,8 +19,10 @@ struct InterferenceCheck {
   double tolerance = 0;
 };
 
-void write_interference_json(std::ostream& out, const InterferenceCheck& what, const InterferenceReport& report,
-                             const MeshParts& pa, const MeshParts& pb, const std::vector<FaceGroup>& groups);
+// Each group also says where its two faces are (centroid and area, B as placed).
+void write_interference_json(std::ostream& out, const InterferenceCheck& what, const TriangleMesh& a,
+                             const TriangleMesh& b, const InterferenceReport& report, const MeshParts& pa,
+                             const MeshParts& pb, const std::vector<FaceGroup>& groups);
 void write_interference_text(std::ostream& out, const InterferenceCheck& what, const TriangleMesh& a, const TriangleMesh& b,
                              const InterferenceReport& report, const MeshParts& pa, const MeshParts& pb,
                              const std::vector<FaceGroup>& groups);

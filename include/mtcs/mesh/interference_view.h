@@ -20,6 +20,15 @@ struct FaceGroup {
 // those four indices.
 std::vector<FaceGroup> group_by_face(const InterferenceReport& report, const MeshParts& a, const MeshParts& b);
 
+// Where a face (patch) of MeshParts is: the area-weighted centroid of its triangles and its area,
+// in the mesh's units; what names a face across re-meshings and renumberings (the review
+// server's durable keys).
+struct FaceShape {
+  geometry::Vec3 centroid = geometry::Vec3::Zero();
+  double area = 0;
+};
+std::vector<FaceShape> face_shapes(const TriangleMesh& mesh, const MeshParts& parts);
+
 // Both meshes in one ASCII PLY: A grey, B blue, triangles in contact yellow, interfering ones
 // red; the face quality says the same as a number (0 free, 1 contact, 2 interfering).
 void write_interference_ply(std::ostream& out, const TriangleMesh& a, const TriangleMesh& b,
