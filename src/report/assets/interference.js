@@ -142,5 +142,30 @@ const focus = [layers.a, layers.b].map((g) => new THREE.Box3().setFromObject(g))
   .sort((p, q) => p.getSize(new THREE.Vector3()).length() - q.getSize(new THREE.Vector3()).length())[0];
 resize();
 view(focus.union(new THREE.Box3().setFromObject(layers.segments)));
-window.mtcsInterference = { data, frames: () => frames };
+// For a page that embeds this one (mtcs serve): the camera as a viewpoint (BCF's names, the
+// meshes' units) and back, exactly; a group framed as its table row does.
+function viewpoint() {
+  const dir = new THREE.Vector3();
+  camera.getWorldDirection(dir);
+  return {
+    camera_view_point: camera.position.toArray(), camera_direction: dir.toArray(), camera_up_vector: camera.up.toArray(),
+    field_of_view: camera.fov, target: controls ? controls.target.toArray() : null,
+  };
+}
+function setViewpoint(v) {
+  camera.position.fromArray(v.camera_view_point);
+  camera.up.fromArray(v.camera_up_vector);
+  if (v.field_of_view) camera.fov = v.field_of_view;
+  const target = v.target ? new THREE.Vector3().fromArray(v.target)
+    : camera.position.clone().add(new THREE.Vector3().fromArray(v.camera_direction));
+  camera.lookAt(target);
+  camera.updateProjectionMatrix();
+  if (controls) { controls.target.copy(target); controls.update(); }
+  render();
+}
+function showGroup(i) {
+  const g = check.groups[i];
+  flyTo(check.pairs.filter((p) => ['solid_a', 'face_a', 'solid_b', 'face_b'].every((k) => p[k] === g[k])));
+}
+window.mtcsInterference = { data, frames: () => frames, viewpoint, setViewpoint, showGroup };
 document.body.dataset.ready = '1';
