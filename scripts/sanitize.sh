@@ -30,7 +30,7 @@ export ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$PWD/scripts/lsan_
 # run (the kernels they call are run by the cases kept; 400 s of thermal's and 120 s of run's
 # 670 s serial, measured at 4efedea). no_allocation_tests replaces operator new and delete,
 # which ASan must own (an alloc-dealloc mismatch at exit): Release only.
-modules="^(geometry|mesh|voxel|thermal|opt|run|mold|io|store)_tests$"
+modules="^(geometry|mesh|voxel|thermal|opt|run|mold|io|store|serve)_tests$"
 slow="read a coupled cup|see a plate-shaped void|shape factor converges|core keeps the heat|thin shell's outer edge"
 slow+="|reference block at 1 mm meets|isothermal face has S|void plane: the line sinks see the plate|surface spread against the FEM"
 slow+="|through a cavity void's wall matches|infeasible children of feasible parents|ranks an infeasible layout as its penalty"

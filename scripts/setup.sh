@@ -23,7 +23,8 @@ PACKAGES=(
 )
 # The tests, the benchmarks' peers (mtcs-bench) and the optional components: PNG plots
 # (matplotlib), the fuzzers (clang), the report's browser test (chromium, node), STEP export
-# (OpenCASCADE) and islands across MPI ranks (Open MPI).
+# (OpenCASCADE), islands across MPI ranks (Open MPI) and the review server, mtcs serve
+# (cpp-httplib, libsodium).
 FULL=(
   catch2 libfcl-dev libccd-dev libbenchmark-dev libpagmo-dev
   python3-matplotlib
@@ -32,6 +33,7 @@ FULL=(
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-ocaf-dev
   libocct-data-exchange-dev libocct-visualization-dev
   openmpi-bin libopenmpi-dev
+  libcpp-httplib-dev libsodium-dev
 )
 if [ "$minimal" = 0 ]; then PACKAGES+=("${FULL[@]}"); fi
 

@@ -23,7 +23,7 @@ if [ "${free_gb:-0}" -lt 12 ]; then
 fi
 # ON, not found-or-not: a missing test framework, peer or component is an error here, not a
 # silent skip (and a tree the demo configured before they were installed turns them on).
-bash scripts/build.sh -DMTCS_BUILD_TESTS=ON -DMTCS_BUILD_BENCH=ON -DMTCS_WITH_OCCT=ON -DMTCS_WITH_MPI=ON
+bash scripts/build.sh -DMTCS_BUILD_TESTS=ON -DMTCS_BUILD_BENCH=ON -DMTCS_WITH_OCCT=ON -DMTCS_WITH_MPI=ON -DMTCS_WITH_SERVE=ON
 ctest --test-dir build --output-on-failure -j2
 # The same tests under AddressSanitizer and UBSan (set MTCS_SKIP_SANITIZE=1 to skip).
 if [ "${MTCS_SKIP_SANITIZE:-0}" != 1 ]; then bash scripts/sanitize.sh; fi

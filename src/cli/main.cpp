@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
       mtcs::cli::add_interfere_command(app),
       mtcs::cli::add_access_map_command(app),
       mtcs::cli::add_hypervolume_command(app),
+      mtcs::cli::add_serve_command(app),
   };
   // A part's precomputes (its void's panel matrix) are kept between commands, unless --no-cache.
   mtcs::io::set_cache_folder(mtcs::io::default_cache_folder());

@@ -29,6 +29,8 @@ Command add_thermal_command(CLI::App& app);
 Command add_access_map_command(CLI::App& app);
 Command add_report_command(CLI::App& app);
 Command add_export_command(CLI::App& app);
+// The review server; without cpp-httplib and libsodium at build time it says how to get them.
+Command add_serve_command(CLI::App& app);
 
 // `mtcs bench ARGS`: runs the mtcs-bench found beside this binary with ARGS (argv without the
 // program and "bench"); returns only when it cannot (127: not found).
