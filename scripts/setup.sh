@@ -5,13 +5,15 @@
 #                       command's set)
 #   setup.sh --minimal  what building and running `mtcs` needs (the demo's set): no test
 #                       framework, peers, fuzzer, browser, MPI, OpenCASCADE or matplotlib
+#   setup.sh --serve    the minimal set and the review server's libraries (serve_demo.sh)
 set -euo pipefail
 
-minimal=0
+minimal=0 serve=0
 case "${1:-}" in
   --minimal) minimal=1 ;;
+  --serve) minimal=1 serve=1 ;;
   "") ;;
-  *) echo "usage: setup.sh [--minimal]" >&2; exit 2 ;;
+  *) echo "usage: setup.sh [--minimal | --serve]" >&2; exit 2 ;;
 esac
 
 # Building and running mtcs: the compiler and the libraries every module links.
@@ -36,6 +38,7 @@ FULL=(
   libcpp-httplib-dev libsodium-dev
 )
 if [ "$minimal" = 0 ]; then PACKAGES+=("${FULL[@]}"); fi
+if [ "$serve" = 1 ]; then PACKAGES+=(libcpp-httplib-dev libsodium-dev); fi
 
 # The report page's browser test: puppeteer-core (and three.js, which src/report/assets vendors),
 # pinned in web/package-lock.json, into web/node_modules; again only when the lock file changed.
