@@ -26,7 +26,7 @@ PACKAGES=(
 # The tests, the benchmarks' peers (mtcs-bench) and the optional components: PNG plots
 # (matplotlib), the fuzzers (clang), the report's browser test (chromium, node), STEP export
 # (OpenCASCADE), islands across MPI ranks (Open MPI) and the review server, mtcs serve
-# (cpp-httplib, libsodium).
+# (cpp-httplib, libsodium, pugixml and libzip for BCF; xmllint checks its BCF in the tests).
 FULL=(
   catch2 libfcl-dev libccd-dev libbenchmark-dev libpagmo-dev
   python3-matplotlib
@@ -35,10 +35,10 @@ FULL=(
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-ocaf-dev
   libocct-data-exchange-dev libocct-visualization-dev
   openmpi-bin libopenmpi-dev
-  libcpp-httplib-dev libsodium-dev
+  libcpp-httplib-dev libsodium-dev libpugixml-dev libzip-dev libxml2-utils
 )
 if [ "$minimal" = 0 ]; then PACKAGES+=("${FULL[@]}"); fi
-if [ "$serve" = 1 ]; then PACKAGES+=(libcpp-httplib-dev libsodium-dev); fi
+if [ "$serve" = 1 ]; then PACKAGES+=(libcpp-httplib-dev libsodium-dev libpugixml-dev libzip-dev); fi
 
 # The report page's browser test: puppeteer-core (and three.js, which src/report/assets vendors),
 # pinned in web/package-lock.json, into web/node_modules; again only when the lock file changed.

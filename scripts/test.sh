@@ -10,6 +10,7 @@ absent=()
 command -v chromium >/dev/null 2>&1 || absent+=("chromium")
 [ -d web/node_modules/puppeteer-core ] || absent+=("puppeteer-core (npm ci --prefix web)")
 command -v mpirun >/dev/null 2>&1 || absent+=("mpirun (openmpi-bin)")
+command -v xmllint >/dev/null 2>&1 || absent+=("xmllint (libxml2-utils)")
 if [ ${#absent[@]} -gt 0 ]; then
   echo "test.sh: missing after setup.sh: ${absent[*]}" >&2
   exit 1

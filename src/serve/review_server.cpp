@@ -22,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "assets.h"
+#include "mtcs/serve/bcf_export.h"
 #include "mtcs/serve/blob_store.h"
 #include "mtcs/serve/credentials.h"
 #include "mtcs/serve/event_broker.h"
@@ -168,6 +169,7 @@ const std::vector<RouteInfo>& route_table() {
       {"POST", R"(/api/v1/projects/(\d+)/jobs/(\d+)/cancel)", "/api/v1/projects/1/jobs/1/cancel", Access::member,
        Role::designer},
       {"GET", R"(/api/v1/projects/(\d+)/topics)", "/api/v1/projects/1/topics", Access::member, Role::viewer},
+      {"GET", R"(/api/v1/projects/(\d+)/bcf)", "/api/v1/projects/1/bcf", Access::member, Role::viewer},
       {"POST", R"(/api/v1/projects/(\d+)/topics)", "/api/v1/projects/1/topics", Access::member, Role::reviewer},
       {"GET", R"(/api/v1/projects/(\d+)/topics/(\d+))", "/api/v1/projects/1/topics/1", Access::member, Role::viewer},
       {"PATCH", R"(/api/v1/projects/(\d+)/topics/(\d+))", "/api/v1/projects/1/topics/1", Access::member,
@@ -409,6 +411,11 @@ struct ReviewServer::Impl {
     }
     if (tail == R"(/topics/(\d+)/comments)") return new_comment(caller, req, res);
     if (tail == "/events") return stream(caller, req, res);
+    if (tail == "/bcf") {
+      res.set_header("Content-Disposition", "attachment; filename=\"project-" + std::to_string(project) + ".bcf\"");
+      return res.set_content(bcf_archive(project, store.topics(project, caller.role), (blobs.root() / "tmp").string()),
+                             "application/octet-stream");
+    }
     throw Refusal(404, "no such route");
   }
 

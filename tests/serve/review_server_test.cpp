@@ -406,8 +406,10 @@ TEST_CASE("mtcs serve: the interference check on the server, findings across ver
   CHECK(page->get_header_value("Content-Security-Policy").find("frame-ancestors 'self'") != std::string::npos);
 
   // An item on the first finding, with a viewpoint; the reviewer may, the viewer may not.
-  const json viewpoint{{"camera", {{"position", {10, 20, 30}}, {"target", {0, 0, 0}}, {"fov", 45}}},
-                       {"clipping_planes", {{{"location", {0, 0, 1}}, {"direction", {0, 0, 1}}}}}};
+  const json viewpoint{{"camera_view_point", {10, 20, 30}}, {"camera_direction", {0, 0, -1}},
+                       {"camera_up_vector", {0, 1, 0}},      {"field_of_view", 45},
+                       {"aspect_ratio", 1.6},                {"target", {10, 20, 0}},
+                       {"job", 1}};
   const json item = rita.send("POST", "/api/v1/projects/1/topics",
                               {{"title", "homer's foot in the gear"}, {"finding", key}, {"comment", "see here"},
                                {"viewpoint", viewpoint}},
@@ -417,6 +419,26 @@ TEST_CASE("mtcs serve: the interference check on the server, findings across ver
   Browser vic(s.port, "vic", "vic-password");
   vic.send("POST", "/api/v1/projects/1/topics", {{"title", "x"}}, 403);
   CHECK(vic.get("/api/v1/projects/1/topics/1")["authorization"]["topic_actions"].empty());
+
+  // The items as BCF-XML 3.0: valid against buildingSMART's schemas, the camera in metres, the
+  // same GUIDs on a second export.
+  const auto bcf = vic.http.Get("/api/v1/projects/1/bcf", vic.headers);
+  REQUIRE(bcf);
+  REQUIRE(bcf->status == 200);
+  const fs::path bcf_file = mtcs_test::scratch_root() / "project.bcf";
+  std::ofstream(bcf_file, std::ios::binary) << bcf->body;
+  CHECK(std::system(("python3 " + MTCS_SOURCE_DIR + "/tests/serve/check_bcf.py " + bcf_file.string() + " " + MTCS_TEST_DATA +
+                     "/bcf/schemas 1 10,20,30").c_str()) == 0);
+  const auto again = vic.http.Get("/api/v1/projects/1/bcf", vic.headers);
+  REQUIRE(again);
+  auto guids = [](const std::string& zip) {  // the file names in the zip's central directory
+    std::vector<std::string> names;
+    for (auto at = zip.find("markup.bcf"); at != std::string::npos; at = zip.find("markup.bcf", at + 1))
+      names.push_back(zip.substr(at - 37, 36));
+    return names;
+  };
+  CHECK(guids(again->body) == guids(bcf->body));
+  CHECK_FALSE(guids(bcf->body).empty());
 
   // The same check again: every finding persistent, the item told so.
   const long second = dora.send("POST", "/api/v1/projects/1/jobs", check, 202)["id"];

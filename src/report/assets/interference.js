@@ -149,7 +149,7 @@ function viewpoint() {
   camera.getWorldDirection(dir);
   return {
     camera_view_point: camera.position.toArray(), camera_direction: dir.toArray(), camera_up_vector: camera.up.toArray(),
-    field_of_view: camera.fov, target: controls ? controls.target.toArray() : null,
+    field_of_view: camera.fov, aspect_ratio: camera.aspect, target: controls ? controls.target.toArray() : null,
   };
 }
 function setViewpoint(v) {

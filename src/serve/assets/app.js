@@ -77,6 +77,7 @@ async function openProject(id) {
   $('project-panel').hidden = false;
   $('project-title').textContent = p.name;
   $('project-role').textContent = `your role: ${p.role} \u00b7 members: ${p.members.map((m) => `${m.user} (${m.role})`).join(', ')}`;
+  $('export-bcf').setAttribute('href', projectPath('/bcf'));
   for (const f of document.querySelectorAll('.designer')) f.hidden = !atLeast('designer');
   for (const f of document.querySelectorAll('.reviewer')) f.hidden = !atLeast('reviewer');
   await Promise.all([listComponents(), listJobs(), listTopics()]);
