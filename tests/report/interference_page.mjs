@@ -6,31 +6,17 @@
 // Exit 0: passed; 1: failed; 77: skipped (no chromium on this machine).
 import fs from 'node:fs';
 import path from 'node:path';
-import { createRequire } from 'node:module';
-import { execFileSync } from 'node:child_process';
-import { fileURLToPath } from 'node:url';
+import { launchBrowser } from '../support/browser.mjs';
 
 const [pagePath, expectedText] = process.argv.slice(2);
 const expected = Number(expectedText);
-const chromium = [process.env.MTCS_CHROMIUM, 'chromium', 'chromium-browser', 'google-chrome'].filter(Boolean).map((c) => {
-  try { return execFileSync('sh', ['-c', `command -v "${c}"`], { encoding: 'utf8' }).trim(); } catch { return null; }
-}).find(Boolean);
-if (!chromium) {
-  console.log('SKIPPED: no chromium on this machine (scripts/setup.sh installs Debian\'s chromium)');
-  process.exit(77);
-}
-const require = createRequire(path.join(path.dirname(fileURLToPath(import.meta.url)), '../../web/package.json'));
-const puppeteer = require('puppeteer-core');
 if (!fs.existsSync(pagePath) || !(expected > 0)) {
   console.error(`FAILED: usage: interference_page.mjs PAGE.html EXPECTED_PAIRS (got ${pagePath}, ${expectedText})`);
   process.exit(1);
 }
 const failures = [];
 const check = (ok, what) => { console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`); if (!ok) failures.push(what); };
-const browser = await puppeteer.launch({
-  executablePath: chromium, headless: true,
-  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--hide-scrollbars', '--disable-dev-shm-usage'],
-});
+const browser = await launchBrowser('the interference page');
 try {
   const page = await browser.newPage();
   await page.setViewport({ width: 1366, height: 768 });

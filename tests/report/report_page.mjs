@@ -17,9 +17,7 @@
 // Exit 0: passed; 1: failed; 77: skipped (no chromium on this machine).
 import fs from 'node:fs';
 import path from 'node:path';
-import { createRequire } from 'node:module';
-import { execFileSync } from 'node:child_process';
-import { fileURLToPath } from 'node:url';
+import { launchBrowser } from '../support/browser.mjs';
 
 const args = process.argv.slice(2);
 const option = (name, fallback) => { const i = args.indexOf(name); return i >= 0 ? args[i + 1] : fallback; };
@@ -29,29 +27,6 @@ const width = Number(option('--width', 1366)), height = Number(option('--height'
 const expectCoolant = args.includes('--coolant');  // the report's spec has a flow and a temperature objective
 const expectBaffles = args.includes('--baffles');  // the shown layout holds baffles or bubblers
 
-function findChromium() {
-  for (const candidate of [process.env.MTCS_CHROMIUM, 'chromium', 'chromium-browser', 'google-chrome']) {
-    if (!candidate) continue;
-    try {
-      return execFileSync('sh', ['-c', `command -v "${candidate}"`], { encoding: 'utf8' }).trim();
-    } catch { /* next */ }
-  }
-  return null;
-}
-const chromium = findChromium();
-if (!chromium) {
-  console.log('SKIPPED: no chromium on this machine (scripts/setup.sh installs Debian\'s chromium); the report page was not tested in a browser');
-  process.exit(77);
-}
-const here = path.dirname(fileURLToPath(import.meta.url));
-const require = createRequire(path.join(here, '../../web/package.json'));
-let puppeteer;
-try {
-  puppeteer = require('puppeteer-core');
-} catch {
-  console.error('FAILED: puppeteer-core is not installed in web/node_modules: run scripts/setup.sh (npm ci --prefix web)');
-  process.exit(1);
-}
 if (!fs.existsSync(reportPath)) {
   console.error(`FAILED: no report at ${reportPath}`);
   process.exit(1);
@@ -66,11 +41,7 @@ const finish = async () => {
   process.exit(failures.length ? 1 : 0);
 };
 
-const browser = await puppeteer.launch({
-  executablePath: chromium,
-  headless: true,
-  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--hide-scrollbars', '--disable-dev-shm-usage'],
-});
+const browser = await launchBrowser('the report page');
 try {
   const page = await browser.newPage();
   await page.setViewport({ width, height });

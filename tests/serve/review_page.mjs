@@ -8,21 +8,11 @@
 // Usage: node review_page.mjs URL MESH_DIR CORRECTED_GEAR.off TX,TY,TZ EXPECTED_PAIRS
 // Exit 0: passed; 1: failed; 77: skipped (no chromium on this machine).
 import path from 'node:path';
-import { createRequire } from 'node:module';
-import { execFileSync } from 'node:child_process';
-import { fileURLToPath } from 'node:url';
+import { launchBrowser } from '../support/browser.mjs';
 
 const [url, meshes, correctedGear, translate, expectedText] = process.argv.slice(2);
 const expected = Number(expectedText);
-const chromium = [process.env.MTCS_CHROMIUM, 'chromium', 'chromium-browser', 'google-chrome'].filter(Boolean).map((c) => {
-  try { return execFileSync('sh', ['-c', `command -v "${c}"`], { encoding: 'utf8' }).trim(); } catch { return null; }
-}).find(Boolean);
-if (!chromium) {
-  console.log('SKIPPED: no chromium on this machine (scripts/setup.sh installs Debian\'s chromium)');
-  process.exit(77);
-}
-const require = createRequire(path.join(path.dirname(fileURLToPath(import.meta.url)), '../../web/package.json'));
-const puppeteer = require('puppeteer-core');
+const browser = await launchBrowser('the review app');
 const failures = [];
 const check = (ok, what) => { console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`); if (!ok) failures.push(what); };
 
@@ -37,10 +27,6 @@ const project = (await call(cookie, csrf, 'POST', '/api/v1/projects', { name: 's
 for (const [user, role] of [['dora', 'designer'], ['rita', 'reviewer']])
   await call(cookie, csrf, 'PUT', `/api/v1/projects/${project}/members`, { user, role });
 
-const browser = await puppeteer.launch({
-  executablePath: chromium, headless: true,
-  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--hide-scrollbars', '--disable-dev-shm-usage'],
-});
 const errors = [];
 async function open(name) {
   const context = await browser.createBrowserContext();
