@@ -22,6 +22,9 @@ bool is_sha256_hex(const std::string& text) {
 BlobStore::BlobStore(fs::path root) : root_(std::move(root)) {
   fs::create_directories(root_ / "blobs" / "sha256");
   fs::create_directories(root_ / "tmp");
+  // What a killed server was receiving: never acknowledged, so never stored (the caller holds the
+  // data folder's lock: no other server is writing here).
+  for (const auto& staged : fs::directory_iterator(root_ / "tmp")) fs::remove_all(staged.path());
 }
 
 fs::path BlobStore::path_of(const std::string& hash) const {

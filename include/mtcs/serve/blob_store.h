@@ -17,6 +17,7 @@ namespace mtcs::serve {
 
 class BlobStore {
  public:
+  // Empties root/tmp: uploads a killed server was receiving (hold the data folder first).
   explicit BlobStore(std::filesystem::path root);
 
   class Upload {
