@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -495,7 +496,7 @@ TEST_CASE("mtcs serve: the interference check on the server, findings across ver
 TEST_CASE("mtcs serve: live events in order, replayed from Last-Event-ID, capped streams", "[serve]") {
   Server s("live", true, 2);
   Browser olga(s.port, "olga", "olga-password");
-  const long p = team_project(olga);
+  REQUIRE(team_project(olga) == 1);
   Browser rita(s.port, "rita", "rita-password");
   for (int i = 0; i < 3; ++i) rita.send("POST", "/api/v1/projects/1/topics", {{"title", "item " + std::to_string(i)}}, 201);
   // A stream from the start: the members' changes and the three items, ids increasing.
@@ -546,6 +547,28 @@ TEST_CASE("mtcs serve: live events in order, replayed from Last-Event-ID, capped
   later.join();
   CHECK(text.find("event: topic.updated") != std::string::npos);
   rita.send("PATCH", "/api/v1/projects/1/topics/1", {{"status", "done"}}, 400);
+
+  // The cap (3 here): a fourth stream is told to come back (503, Retry-After) while the three
+  // last, and the rest of the API still answers.
+  std::vector<std::thread> open;
+  std::atomic<int> served{0};
+  for (int i = 0; i < 3; ++i)
+    open.emplace_back([&] {
+      httplib::Client c("127.0.0.1", s.port);
+      c.set_read_timeout(30);
+      if (const auto r = c.Get("/api/v1/projects/1/events", vic.headers, [](const char*, std::size_t) { return true; });
+          r && r->status == 200)
+        ++served;
+    });
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  httplib::Client fourth("127.0.0.1", s.port);
+  const auto refused = fourth.Get("/api/v1/projects/1/events", vic.headers);
+  REQUIRE(refused);
+  CHECK(refused->status == 503);
+  CHECK(refused->get_header_value("Retry-After") == "5");
+  CHECK(fourth.Get("/api/v1/me", vic.headers)->status == 200);
+  for (auto& t : open) t.join();
+  CHECK(served == 3);
 }
 
 TEST_CASE("mtcs serve: a job a killed server left running is interrupted, never lost", "[serve]") {
