@@ -15,7 +15,7 @@
 #include "mtcs/voxel/access_case.h"
 #include "mtcs/voxel/part_map.h"
 #include "number_checks.h"
-#include "python_plot.h"
+#include "mtcs/report/python_plot.h"
 
 namespace mtcs::cli {
 
@@ -75,7 +75,7 @@ int run_part_map(const PartOptions& o) {
   file.commit();
   if (png) {
     const std::string title = std::filesystem::path(o.mesh).filename().string() + ", pivot " + join_numbers(p);
-    if (render_plot("plot_access_map.py", {csv_path, o.out, title}, std::cerr)) std::filesystem::remove(csv_path);
+    if (report::render_plot("plot_access_map.py", {csv_path, o.out, title}, std::cerr)) std::filesystem::remove(csv_path);
   }
   return 0;
 }

@@ -24,7 +24,7 @@
 #include "mtcs/run/penalty_report.h"
 #include "mtcs/run/penalty_run.h"
 #include "output_folder.h"
-#include "python_plot.h"
+#include "mtcs/report/python_plot.h"
 #include "number_checks.h"
 
 namespace mtcs::cli {
@@ -97,7 +97,7 @@ int run_compare(const ComparePenaltiesOptions& o) {
                                          config.es.mu, ref};
   run::write_penalty_report(out, comparison, runs, names, session.spec());
   std::ostringstream plot_log;
-  const bool plotted = render_plot("plot_penalties.py", {out.string()}, plot_log);
+  const bool plotted = report::render_plot("plot_penalties.py", {out.string()}, plot_log);
   if (!plot_log.str().empty()) spdlog::info(plot_log.str().substr(0, plot_log.str().size() - 1));
   spdlog::info("results in {}/: summary.md, runs.csv, feasible_share.csv, rank_tests.csv{}", out.string(),
                plotted ? ", penalties.png" : "");

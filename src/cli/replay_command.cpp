@@ -13,7 +13,7 @@
 #include "mtcs/cli/commands.h"
 #include "mtcs/io/input_error.h"
 #include "mtcs/store/run_store.h"
-#include "python_plot.h"
+#include "mtcs/report/python_plot.h"
 #include "mtcs/run/replay.h"
 #include "mtcs/run/run_record.h"
 #include "mtcs/run/session.h"
@@ -43,8 +43,8 @@ int run_replay(const ReplayOptions& o) {
   std::ostringstream plot_log;
   bool plotted = false;
   const run::ReplayResult r = run::write_replay(session, db, o.dir, o.choice, [&](const fs::path& folder) {
-    if (o.plots) plotted = render_plot("plot_fronts.py", {(folder / "frames.json").string()}, plot_log) &&
-                           render_plot("plot_anytime.py", {(folder / "anytime.csv").string()}, plot_log);
+    if (o.plots) plotted = report::render_plot("plot_fronts.py", {(folder / "frames.json").string()}, plot_log) &&
+                           report::render_plot("plot_anytime.py", {(folder / "anytime.csv").string()}, plot_log);
   });
   const fs::path& out = r.folder;
   spdlog::info("re-evaluated {} individuals: {} objective mismatch(es); {} generation(s) replayed, fronts in {}/{}",
@@ -52,7 +52,7 @@ int run_replay(const ReplayOptions& o) {
                o.choice.all || o.choice.every || o.choice.generation ? "" : " (a sample: --every N or --all for more)");
   if (!o.plots)
     spdlog::info("no front plots (--no-plots); render them with: {}",
-                 plot_command("plot_fronts.py", {(out / "frames.json").string()}));
+                 report::plot_command("plot_fronts.py", {(out / "frames.json").string()}));
   else if (plotted)
     spdlog::info("front plots: {0}/front_*.png (an animation: ffmpeg -framerate 10 -pattern_type glob -i '{0}/front_*.png' "
                  "front.mp4)",

@@ -15,7 +15,7 @@
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/run/session.h"
 #include "option_error.h"
-#include "python_plot.h"
+#include "mtcs/report/python_plot.h"
 
 namespace mtcs::cli {
 namespace {
@@ -86,7 +86,7 @@ Command add_thermal_command(CLI::App& app) {
               file.commit();
               if (png) {
                 const std::string title = "cavity temperature, tier " + r.tier;
-                if (render_plot("plot_surface_field.py", {field_path, opt->out, title}, std::cerr)) std::filesystem::remove(field_path);
+                if (report::render_plot("plot_surface_field.py", {field_path, opt->out, title}, std::cerr)) std::filesystem::remove(field_path);
               }
               if (std::filesystem::exists(opt->out)) std::cerr << "mtcs thermal: the cavity-surface temperature to " << opt->out << "\n";
             }

@@ -1,4 +1,4 @@
-#include "python_plot.h"
+#include "mtcs/report/python_plot.h"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -9,7 +9,7 @@
 
 extern char** environ;
 
-namespace mtcs::cli {
+namespace mtcs::report {
 namespace {
 
 constexpr const char* kPython = "/usr/bin/python3";
@@ -79,4 +79,4 @@ bool render_plot(const std::string& script, const std::vector<std::string>& args
   return true;
 }
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::report

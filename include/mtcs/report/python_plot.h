@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace mtcs::cli {
+namespace mtcs::report {
 
 // Runs scripts/SCRIPT with the arguments (its output goes to stderr). Returns true when it ran
 // and succeeded; otherwise writes to `log` why not and the command to run by hand.
@@ -15,4 +15,4 @@ bool render_plot(const std::string& script, const std::vector<std::string>& args
 // The command that renders it by hand.
 std::string plot_command(const std::string& script, const std::vector<std::string>& args);
 
-}  // namespace mtcs::cli
+}  // namespace mtcs::report
