@@ -564,8 +564,7 @@ struct ReviewServer::Impl {
       inputs["touch_tolerance"] = t.get<double>();
       scope += "|" + inputs["touch_tolerance"].dump();
     }
-    int queued = 0;
-    for (const json& j : store.jobs(caller.project)) queued += j["state"] == "queued";
+    const long queued = store.queued_jobs(caller.project);
     if (queued >= kQueuedJobsPerProject) throw Refusal(429, "the project has " + std::to_string(queued) + " checks waiting");
     const long id = store.add_job(caller.project, "interference", inputs, scope, caller.user.id);
     events.publish(caller.project, "job.queued", caller.user.id,

@@ -365,6 +365,12 @@ json ReviewStore::jobs(long project) {
   return out;
 }
 
+long ReviewStore::queued_jobs(long project) {
+  std::lock_guard lock(mutex_);
+  Query q(db_, "SELECT count(*) FROM job WHERE project = ? AND state = 'queued'");
+  return q.bind(1, project).step() ? q.integer(0) : 0;
+}
+
 void ReviewStore::set_job_state(long id, const std::string& state, const std::string& message, const json& result) {
   std::lock_guard lock(mutex_);
   const bool done = state != "queued" && state != "running";

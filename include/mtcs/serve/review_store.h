@@ -97,6 +97,7 @@ class ReviewStore {
   std::optional<Job> claim_next();
   nlohmann::json job_json(long project, long id);
   nlohmann::json jobs(long project);
+  long queued_jobs(long project);
   void set_job_state(long id, const std::string& state, const std::string& message = "",
                      const nlohmann::json& result = nullptr);
   // Cancels a job still queued (atomically against claim_next); false when it is not queued.
