@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <random>
@@ -108,20 +109,25 @@ TEST_CASE("line sinks on the block case against FreeFem++ P2 at the 720 patch sa
   const Reference ref = patch_reference();
   const Setting setting = block_setting();
   const auto bores = block_bores();
-  struct Bar { Tier tier; int elements; double rms, max, spearman; };
-  // Bars: the reference study's anchors (T1 4.5 K, T2 1.2 K, T2d 0.05 K RMS) and the issue's
-  // target for the in-loop tier (T2d, 4 elements: RMS <= 0.2 K), each with a little headroom
-  // over what this implementation measures (experiments/thermal/line_sinks.md).
+  // Two kinds of bar, kept apart. `target`: an RMS error fixed outside this code (the reference
+  // study's T1 4.5 K and T2d 0.05 K; the issue's 0.2 K for the in-loop tier, T2d with 4 elements).
+  // `guard_*`: regression guards at what this code measured (experiments/thermal/line_sinks.md,
+  // cfa921a) plus 5 %, which catch a change, not a physics error. T2 has no target it meets: the
+  // study's 1.2 K against 1.300 K here (without dipoles the wall is not isothermal), so only a
+  // guard. T2d with 12 elements meets the study's 0.05 K with two image levels at the samples.
+  struct Bar { Tier tier; int elements, sample_images; double target, guard_rms, guard_max, guard_spearman; };
+  constexpr double none = std::numeric_limits<double>::infinity();
   const Bar bars[] = {
-      {Tier::T1, 1, 4.5, 8.0, 0.95},
-      {Tier::T2, 12, 1.6, 2.2, 0.99},
-      {Tier::T2d, 4, 0.2, 0.45, 0.998},
-      {Tier::T2d, 12, 0.07, 0.15, 0.9997},
+      {Tier::T1, 1, 0, 4.5, 1.05 * 2.3631, 1.05 * 5.5453, 0.955 - 0.05 * (1 - 0.955)},
+      {Tier::T2, 12, 0, none, 1.05 * 1.2995, 1.05 * 1.8040, 0.9948 - 0.05 * (1 - 0.9948)},
+      {Tier::T2d, 4, 0, 0.2, 1.05 * 0.1391, 1.05 * 0.3520, 0.9989 - 0.05 * (1 - 0.9989)},
+      {Tier::T2d, 12, 2, 0.05, 1.05 * 0.031, 1.05 * 0.050, 0.99996 - 0.05 * (1 - 0.99996)},
   };
   for (const Bar& bar : bars) {
     LineSinkOptions o;
     o.tier = bar.tier;
     o.elements = bar.elements;
+    o.sample_images = bar.sample_images;
     const LineSinkModel model(setting, ref.samples, o);
     LineSinkCache cache;
     const LineSinkSolution sol = model.solve(bores, cache);
@@ -130,16 +136,18 @@ TEST_CASE("line sinks on the block case against FreeFem++ P2 at the 720 patch sa
                  << " dmean " << c.mean_diff << " dstd " << c.std_diff << " spearman " << c.spearman
                  << " bores " << sol.channel_heat[0] + sol.channel_heat[1] + sol.channel_heat[2]
                  << " faces " << sol.face_heat);
-    CHECK(c.rms <= bar.rms);
-    CHECK(c.max <= bar.max);
-    CHECK(c.spearman >= bar.spearman);
+    CHECK(c.rms <= bar.target);
+    CHECK(c.rms <= bar.guard_rms);
+    CHECK(c.max <= bar.guard_max);
+    CHECK(c.spearman >= bar.guard_spearman);
     // Energy balance: what enters leaves through the bores and the faces.
     double bores_heat = 0;
     for (double q : sol.channel_heat) bores_heat += q;
     CHECK(bores_heat + sol.face_heat == Approx(144.0).epsilon(1e-9));
     CHECK(sol.heat_in == Approx(144.0).epsilon(1e-12));
-    // The reference's balance: bores 137.82 W, convection 6.18 W.
-    if (bar.tier == Tier::T2d) CHECK(sol.face_heat == Approx(6.18).epsilon(0.15));
+    // The reference's balance: bores 137.82 W, convection 6.18 W (T2d: 6.22-6.24 W; the faces'
+    // mean temperature is sampled on a 4 x 4 grid, hence 2 %).
+    if (bar.tier == Tier::T2d) CHECK(sol.face_heat == Approx(6.18).epsilon(0.02));
   }
 }
 
