@@ -476,7 +476,9 @@ Eigen::MatrixXf VoidSurface::layer(const Eigen::MatrixXf& d) const {
 Eigen::MatrixXd VoidSurface::response(std::span<const Vec3> targets) const { return times_inverse(potentials(targets)); }
 
 Eigen::MatrixXd VoidSurface::times_inverse(const Eigen::MatrixXd& r) const {
-  // (R A^-1)^T = A^-T R^T.
+  // (R A^-1)^T = A^-T R^T. No rows (a block with no convective face): Eigen's triangular solve
+  // would bind a reference to the empty right-hand side's null data (UBSan).
+  if (r.rows() == 0) return Eigen::MatrixXd(0, r.cols());
   const Eigen::MatrixXd y = lu_.transpose().solve(r.transpose());
   return y.transpose();
 }
