@@ -25,18 +25,9 @@ cmake --build build-asan -j2
 # OpenCASCADE's libraries (the STEP export) keep allocations for the process's life: suppressed.
 export ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$PWD/scripts/lsan_suppressions.txt" \
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
-# The modules below the commands, every case (tests/CMakeLists.txt labels each with its executable)
-# but those that take over 10 s under ASan for a finite-volume reference solve or a whole ES
-# run (the kernels they call are run by the cases kept; 400 s of thermal's and 120 s of run's
-# 670 s serial, measured at 4efedea). no_allocation_tests replaces operator new and delete,
-# which ASan must own (an alloc-dealloc mismatch at exit): Release only.
-modules="^(geometry|mesh|voxel|thermal|opt|run|mold|io|store|serve)_tests$"
-slow="read a coupled cup|see a plate-shaped void|shape factor converges|core keeps the heat|thin shell's outer edge"
-slow+="|reference block at 1 mm meets|isothermal face has S|void plane: the line sinks see the plate|surface spread against the FEM"
-slow+="|through a cavity void's wall matches|infeasible children of feasible parents|ranks an infeasible layout as its penalty"
+# Which cases: scripts/sanitize_selection.sh (scripts/claims.py counts them from there too).
+source scripts/sanitize_selection.sh
 ctest --test-dir build-asan --output-on-failure -j2 -L "$modules" -E "$slow"
-ctest --test-dir build-asan --output-on-failure -j2 -LE "$modules" -E "baffle's coolant warms" -R "CSV|mutated|bad numbers|run store faults|mesh reader|hypervolume|mtcs distance|mtcs evaluate|stiff|segments|circle|mold spec|layout|pipeline|meshes|cylinder-triangle|cylinder vs box|triangle-triangle|interference:|mtcs clearance|mtcs interfere|mtcs thermal|thermal spec|wall thickness|part sides|disk cache|panel matrix|hydraulics|coolant rise: the line sinks|coolant constraints|design rules|baffle:|bubbler:|blind bore:|molding over a whole face|access-map (rewrites|errors|MESH)"
-# (the case excluded there solves the plate's finite volumes at 4 mm: 70 s under ASan; the blind
-# bores' film and drop run in the cases kept.)
+ctest --test-dir build-asan --output-on-failure -j2 -LE "$modules" -E "$skip" -R "$commands"
 # Coverage-guided fuzzing of every reader, a few seconds a target (skipped without clang/libFuzzer).
 if [ "${MTCS_SKIP_FUZZ:-0}" != 1 ]; then bash scripts/fuzz.sh --smoke; fi
