@@ -25,9 +25,9 @@ cmake --build build-asan -j2
 # OpenCASCADE's libraries (the STEP export) keep allocations for the process's life: suppressed.
 export ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$PWD/scripts/lsan_suppressions.txt" \
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
-# Which cases: scripts/sanitize_selection.sh (scripts/claims.py counts them from there too).
+# Which cases: scripts/sanitize_selection.sh (the claims ledger counts them from there too).
 source scripts/sanitize_selection.sh
 ctest --test-dir build-asan --output-on-failure -j2 -L "$modules" -E "$slow"
-ctest --test-dir build-asan --output-on-failure -j2 -LE "$modules" -E "$skip" -R "$commands"
+ctest --test-dir build-asan --output-on-failure -j2 -LE "$modules" -E "$heavy"
 # Coverage-guided fuzzing of every reader, a few seconds a target (skipped without clang/libFuzzer).
 if [ "${MTCS_SKIP_FUZZ:-0}" != 1 ]; then bash scripts/fuzz.sh --smoke; fi
