@@ -180,7 +180,7 @@ def step_part(s):
     result = {}
     text = ""
     for mold in ("cup", "gear", "l_bracket", "ribbed_box"):
-        out = sh([s.mtcs, "bench", "part", f"molds/{mold}.yaml", "--repeat", "3"], stderr=subprocess.DEVNULL)
+        out = sh([s.mtcs, "bench", "part", f"molds/{mold}.yaml", "--repeat", "3"])
         text += out if not text else out.split("\n", 1)[1]
         for r in csv.DictReader(io.StringIO(out)):
             result[f"{mold}_{r['measure']}"] = float(r["value"])
@@ -256,6 +256,8 @@ def load_last():
 
 def measured(last, name):
     step, _, key = name.partition(".")
+    if step == "run":  # the whole run's own figures (its minutes)
+        return last.get("run", {}).get(key)
     return last["steps"].get(step, {}).get("measures", {}).get(key)
 
 
@@ -320,6 +322,11 @@ def fmt(v):
     return f"{v:.3g}" if abs(v) < 1000 else f"{v:,.0f}".replace(",", " ")
 
 
+def cell(text):
+    """Text inside a Markdown table cell."""
+    return str(text).replace("|", "\\|")
+
+
 def render(ledger, last):
     lines = [
         "# Claims ledger",
@@ -334,8 +341,8 @@ def render(ledger, last):
     ]
     meta = last.get("run")
     if meta:
-        lines += [f"Last run: {meta['date']}, commit {meta['commit']}, {meta['machine']}, "
-                  f"{meta['minutes']:.1f} min (`{meta['command']}`).", ""]
+        lines += [f"Last run: {meta['date']}, commit {meta['commit']}, {meta['machine']} "
+                  f"(`{meta['command']}`); every step, as last run: {meta['minutes']:.1f} min.", ""]
     lines += ["## Re-measured by `scripts/claims.sh`", "",
               "| claim | where | stated | last run | noise | holds | what it measures | step |",
               "|---|---|---:|---:|---:|:---:|---|---|"]
@@ -350,8 +357,8 @@ def render(ledger, last):
         bound = {"at_most": "≤ ", "at_least": "≥ "}.get(c.get("bound"), "")
         noise = f"{c.get('noise', 0) * 100:.0f} %" if c.get("noise") else "exact"
         step = c["measure"] if isinstance(c["measure"], str) else c["measure"][0]
-        lines.append(f"| {c['id']}: “{c['text']}” | {c['file']} | {bound}{stated} | {fmt(v)} | {noise} | {ok} | "
-                     f"{c['measures']} | {step.split('.')[0]} |")
+        lines.append(f"| {c['id']}: “{cell(c['text'])}” | {c['file']} | {bound}{stated} | {fmt(v)} | {noise} | {ok} | "
+                     f"{cell(c['measures'])} | {step.split('.')[0]} |")
     lines += ["", "## Recorded, not re-measured by `scripts/claims.sh`", "",
               "Figures of the docs whose measurement is a study of its own (minutes to hours, a bare machine, root),",
               "with the data that holds them. `stale` counts the commits to the measured code since the data's.",
@@ -366,8 +373,8 @@ def render(ledger, last):
         stale = ""
         if commit and c.get("code"):
             stale = str(len(git("log", "--oneline", f"{commit.split()[0]}..HEAD", "--", *c["code"]).splitlines()))
-        lines.append(f"| {c['id']}: “{c['text']}” | {c['file']} | {c['measures']} | {data or 'none'} | {commit or '—'} | "
-                     f"{stale or '—'} | {c.get('rerun', '')} |")
+        lines.append(f"| {c['id']}: “{cell(c['text'])}” | {c['file']} | {cell(c['measures'])} | {data or 'none'} | "
+                     f"{commit or '—'} | {stale or '—'} | {cell(c.get('rerun', ''))} |")
     lines += ["", "## Steps, as last run", "",
               "Each step's measures were taken at the commit and date shown (`--only STEP` re-runs one).", "",
               "| step | what | commit | date | load | seconds |", "|---|---|---|---|---:|---:|"]
@@ -447,7 +454,6 @@ def main():
         return 1 if problems else 0
     if a.action == "run":
         mtcs = Path(a.mtcs).resolve()
-        started = time.perf_counter()
         with tempfile.TemporaryDirectory(prefix="mtcs-claims-") as work:
             s = Step(mtcs, Path(work))
             for name in a.only or STEPS:
@@ -461,7 +467,8 @@ def main():
                 print(f"claims: {name}: {time.perf_counter() - t0:.0f} s", flush=True)
         last["run"] = {"date": datetime.datetime.now().strftime("%Y-%m-%d %H:%M"), "commit": head(),
                        "machine": f"{machine()}, load {os.getloadavg()[0]:.1f} at the end",
-                       "minutes": (time.perf_counter() - started) / 60,
+                       # every step's last time summed: a run of all steps, however it was split
+                       "minutes": sum(st["seconds"] for st in last["steps"].values()) / 60,
                        "command": "bash scripts/claims.sh" + (" --only " + " ".join(a.only) if a.only else "")}
         LAST.write_text(json.dumps(last, indent=1, sort_keys=True) + "\n")
     render(ledger, last)

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Re-measures every figure README.md states (and the docs' that a short run can) on this machine,
 # keeps the values in experiments/claims/last.json and renders experiments/CLAIMS.md.
-#   bash scripts/claims.sh [--only STEP ...]     (after scripts/build.sh with the bench: ~25 min)
+#   bash scripts/claims.sh [--only STEP ...]     (after scripts/build.sh with the bench: ~10 min)
 # An idle machine gives figures worth quoting: the throughputs and wall times are this machine's.
 set -euo pipefail
 cd "$(dirname "$0")/.."
