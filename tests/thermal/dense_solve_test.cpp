@@ -3,7 +3,6 @@
 // 40; the plate: n = 331), and its determinism: the same system solved twice gives the same bits.
 #include <catch2/catch.hpp>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -30,20 +29,6 @@ MatrixXd random_system(int n, unsigned seed) {
     A.row(i) *= std::pow(10.0, (i % 5) - 2);
   }
   return A;
-}
-
-// The best of `runs` solves of a copy of A, in microseconds (the bench cases below).
-template <class Solve>
-double best_us(const MatrixXd& A, int runs, Solve&& solve) {
-  double best = 1e300;
-  for (int r = 0; r < runs; ++r) {
-    MatrixXd w = A;
-    const auto t0 = std::chrono::steady_clock::now();
-    const VectorXd x = solve(w);
-    best = std::min(best, std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
-    REQUIRE(x.allFinite());
-  }
-  return best;
 }
 
 }  // namespace
