@@ -91,8 +91,10 @@ class VoidSurface {
   // R A^-1 for rows R (x panels) by the LU, in double: the response of averages of targets
   // (R = their weights times potentials) without one solve per target.
   Eigen::MatrixXd times_inverse(const Eigen::MatrixXd& r) const;
-  // A^-1 D in double, by the LU.
-  Eigen::MatrixXd solve(const Eigen::MatrixXd& d) const { return lu_.solve(d); }
+  // A^-1 D in double, by the LU (no columns: none; Eigen's solve would touch the empty D's data).
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& d) const {
+    return d.cols() == 0 ? Eigen::MatrixXd(d.rows(), 0) : Eigen::MatrixXd(lu_.solve(d));
+  }
   // The layer tau = A^-1 D of normal derivatives D (panels x columns), in single precision by
   // A^-1 kept explicit (a product, not two triangular solves), and its temperature at targets:
   // potentials(targets) tau, potentials (targets x panels) = (1/4 pi) S.
