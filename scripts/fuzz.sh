@@ -43,6 +43,8 @@ cmake --build build-fuzz -j2 --target mtcs_fuzz mtcs_cli
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(mold_spec layout pairs_csv cylinders_csv points_csv front_file
                                      mesh_stl mesh_off mesh_obj mesh_ply run_store)
+# The review server's BCF reader: built when the server's libraries are (fuzz/CMakeLists.txt).
+if [ $# -eq 0 ] && [ -x build-fuzz/fuzz/fuzz_bcf ]; then targets+=(bcf); fi
 # Every execution writes its input to a file: on tmpfs when there is one.
 if [ -z "${TMPDIR:-}" ] && [ -d /dev/shm ] && [ -w /dev/shm ]; then export TMPDIR=/dev/shm; fi
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}"

@@ -83,16 +83,24 @@ std::string markup_file(long project, const json& topic, const std::string& guid
   t.append_attribute("TopicType") = topic.value("finding", "").empty() ? "ISSUE" : "CLASH";
   t.append_attribute("TopicStatus") = bcf_status(topic.at("status")).c_str();
   t.append_child("Title").text() = topic.at("title").get<std::string>().c_str();
+  if (const json labels = topic.value("labels", json::array()); !labels.empty()) {
+    auto l = t.append_child("Labels");
+    for (const json& label : labels) l.append_child("Label").text() = label.get<std::string>().c_str();
+  }
   t.append_child("CreationDate").text() = iso_time(topic.at("created")).c_str();
   t.append_child("CreationAuthor").text() = topic.at("created_by").get<std::string>().c_str();
   t.append_child("ModifiedDate").text() = iso_time(topic.at("modified")).c_str();
+  if (const double due = topic.value("due", 0.0); due > 0) t.append_child("DueDate").text() = iso_time(due).c_str();
   if (const std::string who = topic.value("assignee", ""); !who.empty()) t.append_child("AssignedTo").text() = who.c_str();
-  if (const std::string key = topic.value("finding", ""); !key.empty())
+  if (const std::string text = topic.value("description", ""); !text.empty())
+    t.append_child("Description").text() = text.c_str();
+  else if (const std::string key = topic.value("finding", ""); !key.empty())
     t.append_child("Description").text() = ("mtcs finding " + key).c_str();
   auto comments = t.append_child("Comments");
   for (const json& c : topic.at("comments")) {
+    const std::string kept = c.value("guid", "");
     const std::string comment_guid =
-        derived_guid("comment|" + std::to_string(project) + "|" + std::to_string(c.at("id").get<long>()));
+        kept.empty() ? derived_guid("comment|" + std::to_string(project) + "|" + std::to_string(c.at("id").get<long>())) : kept;
     auto node = comments.append_child("Comment");
     node.append_attribute("Guid") = comment_guid.c_str();
     node.append_child("Date").text() = iso_time(c.at("created")).c_str();
@@ -181,7 +189,9 @@ std::string bcf_archive(long project, const json& topics, const std::string& scr
   }
   files.emplace_back("extensions.xml", extensions_file(topics));
   for (const json& topic : topics) {
-    const std::string guid = derived_guid("topic|" + std::to_string(project) + "|" + std::to_string(topic.at("id").get<long>()));
+    const std::string kept = topic.value("guid", "");  // an item read from a BCF file keeps its GUID
+    const std::string guid =
+        kept.empty() ? derived_guid("topic|" + std::to_string(project) + "|" + std::to_string(topic.at("id").get<long>())) : kept;
     std::vector<std::pair<std::string, std::string>> viewpoints;
     files.emplace_back(guid + "/markup.bcf", markup_file(project, topic, guid, viewpoints));
     for (const auto& [view_guid, text] : viewpoints) files.emplace_back(guid + "/" + view_guid + ".bcfv", text);

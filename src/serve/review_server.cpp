@@ -23,6 +23,7 @@
 
 #include "assets.h"
 #include "mtcs/serve/bcf_export.h"
+#include "mtcs/serve/bcf_import.h"
 #include "mtcs/serve/blob_store.h"
 #include "mtcs/serve/credentials.h"
 #include "mtcs/serve/event_broker.h"
@@ -170,6 +171,7 @@ const std::vector<RouteInfo>& route_table() {
        Role::designer},
       {"GET", R"(/api/v1/projects/(\d+)/topics)", "/api/v1/projects/1/topics", Access::member, Role::viewer},
       {"GET", R"(/api/v1/projects/(\d+)/bcf)", "/api/v1/projects/1/bcf", Access::member, Role::viewer},
+      {"POST", R"(/api/v1/projects/(\d+)/bcf)", "/api/v1/projects/1/bcf", Access::member, Role::reviewer},
       {"POST", R"(/api/v1/projects/(\d+)/topics)", "/api/v1/projects/1/topics", Access::member, Role::reviewer},
       {"GET", R"(/api/v1/projects/(\d+)/topics/(\d+))", "/api/v1/projects/1/topics/1", Access::member, Role::viewer},
       {"PATCH", R"(/api/v1/projects/(\d+)/topics/(\d+))", "/api/v1/projects/1/topics/1", Access::member,
@@ -182,6 +184,11 @@ const std::vector<RouteInfo>& route_table() {
 }
 
 namespace {
+const std::regex& bcf_route() {
+  static const std::regex r(R"(/api/v1/projects/\d+/bcf)");
+  return r;
+}
+
 const std::regex& upload_route() {
   static const std::regex pattern(R"(/api/v1/projects/(\d+)/components/([A-Za-z0-9_.-]{1,64})/versions)");
   return pattern;
@@ -272,6 +279,8 @@ struct ReviewServer::Impl {
   // so it may be chunked. A refused body is never read: the connection closes after the answer.
   httplib::Server::HandlerResponse gate_body(const Request& req, Response& res) {
     const bool upload = req.method == "POST" && std::regex_match(req.path, upload_route());
+    const bool bcf = req.method == "POST" && std::regex_match(req.path, bcf_route());
+    const std::size_t cap = upload ? options.upload_bytes : bcf ? options.bcf_bytes : options.body_bytes;
     const bool chunked = lower(req.get_header_value("Transfer-Encoding")).find("chunked") != std::string::npos;
     const bool sized = req.has_header("Content-Length");
     const unsigned long long length = sized ? std::strtoull(req.get_header_value("Content-Length").c_str(), nullptr, 10) : 0;
@@ -284,8 +293,8 @@ struct ReviewServer::Impl {
       status = 411, why = "send the body with a Content-Length";
     else if (upload && !sized && !chunked)
       status = 411, why = "send the file with a Content-Length or chunked";
-    else if (length > (upload ? options.upload_bytes : options.body_bytes))
-      status = 413, why = "the body is larger than " + std::to_string(upload ? options.upload_bytes : options.body_bytes) + " bytes";
+    else if (length > cap)
+      status = 413, why = "the body is larger than " + std::to_string(cap) + " bytes";
     if (status == 0) return httplib::Server::HandlerResponse::Unhandled;
     res.set_header("Connection", "close");
     reply(res, status, {{"error", why}});
@@ -411,6 +420,7 @@ struct ReviewServer::Impl {
     }
     if (tail == R"(/topics/(\d+)/comments)") return new_comment(caller, req, res);
     if (tail == "/events") return stream(caller, req, res);
+    if (tail == "/bcf" && m == "POST") return import_bcf(caller, req, res);
     if (tail == "/bcf") {
       res.set_header("Content-Disposition", "attachment; filename=\"project-" + std::to_string(project) + ".bcf\"");
       return res.set_content(bcf_archive(project, store.topics(project, caller.role), (blobs.root() / "tmp").string()),
@@ -609,6 +619,23 @@ struct ReviewServer::Impl {
     const json topic = store.topic(caller.project, id, caller.role);
     events.publish(caller.project, "topic.created", caller.user.id, topic);
     reply(res, 201, topic);
+  }
+
+  // A BCF file's items into the project (its bytes are the body); each item added or followed
+  // goes to the live pages as it would if made here.
+  void import_bcf(const Caller& caller, const Request& req, Response& res) {
+    std::vector<BcfTopic> topics;
+    try {
+      topics = read_bcf(req.body);
+    } catch (const BcfError& e) {
+      throw Refusal(400, std::string("the BCF file: ") + e.what());
+    }
+    const json summary = store.import_topics(caller.project, topics, caller.user.id);
+    for (const json& t : summary["topics"]) {
+      const json topic = store.topic(caller.project, t["id"].get<long>(), caller.role);
+      events.publish(caller.project, t["added"].get<bool>() ? "topic.created" : "topic.updated", caller.user.id, topic);
+    }
+    reply(res, 200, summary);
   }
 
   void update_topic(const Caller& caller, const Request& req, Response& res) {

@@ -2,10 +2,13 @@
 
 #include <sqlite3.h>
 
+#include <cctype>
 #include <chrono>
 #include <map>
+#include <set>
 #include <stdexcept>
 
+#include "mtcs/serve/bcf_export.h"
 #include "mtcs/store/sqlite_statement.h"
 
 namespace mtcs::serve {
@@ -53,6 +56,16 @@ const char* const kMigrations[] = {
     "CREATE TABLE event(id INTEGER PRIMARY KEY AUTOINCREMENT, project INTEGER NOT NULL, time REAL NOT NULL,"
     "  actor INTEGER NOT NULL, type TEXT NOT NULL, data TEXT NOT NULL);"
     "CREATE INDEX event_project ON event(project, id);",
+    // 2: items from BCF files keep their GUIDs, descriptions, labels, due dates and the names of
+    // authors who hold no account here.
+    "ALTER TABLE topic ADD COLUMN guid TEXT NOT NULL DEFAULT '';"
+    "ALTER TABLE topic ADD COLUMN description TEXT NOT NULL DEFAULT '';"
+    "ALTER TABLE topic ADD COLUMN labels TEXT NOT NULL DEFAULT '[]';"
+    "ALTER TABLE topic ADD COLUMN due REAL NOT NULL DEFAULT 0;"
+    "ALTER TABLE topic ADD COLUMN author_name TEXT NOT NULL DEFAULT '';"
+    "ALTER TABLE comment ADD COLUMN guid TEXT NOT NULL DEFAULT '';"
+    "ALTER TABLE comment ADD COLUMN author_name TEXT NOT NULL DEFAULT '';"
+    "CREATE INDEX topic_guid ON topic(project, guid);",
 };
 
 std::string name_of(sqlite3* db, long user) {
@@ -491,23 +504,38 @@ std::vector<long> ReviewStore::note_on_finding(long project, const std::string& 
 }
 
 namespace {
+// An author who has no account here (an item from a BCF file) is named as the file names them.
+std::string author(sqlite3* db, const std::string& name, long user) { return name.empty() ? name_of(db, user) : name; }
+
 json topic_row(sqlite3* db, Query& q, Role role) {
-  json t{{"id", q.integer(0)},       {"title", q.text(1)},   {"status", q.text(2)},
-         {"assignee", q.text(3)},    {"finding", q.text(4)}, {"created_by", name_of(db, q.integer(5))},
-         {"created", q.real(6)},     {"modified", q.real(7)},
+  json t{{"id", q.integer(0)},
+         {"title", q.text(1)},
+         {"status", q.text(2)},
+         {"assignee", q.text(3)},
+         {"finding", q.text(4)},
+         {"created_by", author(db, q.text(12), q.integer(5))},
+         {"created", q.real(6)},
+         {"modified", q.real(7)},
+         {"guid", q.text(8)},
+         {"description", q.text(9)},
+         {"labels", json::parse(q.text(10))},
+         {"due", q.real(11)},
          {"authorization", {{"topic_actions", topic_actions(role)}, {"topic_status", topic_statuses()}}},
          {"comments", json::array()}};
-  Query c(db, "SELECT id, text, viewpoint, author, created FROM comment WHERE topic = ? ORDER BY id");
+  Query c(db, "SELECT id, text, viewpoint, author, created, guid, author_name FROM comment WHERE topic = ? ORDER BY id");
   c.bind(1, q.integer(0));
   while (c.step())
     t["comments"].push_back({{"id", c.integer(0)},
                              {"text", c.text(1)},
                              {"viewpoint", parse_or_null(c.text(2))},
-                             {"author", name_of(db, c.integer(3))},
-                             {"created", c.real(4)}});
+                             {"author", author(db, c.text(6), c.integer(3))},
+                             {"created", c.real(4)},
+                             {"guid", c.text(5)}});
   return t;
 }
-constexpr const char* kTopicColumns = "SELECT id, title, status, assignee, finding, created_by, created, modified FROM topic ";
+constexpr const char* kTopicColumns =
+    "SELECT id, title, status, assignee, finding, created_by, created, modified, guid, description, labels, due,"
+    " author_name FROM topic ";
 }  // namespace
 
 json ReviewStore::topics(long project, Role role) {
@@ -517,6 +545,87 @@ json ReviewStore::topics(long project, Role role) {
   Query q(db_, sql.c_str());
   q.bind(1, project);
   while (q.step()) out.push_back(topic_row(db_, q, role));
+  return out;
+}
+
+namespace {
+// BCF's statuses are each tool's own words; these are the review app's four.
+std::string status_of(const std::string& bcf) {
+  std::string s;
+  for (char c : bcf) s += (c == ' ' || c == '-') ? '_' : char(std::tolower(static_cast<unsigned char>(c)));
+  if (s == "in_progress" || s == "active" || s == "assigned") return "in_progress";
+  if (s == "resolved" || s == "fixed" || s == "done") return "resolved";
+  if (s == "closed") return "closed";
+  return "open";  // open, reopened, new, and any word this server does not know
+}
+}  // namespace
+
+json ReviewStore::import_topics(long project, const std::vector<BcfTopic>& topics, long user) {
+  std::lock_guard lock(mutex_);
+  store::exec(db_, "BEGIN IMMEDIATE;", kWhat);
+  json out{{"topics_added", 0}, {"topics_updated", 0}, {"comments_added", 0}, {"topics", json::array()}};
+  try {
+    // The GUIDs this project's items already answer to: an imported one's own, or the one an
+    // export derives from the item's id (a file exported here and read back adds nothing).
+    std::map<std::string, long> topic_by_guid;
+    std::set<std::string> comment_guids;
+    {
+      Query q(db_, "SELECT id, guid FROM topic WHERE project = ?");
+      q.bind(1, project);
+      while (q.step()) {
+        const long id = q.integer(0);
+        topic_by_guid[q.text(1).empty() ? derived_guid("topic|" + std::to_string(project) + "|" + std::to_string(id))
+                                        : q.text(1)] = id;
+      }
+      Query c(db_, "SELECT comment.id, comment.guid FROM comment JOIN topic ON topic.id = comment.topic WHERE topic.project = ?");
+      c.bind(1, project);
+      while (c.step())
+        comment_guids.insert(c.text(1).empty()
+                                 ? derived_guid("comment|" + std::to_string(project) + "|" + std::to_string(c.integer(0)))
+                                 : c.text(1));
+    }
+    for (const BcfTopic& t : topics) {
+      long id = 0;
+      const bool known = topic_by_guid.count(t.guid) > 0;
+      if (known) {
+        id = topic_by_guid[t.guid];
+        out["topics_updated"] = out["topics_updated"].get<int>() + 1;
+      } else {
+        Query q(db_,
+                "INSERT INTO topic(project, title, status, assignee, created_by, created, modified, guid, description,"
+                " labels, due, author_name) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+        q.bind(1, project).bind(2, t.title).bind(3, status_of(t.status)).bind(4, t.assignee).bind(5, user);
+        q.bind(6, t.created).bind(7, t.modified > 0 ? t.modified : t.created).bind(8, t.guid).bind(9, t.description);
+        q.bind(10, json(t.labels).dump()).bind(11, t.due).bind(12, t.author).step();
+        id = long(sqlite3_last_insert_rowid(db_));
+        topic_by_guid[t.guid] = id;
+        out["topics_added"] = out["topics_added"].get<int>() + 1;
+      }
+      out["topics"].push_back({{"id", id}, {"added", !known}});
+      auto add = [&](const std::string& guid, const std::string& text, const json& viewpoint, const std::string& who,
+                     double when) {
+        if (!guid.empty() && !comment_guids.insert(guid).second) return;  // already here
+        Query q(db_, "INSERT INTO comment(topic, text, viewpoint, author, created, guid, author_name) VALUES(?, ?, ?, ?, ?, ?, ?)");
+        q.bind(1, id).bind(2, text);
+        if (viewpoint.is_null()) q.bind_null(3);
+        else q.bind(3, viewpoint.dump());
+        q.bind(4, user).bind(5, when).bind(6, guid).bind(7, who).step();
+        out["comments_added"] = out["comments_added"].get<int>() + 1;
+      };
+      std::set<std::string> shown;
+      for (const BcfComment& c : t.comments) {
+        add(c.guid, c.text, c.viewpoint.empty() ? json() : t.viewpoints.at(c.viewpoint), c.author, c.date);
+        if (!c.viewpoint.empty()) shown.insert(c.viewpoint);
+      }
+      // A viewpoint no comment shows becomes a comment of its own (named by its GUID: once).
+      for (const auto& [guid, camera] : t.viewpoints)
+        if (!shown.count(guid)) add(guid, "(a viewpoint of the BCF file)", camera, t.author, t.created);
+    }
+    store::exec(db_, "COMMIT;", kWhat);
+  } catch (...) {
+    store::exec(db_, "ROLLBACK;", kWhat);
+    throw;
+  }
   return out;
 }
 

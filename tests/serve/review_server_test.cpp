@@ -440,6 +440,39 @@ TEST_CASE("mtcs serve: the interference check on the server, findings across ver
   };
   CHECK(guids(again->body) == guids(bcf->body));
   CHECK_FALSE(guids(bcf->body).empty());
+  // BCF import: the project's own export adds nothing; buildingSMART's Labels case adds its item
+  // with its comment, told live; a viewer may not import; a file that is no BCF is a 400.
+  auto topics = [&] { return json::parse(dora.http.Get("/api/v1/projects/1/topics", dora.headers)->body); };
+  const std::size_t items = topics().size();
+  auto import = [&](Browser& who, const std::string& bytes) {
+    return who.http.Post("/api/v1/projects/1/bcf", who.headers, bytes, "application/octet-stream");
+  };
+  auto own = import(dora, bcf->body);
+  REQUIRE(own);
+  INFO(own->body);
+  CHECK(own->status == 200);
+  CHECK(json::parse(own->body)["topics_added"] == 0);
+  CHECK(json::parse(own->body)["comments_added"] == 0);
+  auto labels = import(dora, read_file(fs::path(MTCS_TEST_DATA) / "bcf/test_cases/Labels.bcf"));
+  REQUIRE(labels);
+  CHECK(labels->status == 200);
+  CHECK(json::parse(labels->body)["topics_added"] == 1);
+  const json after = topics();
+  CHECK(after.size() == items + 1);
+  CHECK(after.back()["title"] == "Labels");
+  CHECK(after.back()["labels"] == json::array({"Architects"}));
+  CHECK(import(vic, bcf->body)->status == 403);
+  auto junk = import(dora, "not a zip at all");
+  CHECK(junk->status == 400);
+  CHECK_THAT(junk->body, Catch::Contains("the BCF file"));
+  CHECK(topics().size() == items + 1);
+  // Exported again: the imported item under its own GUID with its labels, valid against the schemas.
+  const auto both = vic.http.Get("/api/v1/projects/1/bcf", vic.headers);
+  REQUIRE(both);
+  std::ofstream(bcf_file, std::ios::binary | std::ios::trunc) << both->body;
+  CHECK(std::system(("python3 " + MTCS_SOURCE_DIR + "/tests/serve/check_bcf.py " + bcf_file.string() + " " + MTCS_TEST_DATA +
+                     "/bcf/schemas " + std::to_string(items + 1) + " 10,20,30").c_str()) == 0);
+  CHECK(both->body.find("bee19eb8-3ec0-4e0d-90df-52afc806beaf/markup.bcf") != std::string::npos);
 
   // The same check again: every finding persistent, the item told so.
   const long second = dora.send("POST", "/api/v1/projects/1/jobs", check, 202)["id"];

@@ -29,6 +29,7 @@ struct ServeOptions {
   double stream_seconds = 300;        // a live stream's life; the page reconnects by itself
   std::size_t upload_bytes = 64u << 20;
   std::size_t body_bytes = 1u << 20;  // JSON bodies
+  std::size_t bcf_bytes = 32u << 20;  // a BCF file to import (snapshots make them large)
   bool secure_cookie = false;         // behind TLS (nginx): the session cookie gets Secure
   std::filesystem::path mtcs_binary;  // what checks run (default: this program)
 };

@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "mtcs/serve/bcf_import.h"
 #include "mtcs/serve/roles.h"
 
 struct sqlite3;
@@ -115,6 +116,11 @@ class ReviewStore {
   // A comment by mtcs itself on every item of the project that follows this finding; their ids.
   std::vector<long> note_on_finding(long project, const std::string& finding_key, const std::string& text);
   nlohmann::json topics(long project, Role role);
+  // A BCF file's items into the project, in one transaction: an item whose GUID the project knows
+  // (imported before, or exported from here) gains only the comments it lacks; the others are
+  // added with their authors' names, dates, labels and viewpoints. The importer owns the rows.
+  // {topics_added, topics_updated, comments_added, topics: [{id, added}] in the file's order}.
+  nlohmann::json import_topics(long project, const std::vector<BcfTopic>& topics, long user);
   nlohmann::json topic(long project, long topic, Role role);
 
   // The event log of a project.

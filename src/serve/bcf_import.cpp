@@ -1,0 +1,244 @@
+#include "mtcs/serve/bcf_import.h"
+
+#include <zip.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <memory>
+#include <pugixml.hpp>
+#include <set>
+
+namespace mtcs::serve {
+namespace {
+
+using nlohmann::json;
+constexpr double kMillimetresPerMetre = 1000;
+
+// An entry name a writer of files could be tricked by (zip-slip), or one no BCF tool writes.
+bool safe_name(const std::string& name) {
+  if (name.empty() || name.size() > 512 || name.front() == '/' || name.find('\\') != std::string::npos ||
+      name.find(':') != std::string::npos || name.find('\0') != std::string::npos)
+    return false;
+  std::size_t start = 0;
+  while (start <= name.size()) {
+    const std::size_t end = std::min(name.find('/', start), name.size());
+    const std::string part = name.substr(start, end - start);
+    if (part == ".." || part == "." || (part.empty() && end != name.size())) return false;
+    start = end + 1;
+  }
+  return true;
+}
+
+struct ZipCloser {
+  void operator()(zip_t* z) const { zip_discard(z); }
+};
+struct FileCloser {
+  void operator()(zip_file_t* f) const { zip_fclose(f); }
+};
+
+class Archive {
+ public:
+  Archive(std::string_view bytes, const BcfLimits& limits) : limits_(limits) {
+    zip_error_t error;
+    zip_error_init(&error);
+    zip_source_t* source = zip_source_buffer_create(bytes.data(), bytes.size(), 0, &error);
+    if (!source) throw BcfError("not a zip: " + std::string(zip_error_strerror(&error)));
+    zip_.reset(zip_open_from_source(source, ZIP_RDONLY | ZIP_CHECKCONS, &error));
+    if (!zip_) {
+      zip_source_free(source);
+      const std::string why = zip_error_strerror(&error);
+      zip_error_fini(&error);
+      throw BcfError("not a BCF file (a zip): " + why);
+    }
+    const zip_int64_t n = zip_get_num_entries(zip_.get(), 0);
+    if (n < 0 || std::uint64_t(n) > limits.max_entries)
+      throw BcfError("the zip holds " + std::to_string(n) + " entries, more than " +
+                     std::to_string(limits.max_entries));
+    for (zip_int64_t i = 0; i < n; ++i) {
+      zip_stat_t st;
+      zip_stat_init(&st);
+      if (zip_stat_index(zip_.get(), zip_uint64_t(i), 0, &st) != 0 || !(st.valid & ZIP_STAT_NAME))
+        throw BcfError("entry " + std::to_string(i) + ": unreadable");
+      const std::string name = st.name;
+      if (!safe_name(name)) throw BcfError("entry '" + name + "': a name no BCF file has (an absolute path, '..' or '\\')");
+      if (!names_.insert(name).second) throw BcfError("entry '" + name + "': twice in the zip");
+    }
+  }
+
+  bool has(const std::string& name) const { return names_.count(name) > 0; }
+  const std::set<std::string>& names() const { return names_; }
+
+  // The entry expanded, read no further than the limits allow (the sizes in its header are the
+  // writer's word, not a fact).
+  std::string read(const std::string& name) {
+    zip_stat_t st;
+    zip_stat_init(&st);
+    if (zip_stat(zip_.get(), name.c_str(), 0, &st) != 0) throw BcfError("entry '" + name + "': missing");
+    std::unique_ptr<zip_file_t, FileCloser> f(zip_fopen(zip_.get(), name.c_str(), 0));
+    if (!f) throw BcfError("entry '" + name + "': " + zip_strerror(zip_.get()));
+    std::string out;
+    char buffer[65536];
+    for (;;) {
+      const zip_int64_t got = zip_fread(f.get(), buffer, sizeof buffer);
+      if (got < 0) throw BcfError("entry '" + name + "': " + zip_file_strerror(f.get()));
+      if (got == 0) break;
+      out.append(buffer, std::size_t(got));
+      total_ += std::uint64_t(got);
+      if (out.size() > limits_.max_entry_bytes)
+        throw BcfError("entry '" + name + "': expands past " + std::to_string(limits_.max_entry_bytes) + " bytes");
+      if (total_ > limits_.max_total_bytes)
+        throw BcfError("the zip expands past " + std::to_string(limits_.max_total_bytes) + " bytes");
+      if ((st.valid & ZIP_STAT_COMP_SIZE) && out.size() > (1u << 20) &&
+          double(out.size()) > limits_.max_ratio * double(std::max<zip_uint64_t>(st.comp_size, 1)))
+        throw BcfError("entry '" + name + "': expands over " + std::to_string(int(limits_.max_ratio)) +
+                       " times its compressed size (a zip bomb)");
+    }
+    return out;
+  }
+
+ private:
+  BcfLimits limits_;
+  std::unique_ptr<zip_t, ZipCloser> zip_;
+  std::set<std::string> names_;
+  std::uint64_t total_ = 0;
+};
+
+pugi::xml_document parse_xml(const std::string& text, const std::string& entry) {
+  pugi::xml_document doc;
+  // No entity expansion beyond XML's five: pugixml never fetches or expands external entities.
+  const pugi::xml_parse_result r = doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_utf8);
+  if (!r) throw BcfError("entry '" + entry + "': not XML (" + r.description() + " at byte " + std::to_string(r.offset) + ")");
+  return doc;
+}
+
+std::string child_text(pugi::xml_node node, const char* name) { return node.child(name).text().as_string(); }
+
+double time_field(pugi::xml_node node, const char* name, const std::string& entry, bool required) {
+  const std::string text = child_text(node, name);
+  if (text.empty()) {
+    if (required) throw BcfError("entry '" + entry + "': " + node.name() + " has no " + name);
+    return 0;
+  }
+  try {
+    return bcf_time(text);
+  } catch (const BcfError& e) {
+    throw BcfError("entry '" + entry + "': " + name + ": " + e.what());
+  }
+}
+
+double number(pugi::xml_node node, const char* name, const std::string& entry) {
+  const std::string text = child_text(node, name);
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v))
+    throw BcfError("entry '" + entry + "': " + name + " is not a number: '" + text + "'");
+  return v;
+}
+
+json vector3(pugi::xml_node node, const char* name, double scale, const std::string& entry) {
+  const pugi::xml_node v = node.child(name);
+  if (!v) throw BcfError("entry '" + entry + "': the camera has no " + name);
+  return json::array({number(v, "X", entry) * scale, number(v, "Y", entry) * scale, number(v, "Z", entry) * scale});
+}
+
+json camera(const std::string& text, const std::string& entry) {
+  const pugi::xml_document doc = parse_xml(text, entry);
+  const pugi::xml_node info = doc.child("VisualizationInfo");
+  if (!info) throw BcfError("entry '" + entry + "': no VisualizationInfo");
+  const pugi::xml_node c = info.child("PerspectiveCamera");
+  if (!c) return nullptr;  // an orthogonal camera or none: the review app shows perspective only
+  json v{{"camera_view_point", vector3(c, "CameraViewPoint", kMillimetresPerMetre, entry)},
+         {"camera_direction", vector3(c, "CameraDirection", 1, entry)},
+         {"camera_up_vector", vector3(c, "CameraUpVector", 1, entry)},
+         {"field_of_view", number(c, "FieldOfView", entry)}};
+  if (c.child("AspectRatio")) v["aspect_ratio"] = number(c, "AspectRatio", entry);
+  return v;
+}
+
+BcfTopic topic_of(Archive& zip, const std::string& folder) {
+  const std::string entry = folder + "/markup.bcf";
+  const pugi::xml_document doc = parse_xml(zip.read(entry), entry);
+  const pugi::xml_node t = doc.child("Markup").child("Topic");
+  if (!t) throw BcfError("entry '" + entry + "': no Markup/Topic");
+  BcfTopic topic;
+  topic.guid = t.attribute("Guid").as_string();
+  if (topic.guid.empty()) throw BcfError("entry '" + entry + "': the Topic has no Guid");
+  topic.type = t.attribute("TopicType").as_string();
+  topic.status = t.attribute("TopicStatus").as_string();
+  topic.title = child_text(t, "Title");
+  if (topic.title.empty()) throw BcfError("entry '" + entry + "': the Topic has no Title");
+  topic.description = child_text(t, "Description");
+  topic.author = child_text(t, "CreationAuthor");
+  topic.assignee = child_text(t, "AssignedTo");
+  topic.created = time_field(t, "CreationDate", entry, true);
+  topic.modified = time_field(t, "ModifiedDate", entry, false);
+  topic.due = time_field(t, "DueDate", entry, false);
+  for (pugi::xml_node l : t.child("Labels").children("Label")) topic.labels.push_back(l.text().as_string());
+  for (pugi::xml_node v : t.child("Viewpoints").children("ViewPoint")) {
+    const std::string guid = v.attribute("Guid").as_string();
+    const std::string file = child_text(v, "Viewpoint");
+    if (guid.empty()) throw BcfError("entry '" + entry + "': a ViewPoint has no Guid");
+    if (file.empty() || file.find('/') != std::string::npos || !safe_name(folder + "/" + file))
+      throw BcfError("entry '" + entry + "': ViewPoint " + guid + " names no file of its folder: '" + file + "'");
+    if (!zip.has(folder + "/" + file)) throw BcfError("entry '" + entry + "': ViewPoint " + guid + ": " + file + " is not in the zip");
+    topic.viewpoints[guid] = camera(zip.read(folder + "/" + file), folder + "/" + file);
+  }
+  for (pugi::xml_node c : t.child("Comments").children("Comment")) {
+    BcfComment comment;
+    comment.guid = c.attribute("Guid").as_string();
+    comment.author = child_text(c, "Author");
+    comment.text = child_text(c, "Comment");
+    comment.date = time_field(c, "Date", entry, true);
+    comment.viewpoint = c.child("Viewpoint").attribute("Guid").as_string();
+    if (!comment.viewpoint.empty() && !topic.viewpoints.count(comment.viewpoint))
+      throw BcfError("entry '" + entry + "': comment " + comment.guid + " points at viewpoint " + comment.viewpoint +
+                     ", which the topic does not list");
+    topic.comments.push_back(std::move(comment));
+  }
+  return topic;
+}
+
+}  // namespace
+
+double bcf_time(const std::string& text) {
+  int y, mo, d, h, mi;
+  double s;
+  int used = 0;
+  if (std::sscanf(text.c_str(), "%4d-%2d-%2dT%2d:%2d:%lf%n", &y, &mo, &d, &h, &mi, &s, &used) != 6)
+    throw BcfError("not a date and time (YYYY-MM-DDThh:mm:ss): '" + text + "'");
+  if (mo < 1 || mo > 12 || d < 1 || d > 31 || h > 23 || mi > 59 || !(s >= 0 && s < 61))
+    throw BcfError("a date or time out of range: '" + text + "'");
+  double offset = 0;
+  const std::string zone = text.substr(std::size_t(used));
+  if (zone == "Z" || zone.empty()) {
+  } else if ((zone[0] == '+' || zone[0] == '-') && zone.size() == 6 && zone[3] == ':') {
+    const int oh = std::stoi(zone.substr(1, 2)), om = std::stoi(zone.substr(4, 2));
+    offset = (zone[0] == '+' ? 1 : -1) * (oh * 3600.0 + om * 60.0);
+  } else {
+    throw BcfError("an unknown time zone in '" + text + "'");
+  }
+  std::tm t{};
+  t.tm_year = y - 1900, t.tm_mon = mo - 1, t.tm_mday = d, t.tm_hour = h, t.tm_min = mi;
+  return double(timegm(&t)) + s - offset;
+}
+
+std::vector<BcfTopic> read_bcf(std::string_view zip_bytes, const BcfLimits& limits) {
+  Archive zip(zip_bytes, limits);
+  if (!zip.has("bcf.version")) throw BcfError("no bcf.version: not a BCF file");
+  {
+    const pugi::xml_document doc = parse_xml(zip.read("bcf.version"), "bcf.version");
+    const std::string version = doc.child("Version").attribute("VersionId").as_string();
+    if (version != "3.0") throw BcfError("bcf.version: VersionId '" + version + "', this reader knows BCF 3.0");
+  }
+  std::vector<BcfTopic> topics;
+  for (const std::string& name : zip.names()) {
+    const std::size_t slash = name.find('/');
+    if (slash == std::string::npos || name.substr(slash) != "/markup.bcf") continue;
+    topics.push_back(topic_of(zip, name.substr(0, slash)));
+  }
+  return topics;
+}
+
+}  // namespace mtcs::serve
