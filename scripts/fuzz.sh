@@ -4,7 +4,7 @@
 #   scripts/fuzz.sh [SECONDS] [TARGET...]   long runs: SECONDS per target (default 600), every
 #                                           target unless named (mold_spec, mesh_stl, ...)
 #   scripts/fuzz.sh --smoke                 the test suite's short run: 7 s a target (about 9 s
-#                                           with start and end: under 2 minutes for all 11)
+#                                           with start and end: under 2 minutes for all 12)
 # Seeds come from fuzz/corpus/<target>/ (read only); what a run learns goes to
 # build-fuzz/corpus/<target>/, crashes to build-fuzz/artifacts/<target>/ and fail the script.
 # Without clang-14 or libFuzzer (libfuzzer-14-dev) it says so and exits 0 (1 under the test
