@@ -61,11 +61,9 @@ class Step:
 
 def step_counts(s):
     """Tests CTest runs and the sanitizers' share of them; the certified data's sizes."""
-    sel = {}
-    for line in (ROOT / "scripts/sanitize_selection.sh").read_text().splitlines():
-        m = re.match(r'^(\w+)(\+?)="(.*)"$', line)
-        if m:
-            sel[m[1]] = sel.get(m[1], "") + m[3] if m[2] else m[3]
+    names = ("modules", "slow", "heavy")  # bash reads the selection as sanitize.sh does
+    values = sh(["bash", "-c", 'source scripts/sanitize_selection.sh && printf "%s\\0" "$modules" "$slow" "$heavy"'])
+    sel = dict(zip(names, values.split("\0")))
 
     def count(*args):
         out = sh(["ctest", "--test-dir", "build", "-N", *args])
@@ -192,21 +190,22 @@ def step_part(s):
     return result
 
 
-def optimize_demo(s, out, seed, start=None, threads=None):
+def optimize_demo(s, out, seed, start=None, threads=None, env=None):
     args = [s.mtcs, "optimize", "molds/plate.yaml", "--evaluations", 10000, "--seed", seed, "--polish", 500,
             "--out", out, "--quiet"]
     args += ["--start", start] if start else ["--config", "configs/es_explore.yaml"]
     args += ["--threads", threads] if threads else []
-    sh(args)
+    sh(args, env=env)
     return json.loads((out / "summary.json").read_text())["best_objective"]
 
 
 def step_demo(s):
-    """The demo's first run as a user waits for it (2 threads), its report's size."""
+    """The demo's first run as a new user waits for it (no kept model), its report's size."""
     out = s.work / "demo"
     shutil.rmtree(out, ignore_errors=True)
+    cold = dict(os.environ, MTCS_CACHE_DIR=str(s.work / "demo_cache"))  # a first run keeps nothing yet
     t0 = time.perf_counter()
-    optimize_demo(s, out, 1)
+    optimize_demo(s, out, 1, env=cold)
     seconds = time.perf_counter() - t0
     sh([s.mtcs, "report", out, "--out", out / "report.html"])
     size = (out / "report.html").stat().st_size / 1e6
@@ -477,7 +476,7 @@ def main():
     problems = check(ledger, last)
     for p in problems:
         print("claims:", p, file=sys.stderr)
-    return 0
+    return 1 if problems else 0  # a figure the run no longer supports: the words must change
 
 
 if __name__ == "__main__":

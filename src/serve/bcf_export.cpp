@@ -85,10 +85,13 @@ std::string markup_file(long project, const json& topic, const std::string& guid
   t.append_child("Title").text() = topic.at("title").get<std::string>().c_str();
   if (const json labels = topic.value("labels", json::array()); !labels.empty()) {
     auto l = t.append_child("Labels");
-    for (const json& label : labels) l.append_child("Label").text() = label.get<std::string>().c_str();
+    for (const json& label : labels)
+      if (!label.get<std::string>().empty()) l.append_child("Label").text() = label.get<std::string>().c_str();
   }
   t.append_child("CreationDate").text() = iso_time(topic.at("created")).c_str();
-  t.append_child("CreationAuthor").text() = topic.at("created_by").get<std::string>().c_str();
+  // An imported item keeps the author its file named.
+  const std::string named = topic.value("bcf_author", "");
+  t.append_child("CreationAuthor").text() = (named.empty() ? topic.at("created_by").get<std::string>() : named).c_str();
   t.append_child("ModifiedDate").text() = iso_time(topic.at("modified")).c_str();
   if (const double due = topic.value("due", 0.0); due > 0) t.append_child("DueDate").text() = iso_time(due).c_str();
   if (const std::string who = topic.value("assignee", ""); !who.empty()) t.append_child("AssignedTo").text() = who.c_str();
@@ -104,8 +107,9 @@ std::string markup_file(long project, const json& topic, const std::string& guid
     auto node = comments.append_child("Comment");
     node.append_attribute("Guid") = comment_guid.c_str();
     node.append_child("Date").text() = iso_time(c.at("created")).c_str();
-    node.append_child("Author").text() = c.at("author").get<std::string>().c_str();
-    node.append_child("Comment").text() = c.at("text").get<std::string>().c_str();
+    const std::string by = c.value("bcf_author", "");
+    node.append_child("Author").text() = (by.empty() ? c.at("author").get<std::string>() : by).c_str();
+    if (const std::string text = c.at("text"); !text.empty()) node.append_child("Comment").text() = text.c_str();
     if (c.contains("viewpoint") && c["viewpoint"].is_object() && c["viewpoint"].contains("camera_view_point")) {
       const std::string view_guid = derived_guid("viewpoint|" + comment_guid);
       node.append_child("Viewpoint").append_attribute("Guid") = view_guid.c_str();

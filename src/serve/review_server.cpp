@@ -250,7 +250,8 @@ struct ReviewServer::Impl {
     http.new_task_queue = [threads] { return new httplib::ThreadPool(std::size_t(threads)); };
     // httplib caps every body at one length: the uploads'. A JSON route's body is read before
     // its handler runs, so the gate below refuses a larger or unannounced (chunked) one first.
-    http.set_payload_max_length(options.upload_bytes + (1u << 20));  // the upload's own count trips first
+    // The gate and the upload's own count trip first.
+    http.set_payload_max_length(std::max({options.upload_bytes, options.bcf_bytes, options.body_bytes}) + (1u << 20));
     http.set_pre_routing_handler([this](const Request& req, Response& res) { return gate_body(req, res); });
     http.set_read_timeout(10);
     http.set_keep_alive_max_count(100);
@@ -632,6 +633,7 @@ struct ReviewServer::Impl {
     }
     const json summary = store.import_topics(caller.project, topics, caller.user.id);
     for (const json& t : summary["topics"]) {
+      if (!t["added"].get<bool>() && t["comments_added"].get<int>() == 0) continue;  // nothing new
       const json topic = store.topic(caller.project, t["id"].get<long>(), caller.role);
       events.publish(caller.project, t["added"].get<bool>() ? "topic.created" : "topic.updated", caller.user.id, topic);
     }

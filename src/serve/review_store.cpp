@@ -504,22 +504,20 @@ std::vector<long> ReviewStore::note_on_finding(long project, const std::string& 
 }
 
 namespace {
-// An author who has no account here (an item from a BCF file) is named as the file names them.
-std::string author(sqlite3* db, const std::string& name, long user) { return name.empty() ? name_of(db, user) : name; }
-
 json topic_row(sqlite3* db, Query& q, Role role) {
   json t{{"id", q.integer(0)},
          {"title", q.text(1)},
          {"status", q.text(2)},
          {"assignee", q.text(3)},
          {"finding", q.text(4)},
-         {"created_by", author(db, q.text(12), q.integer(5))},
+         {"created_by", name_of(db, q.integer(5))},  // an account: for an imported item, the importer
          {"created", q.real(6)},
          {"modified", q.real(7)},
          {"guid", q.text(8)},
          {"description", q.text(9)},
          {"labels", json::parse(q.text(10))},
          {"due", q.real(11)},
+         {"bcf_author", q.text(12)},  // who the BCF file names as its author ("" when made here)
          {"authorization", {{"topic_actions", topic_actions(role)}, {"topic_status", topic_statuses()}}},
          {"comments", json::array()}};
   Query c(db, "SELECT id, text, viewpoint, author, created, guid, author_name FROM comment WHERE topic = ? ORDER BY id");
@@ -528,9 +526,10 @@ json topic_row(sqlite3* db, Query& q, Role role) {
     t["comments"].push_back({{"id", c.integer(0)},
                              {"text", c.text(1)},
                              {"viewpoint", parse_or_null(c.text(2))},
-                             {"author", author(db, c.text(6), c.integer(3))},
+                             {"author", name_of(db, c.integer(3))},
                              {"created", c.real(4)},
-                             {"guid", c.text(5)}});
+                             {"guid", c.text(5)},
+                             {"bcf_author", c.text(6)}});
   return t;
 }
 constexpr const char* kTopicColumns =
@@ -601,7 +600,7 @@ json ReviewStore::import_topics(long project, const std::vector<BcfTopic>& topic
         topic_by_guid[t.guid] = id;
         out["topics_added"] = out["topics_added"].get<int>() + 1;
       }
-      out["topics"].push_back({{"id", id}, {"added", !known}});
+      const int comments_before = out["comments_added"].get<int>();
       auto add = [&](const std::string& guid, const std::string& text, const json& viewpoint, const std::string& who,
                      double when) {
         if (!guid.empty() && !comment_guids.insert(guid).second) return;  // already here
@@ -619,7 +618,8 @@ json ReviewStore::import_topics(long project, const std::vector<BcfTopic>& topic
       }
       // A viewpoint no comment shows becomes a comment of its own (named by its GUID: once).
       for (const auto& [guid, camera] : t.viewpoints)
-        if (!shown.count(guid)) add(guid, "(a viewpoint of the BCF file)", camera, t.author, t.created);
+        if (!shown.count(guid) && !camera.is_null()) add(guid, "(a viewpoint of the BCF file)", camera, t.author, t.created);
+      out["topics"].push_back({{"id", id}, {"added", !known}, {"comments_added", out["comments_added"].get<int>() - comments_before}});
     }
     store::exec(db_, "COMMIT;", kWhat);
   } catch (...) {

@@ -159,7 +159,9 @@ TEST_CASE("bcf import: hostile and broken files are refused, naming the entry", 
     CHECK_THAT(error_of(zip_of({{"bcf.version", kVersion}, {bad, "x"}})), Catch::Contains("a name no BCF file has"));
   }
   // A viewpoint file named outside the topic's folder.
-  const std::string climbing = markup(guid, R"(<Viewpoints><ViewPoint Guid="v"><Viewpoint>../x.bcfv</Viewpoint></ViewPoint></Viewpoints>)");
+  const std::string view = "11111111-2222-4333-8444-555555555555";
+  const std::string climbing =
+      markup(guid, R"(<Viewpoints><ViewPoint Guid=")" + view + R"("><Viewpoint>../x.bcfv</Viewpoint></ViewPoint></Viewpoints>)");
   CHECK_THAT(error_of(zip_of({{"bcf.version", kVersion}, {guid + "/markup.bcf", climbing}})),
              Catch::Contains("names no file of its folder"));
   // A bomb: 6 MB of spaces in a markup compress ~1000-fold.
@@ -183,9 +185,31 @@ TEST_CASE("bcf import: hostile and broken files are refused, naming the entry", 
              Catch::Contains(guid + "/markup.bcf': not XML"));
   CHECK_THAT(error_of(zip_of({{"bcf.version", kVersion}, {guid + "/markup.bcf", markup(guid, "<DueDate>soon</DueDate>")}})),
              Catch::Contains("DueDate: not a date and time"));
-  const std::string dangling = markup(guid, R"(<Comments><Comment Guid="c"><Date>2024-01-02T03:04:05Z</Date><Author>a</Author><Comment>x</Comment><Viewpoint Guid="nope"/></Comment></Comments>)");
+  const std::string dangling = markup(guid, R"(<Comments><Comment Guid=")" + view +
+                                                R"("><Date>2024-01-02T03:04:05Z</Date><Author>a</Author><Comment>x</Comment><Viewpoint Guid=")" +
+                                                view + R"("/></Comment></Comments>)");
   CHECK_THAT(error_of(zip_of({{"bcf.version", kVersion}, {guid + "/markup.bcf", dangling}})),
              Catch::Contains("which the topic does not list"));
+  // What would break the store, a JSON answer or the next export: a GUID that is not one (it names
+  // the exported folder), text that is not UTF-8, a camera number past double's range once in mm.
+  CHECK_THAT(error_of(zip_of({{"bcf.version", kVersion}, {guid + "/markup.bcf", markup("../../x")}})),
+             Catch::Contains("Topic Guid '../../x' is not a GUID"));
+  std::string bad_text = markup(guid);
+  bad_text.replace(bad_text.find("<Title>t"), 8, "<Title>\xC0\xAF");  // an overlong '/'
+  CHECK_THAT(error_of(zip_of({{"bcf.version", kVersion}, {guid + "/markup.bcf", bad_text}})),
+             Catch::Contains("Title is not UTF-8"));
+  std::string surrogate = markup(guid);
+  surrogate.replace(surrogate.find("<Title>t"), 8, "<Title>&#xD800;");
+  CHECK_THAT(error_of(zip_of({{"bcf.version", kVersion}, {guid + "/markup.bcf", surrogate}})),
+             Catch::Contains("Title is not UTF-8"));
+  const std::string far_view =
+      markup(guid, R"(<Viewpoints><ViewPoint Guid=")" + view + R"("><Viewpoint>v.bcfv</Viewpoint></ViewPoint></Viewpoints>)");
+  const std::string far_camera =
+      "<VisualizationInfo><PerspectiveCamera><CameraViewPoint><X>1e306</X><Y>0</Y><Z>0</Z></CameraViewPoint>"
+      "<CameraDirection><X>0</X><Y>0</Y><Z>-1</Z></CameraDirection><CameraUpVector><X>0</X><Y>1</Y><Z>0</Z>"
+      "</CameraUpVector><FieldOfView>60</FieldOfView></PerspectiveCamera></VisualizationInfo>";
+  CHECK_THAT(error_of(zip_of({{"bcf.version", kVersion}, {guid + "/markup.bcf", far_view}, {guid + "/v.bcfv", far_camera}})),
+             Catch::Contains("X is not a number of at most 1e9"));
 }
 
 TEST_CASE("bcf import: dates with a zone, an offset or none are UTC seconds", "[serve][bcf]") {
@@ -193,8 +217,13 @@ TEST_CASE("bcf import: dates with a zone, an offset or none are UTC seconds", "[
   CHECK(mtcs::serve::bcf_time("2021-03-15T11:00:00.000Z") == 1615806000);
   CHECK(mtcs::serve::bcf_time("2021-03-15T12:30:00+01:30") == 1615806000);
   CHECK(mtcs::serve::bcf_time("2021-03-15T11:00:00") == 1615806000);
-  CHECK_THROWS_AS(mtcs::serve::bcf_time("2021-13-15T11:00:00Z"), BcfError);
-  CHECK_THROWS_AS(mtcs::serve::bcf_time("2021-03-15T11:00:00 CET"), BcfError);
+  CHECK(mtcs::serve::bcf_time(" 2021-03-15T11:00:00Z\n") == 1615806000);  // xs:dateTime's whitespace
+  CHECK(mtcs::serve::bcf_time("2024-02-29T00:00:00.5Z") == 1709164800.5);
+  for (const char* bad : {"2021-13-15T11:00:00Z", "2021-03-15T11:00:00 CET", "2021-02-31T00:00:00Z", "2023-02-29T00:00:00Z",
+                          "2021-03-15T-1:-5:00Z", "2021-03-15T11:00:00+ab:cd", "2021-03-15T11:00:00+99:00", "", "2021"}) {
+    INFO(bad);
+    CHECK_THROWS_AS(mtcs::serve::bcf_time(bad), BcfError);
+  }
 }
 
 TEST_CASE("bcf import: into a project once, again adds nothing, and its own export adds nothing", "[serve][bcf]") {
@@ -214,10 +243,12 @@ TEST_CASE("bcf import: into a project once, again adds nothing, and its own expo
   const json items = store.topics(project, mtcs::serve::Role::owner);
   REQUIRE(items.size() == 1);
   CHECK(items[0]["guid"] == "bee19eb8-3ec0-4e0d-90df-52afc806beaf");
-  CHECK(items[0]["created_by"] == "Architect@example.com");  // the file's author, no account here
+  CHECK(items[0]["created_by"] == "ana");  // the importer's account, never one the file names
+  CHECK(items[0]["bcf_author"] == "Architect@example.com");
   CHECK(items[0]["labels"] == json::array({"Architects"}));
   CHECK(items[0]["status"] == "open");
-  CHECK(items[0]["comments"][0]["author"] == "Architect@example.com");
+  CHECK(items[0]["comments"][0]["author"] == "ana");
+  CHECK(items[0]["comments"][0]["bcf_author"] == "Architect@example.com");
   CHECK(items[0]["comments"][0]["viewpoint"]["field_of_view"] == 60);
   // An item made here, exported and read back: known by its derived GUID.
   const long own = store.add_topic(project, "made here", "", owner);

@@ -118,8 +118,9 @@ class ReviewStore {
   nlohmann::json topics(long project, Role role);
   // A BCF file's items into the project, in one transaction: an item whose GUID the project knows
   // (imported before, or exported from here) gains only the comments it lacks; the others are
-  // added with their authors' names, dates, labels and viewpoints. The importer owns the rows.
-  // {topics_added, topics_updated, comments_added, topics: [{id, added}] in the file's order}.
+  // added with their dates, labels and viewpoints. The importer's account is their author; the
+  // file's names stay beside it (bcf_author), never as an account.
+  // {topics_added, topics_updated, comments_added, topics: [{id, added, comments_added}] in the file's order}.
   nlohmann::json import_topics(long project, const std::vector<BcfTopic>& topics, long user);
   nlohmann::json topic(long project, long topic, Role role);
 
