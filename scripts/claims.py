@@ -56,7 +56,6 @@ def keep(name, text):
 class Step:
     def __init__(self, mtcs, work):
         self.mtcs, self.work = mtcs, work
-        self.bench = mtcs.parent / "mtcs-bench"
 
 
 def step_counts(s):

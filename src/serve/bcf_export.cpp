@@ -102,16 +102,16 @@ std::string markup_file(long project, const json& topic, const std::string& guid
   auto comments = t.append_child("Comments");
   for (const json& c : topic.at("comments")) {
     const std::string kept = c.value("guid", "");
-    const std::string comment_guid =
-        kept.empty() ? derived_guid("comment|" + std::to_string(project) + "|" + std::to_string(c.at("id").get<long>())) : kept;
+    const std::string this_comment =
+        kept.empty() ? comment_guid(project, c.at("id").get<long>()) : kept;
     auto node = comments.append_child("Comment");
-    node.append_attribute("Guid") = comment_guid.c_str();
+    node.append_attribute("Guid") = this_comment.c_str();
     node.append_child("Date").text() = iso_time(c.at("created")).c_str();
     const std::string by = c.value("bcf_author", "");
     node.append_child("Author").text() = (by.empty() ? c.at("author").get<std::string>() : by).c_str();
     if (const std::string text = c.at("text"); !text.empty()) node.append_child("Comment").text() = text.c_str();
     if (c.contains("viewpoint") && c["viewpoint"].is_object() && c["viewpoint"].contains("camera_view_point")) {
-      const std::string view_guid = derived_guid("viewpoint|" + comment_guid);
+      const std::string view_guid = derived_guid("viewpoint|" + this_comment);
       node.append_child("Viewpoint").append_attribute("Guid") = view_guid.c_str();
       viewpoints.emplace_back(view_guid, viewpoint_file(view_guid, c["viewpoint"]));
     }
@@ -184,6 +184,14 @@ std::string derived_guid(const std::string& text) {
          hex.substr(20, 12);
 }
 
+std::string topic_guid(long project, long topic) {
+  return derived_guid("topic|" + std::to_string(project) + "|" + std::to_string(topic));
+}
+
+std::string comment_guid(long project, long comment) {
+  return derived_guid("comment|" + std::to_string(project) + "|" + std::to_string(comment));
+}
+
 std::string bcf_archive(long project, const json& topics, const std::string& scratch) {
   std::vector<std::pair<std::string, std::string>> files;
   {
@@ -195,7 +203,7 @@ std::string bcf_archive(long project, const json& topics, const std::string& scr
   for (const json& topic : topics) {
     const std::string kept = topic.value("guid", "");  // an item read from a BCF file keeps its GUID
     const std::string guid =
-        kept.empty() ? derived_guid("topic|" + std::to_string(project) + "|" + std::to_string(topic.at("id").get<long>())) : kept;
+        kept.empty() ? topic_guid(project, topic.at("id").get<long>()) : kept;
     std::vector<std::pair<std::string, std::string>> viewpoints;
     files.emplace_back(guid + "/markup.bcf", markup_file(project, topic, guid, viewpoints));
     for (const auto& [view_guid, text] : viewpoints) files.emplace_back(guid + "/" + view_guid + ".bcfv", text);

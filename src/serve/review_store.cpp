@@ -573,15 +573,12 @@ json ReviewStore::import_topics(long project, const std::vector<BcfTopic>& topic
       q.bind(1, project);
       while (q.step()) {
         const long id = q.integer(0);
-        topic_by_guid[q.text(1).empty() ? derived_guid("topic|" + std::to_string(project) + "|" + std::to_string(id))
-                                        : q.text(1)] = id;
+        topic_by_guid[q.text(1).empty() ? topic_guid(project, id) : q.text(1)] = id;
       }
       Query c(db_, "SELECT comment.id, comment.guid FROM comment JOIN topic ON topic.id = comment.topic WHERE topic.project = ?");
       c.bind(1, project);
       while (c.step())
-        comment_guids.insert(c.text(1).empty()
-                                 ? derived_guid("comment|" + std::to_string(project) + "|" + std::to_string(c.integer(0)))
-                                 : c.text(1));
+        comment_guids.insert(c.text(1).empty() ? comment_guid(project, c.integer(0)) : c.text(1));
     }
     for (const BcfTopic& t : topics) {
       long id = 0;

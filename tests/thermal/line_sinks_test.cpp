@@ -136,7 +136,7 @@ TEST_CASE("line sinks on the block case against FreeFem++ P2 at the 720 patch sa
                  << " dmean " << c.mean_diff << " dstd " << c.std_diff << " spearman " << c.spearman
                  << " bores " << sol.channel_heat[0] + sol.channel_heat[1] + sol.channel_heat[2]
                  << " faces " << sol.face_heat);
-    CHECK(c.rms <= bar.target);
+    if (std::isfinite(bar.target)) CHECK(c.rms <= bar.target);
     CHECK(c.rms <= bar.guard_rms);
     CHECK(c.max <= bar.guard_max);
     CHECK(c.spearman >= bar.guard_spearman);

@@ -19,4 +19,8 @@ std::string bcf_archive(long project, const nlohmann::json& topics, const std::s
 // A GUID (8-4-4-4-12 lowercase hex, version 4 and variant bits set) derived from a text.
 std::string derived_guid(const std::string& text);
 
+// The GUIDs an export gives an item and a comment made here (an imported one keeps its own).
+std::string topic_guid(long project, long topic);
+std::string comment_guid(long project, long comment);
+
 }  // namespace mtcs::serve
