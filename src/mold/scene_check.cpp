@@ -1,6 +1,7 @@
 #include "scene_check.h"
 
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 namespace mtcs::mold {
@@ -62,6 +63,27 @@ const YAML::Node pick(const YAML::Node& n, const char* preferred, std::string& f
 const std::string kScaleHint =
     "is the mesh in other units than mm? give a scale (0.001 from micrometres, 1000 from metres, 25.4 from inches)";
 
+// A mesh part whose walls average under kMinMeanWall (twice its volume over its area, exact for
+// a shell) was drawn in other units: inches keep a 120 mm part inside a normal block, so only its
+// walls give it away. Each unit that makes the part fit the block with molded walls is named.
+std::string unit_guess(const Vec3& part, double mean_wall, const Vec3& block) {
+  struct Unit {
+    const char* name;
+    double scale;
+  };
+  std::ostringstream out;
+  out.precision(3);
+  for (const Unit u : {Unit{"inches", 25.4}, Unit{"centimetres", 10}, Unit{"metres", 1000}}) {
+    const Vec3 s = part * u.scale;
+    const double wall = mean_wall * u.scale;
+    if ((s.array() <= block.array()).all() && s.maxCoeff() >= kMinGuessShare * block.maxCoeff() && wall >= kMinMeanWall &&
+        wall <= kMaxMeanWall)
+      out << (out.tellp() > 0 ? "; or in " : "in ") << u.name << "? scale: " << std::setprecision(6) << u.scale
+          << " makes it " << size_text(s) << " with walls of " << std::setprecision(3) << wall << " mm";
+  }
+  return out.str();
+}
+
 }  // namespace
 
 void check_scene(const io::YamlReader& r, const YAML::Node& root, const MoldSpec& spec) {
@@ -90,8 +112,27 @@ void check_scene(const io::YamlReader& r, const YAML::Node& root, const MoldSpec
       }
     if (ps.maxCoeff() < kMinPartShare * size.maxCoeff()) {
       const YAML::Node at = pick(c, spec.cavity->mesh ? "scale" : "box", field, "cavity");
+      std::string guess;
+      if (spec.cavity->mesh) {
+        const mesh::TriangleMesh& m = spec.cavity->mesh->mesh;
+        guess = unit_guess(ps, 2 * m.signed_volume() / m.area(), size);
+      }
       r.fail(at, field, "the part measures " + size_text(ps) + ", less than 1/" + std::to_string(std::lround(1 / kMinPartShare)) +
-                            " of the block (" + size_text(size) + ")" + hint);
+                            " of the block (" + size_text(size) + ")" + (guess.empty() ? hint : "; is the mesh " + guess));
+    }
+    if (spec.cavity->mesh && !c["scale"]) {
+      const mesh::TriangleMesh& m = spec.cavity->mesh->mesh;
+      const double mean_wall = 2 * m.signed_volume() / m.area();
+      // Refused only where a unit would make a molded part that fills the block: a tiny test
+      // solid in a large block is left alone.
+      if (const std::string guess = unit_guess(ps, mean_wall, size); mean_wall < kMinMeanWall && !guess.empty()) {
+        std::ostringstream wall;
+        wall.precision(3);
+        wall << mean_wall;
+        r.fail(c["mesh"], "cavity.mesh",
+               "the part's walls average " + wall.str() + " mm (twice its volume over its area), thinner than any molded part: " +
+                   "is the mesh " + guess + " (a part truly this thin: write scale: 1)");
+      }
     }
     if (const std::string out = leaves(part, block, tol); !out.empty()) {
       const YAML::Node at = pick(c, spec.cavity->mesh ? "translate" : "box", field, "cavity");

@@ -19,6 +19,14 @@ inline constexpr double kMaxBlockExtent = 1e4;
 // A part whose largest extent is below this share of the block's largest extent is taken for a
 // mesh in other units (metres, inches) and refused with a hint about `scale`.
 inline constexpr double kMinPartShare = 0.01;
+// A mesh part whose walls average (2 volume / area) under this many mm, with no `scale` written,
+// is taken for a mesh in inches, centimetres or metres when one of them makes a molded part
+// (walls up to the max) that fits the block.
+inline constexpr double kMinMeanWall = 0.25;
+inline constexpr double kMaxMeanWall = 30;
+// A guessed unit must make the part's largest extent at least this share of the block's (a
+// block is sized to its part: the bundled molds 0.4-0.7).
+inline constexpr double kMinGuessShare = 0.3;
 
 // Throws io::InputError at the field to change (`root` is the spec's document).
 void check_scene(const io::YamlReader& r, const YAML::Node& root, const MoldSpec& spec);

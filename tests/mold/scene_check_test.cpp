@@ -104,7 +104,48 @@ TEST_CASE("scene check: a part in metres (1/1000 of its size) is refused as too 
   write("part_m.off", boxes_off({{0.05, 0.05, 0.05, 0.15, 0.11, 0.07}}));
   const io::InputError e = error_of(kBlock + "cavity: {mesh: part_m.off}\n");
   CHECK_THAT(std::string(e.what()), Catch::Contains("less than 1/100 of the block"));
-  CHECK_THAT(std::string(e.what()), Catch::Contains("1000 from metres"));
+  CHECK_THAT(std::string(e.what()), Catch::Contains("is the mesh in metres? scale: 1000 makes it 100 x 60 x 20 mm"));
+}
+
+namespace {
+
+// A closed hollow box in inches: 4.7 x 3.1 x 1.6 in outside (120 x 80 x 40 mm), walls of 0.1 in
+// (2.54 mm); the inner box's faces turned inwards, so the solid between them is outward-oriented.
+std::string hollow_box_inches() {
+  const double o[6] = {1, 1, 1, 1 + 120 / 25.4, 1 + 80 / 25.4, 1 + 40 / 25.4}, w = 0.1;
+  std::string text = boxes_off({{o[0], o[1], o[2], o[3], o[4], o[5]}, {o[0] + w, o[1] + w, o[2] + w, o[3] - w, o[4] - w, o[5] - w}});
+  // Swap the last two indices of the inner box's 12 triangles (the file's last 12 lines).
+  std::istringstream in(text);
+  std::ostringstream out;
+  std::vector<std::string> lines;
+  for (std::string l; std::getline(in, l);) lines.push_back(l);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    if (i + 12 >= lines.size()) {
+      int n, a, b, c;
+      std::istringstream(lines[i]) >> n >> a >> b >> c;
+      out << "3 " << a << ' ' << c << ' ' << b << '\n';
+    } else {
+      out << lines[i] << '\n';
+    }
+  }
+  return out.str();
+}
+
+}  // namespace
+
+TEST_CASE("scene check: a shell part in inches (issue 45: accepted silently) is refused by its walls, naming inches and the scale",
+          "[mold][scene]") {
+  write("lid_in.off", hollow_box_inches());
+  const io::InputError e = error_of(kBlock + "cavity:\n  mesh: lid_in.off\n");
+  CHECK(e.line() == 3);
+  CHECK(e.field() == "cavity.mesh");
+  const std::string what = e.what();
+  CHECK_THAT(what, Catch::Contains("the part's walls average 0.0"));
+  CHECK_THAT(what, Catch::Contains("is the mesh in inches? scale: 25.4 makes it 120 x 80 x 40 mm"));
+  // Given its scale, the same file loads as the 120 x 80 x 40 mm part; `scale: 1` keeps it as drawn.
+  const auto spec = mold::load_mold_spec(write("lid_scaled.yaml", kBlock + "cavity: {mesh: lid_in.off, scale: 25.4}\n").string());
+  CHECK(spec.cavity->bounds().size().isApprox(Vec3(120, 80, 40), 1e-5));
+  CHECK_NOTHROW(mold::load_mold_spec(write("lid_tiny.yaml", kBlock + "cavity: {mesh: lid_in.off, scale: 1}\n").string()));
 }
 
 TEST_CASE("scene check: a small part left where its file put it is refused with a scale hint", "[mold][scene]") {
