@@ -76,6 +76,26 @@ void check_circuit(const YamlReader& r, const YAML::Node& w, const std::string& 
   }
 }
 
+// Every waypoint of a drilled circuit in the block (its faces included, within kLayoutSnap): a
+// point outside would be exported as a hole in the air and scored by models that assume steel.
+void check_inside(const YamlReader& r, const YAML::Node& w, const std::string& path, const Box& block, int c,
+                  const Circuit& circuit) {
+  static const char* kAxis = "xyz";
+  for (std::size_t i = 0; i < circuit.waypoints.size(); ++i) {
+    const Vec3& p = circuit.waypoints[i];
+    for (int k = 0; k < 3; ++k) {
+      const bool below = p[k] < block.min[k] - kLayoutSnap, above = p[k] > block.max[k] + kLayoutSnap;
+      if (!below && !above) continue;
+      const std::string axis(1, kAxis[k]);
+      r.fail(w[i], indexed(path, i),
+             "circuit " + std::to_string(c) + ", waypoint " + std::to_string(i) + " " + point(p) + " is outside the block: " +
+                 axis + " = " + mm(p[k]) + " beyond its " + (below ? "-" : "+") + axis + " face at " +
+                 mm(below ? block.min[k] : block.max[k]) + " (the block spans " + point(block.min) + " to " +
+                 point(block.max) + " mm)");
+    }
+  }
+}
+
 // A baffle's or bubbler's two waypoints: the entry on a face of drilling.baffles.faces, the tip
 // straight below it (within kLayoutSnap), deep enough and inside the block.
 void check_blind(const YamlReader& r, const YAML::Node& node, const std::string& path, const MoldSpec& spec,
@@ -156,6 +176,7 @@ WrittenLayout read_layout(const std::string& path, const MoldSpec& spec) {
       if (!kind) r.fail(cs[c]["kind"], cp + ".kind", "unknown kind '" + name + "': expected drilled, baffle or bubbler");
       circuit.kind = *kind;
     }
+    if (!is_blind(circuit.kind)) check_inside(r, w, cp + ".waypoints", block, int(c), circuit);
     if (is_blind(circuit.kind)) check_blind(r, cs[c], cp, spec, block, int(c), circuit);
     else check_circuit(r, w, cp + ".waypoints", spec, int(c), circuit, out.changes);
     g.circuits.push_back(std::move(circuit));

@@ -40,6 +40,7 @@ struct WrittenLayout {
 // on bad input, diameters not in the spec's drilling.diameters, an empty layout, a circuit whose
 // waypoints are all one point, and (with drilling.axis_parallel) a waypoint that leaves its
 // inlet's coordinate along an axis no allowed face is drilled along by more than kLayoutSnap;
+// a waypoint of a drilled circuit outside the block (beyond kLayoutSnap);
 // a baffle or bubbler without drilling.baffles, or whose entry is off those faces, whose tip is
 // not straight below the entry, less than a diameter deep or outside the block.
 // The optimiser's genomes are not read here: mold::decode repairs them silently.
