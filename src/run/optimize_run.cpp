@@ -8,6 +8,7 @@
 #include "mtcs/eval/evaluation_report.h"
 #include "mtcs/io/input_error.h"
 #include "mtcs/mold/decoder.h"
+#include "mtcs/mold/layout_io.h"
 #include "mtcs/run/polish.h"
 #include "mtcs/run/progress_line.h"
 #include "mtcs/run/run_outputs.h"
@@ -38,6 +39,20 @@ std::unique_ptr<IslandTransport> transport_for(const OptimizeRequest& r) {
   return mpi;
 }
 
+// A run's folder stands for the layout it wrote.
+std::string start_layout_path(const std::string& given) {
+  return fs::is_directory(given) ? (fs::path(given) / "best.layout.yaml").string() : given;
+}
+
+// No run and no writer in the output folder yet. Checked before the thermal model is built
+// (seconds on a part) and again before the store is made.
+void check_out_free(const std::string& db_path, const std::string& out_dir) {
+  if (store::RunStore::in_use(db_path))
+    throw io::InputError(db_path, 0, 0, "", "the run here is in use: another process writes it; choose --out");
+  if (fs::exists(db_path))
+    throw io::InputError(db_path, 0, 0, "", "a run exists here: resume it with --resume " + out_dir + " or choose --out");
+}
+
 // The --start layouts as genotypes, each read as `mtcs evaluate --layout` reads it and scored
 // once, so that the user can compare the run's best with it.
 std::vector<opt::Genotype> start_genotypes(const std::vector<std::string>& paths, const Session& session) {
@@ -48,8 +63,7 @@ std::vector<opt::Genotype> start_genotypes(const std::vector<std::string>& paths
   const mold::CircuitLimits& lim = session.spec().circuits;
   std::vector<opt::Genotype> start;
   for (const std::string& given : paths) {
-    // A run's folder stands for the layout it wrote.
-    const std::string path = fs::is_directory(given) ? (fs::path(given) / "best.layout.yaml").string() : given;
+    const std::string path = start_layout_path(given);
     const mold::Genome genome = session.read_layout(path);
     start.push_back(session.problem().encode(genome));
     const opt::Score s = session.problem().evaluate(start.back());
@@ -113,15 +127,17 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
         throw io::InputError(mold_path, 0, 0, "", "the mold spec changed since the run started; start a new run");
     }
     // A resumed run keeps its stored config; a new one resolves RUN.yaml and the command line.
-    made = resuming ? std::make_unique<const Session>(mold::load_mold_spec(mold_path), config_text, db_path + ":config")
-                    : std::make_unique<const Session>(mold::load_mold_spec(mold_path), r.overrides);
+    mold::MoldSpec spec = mold::load_mold_spec(mold_path);
+    if (!resuming) {  // what is refused in milliseconds, before the model's seconds
+      for (const std::string& given : r.start) (void)mold::read_layout(start_layout_path(given), spec);
+      if (writer) check_out_free(db_path, out_dir);
+    }
+    made = resuming ? std::make_unique<const Session>(std::move(spec), config_text, db_path + ":config")
+                    : std::make_unique<const Session>(std::move(spec), r.overrides);
     if (!resuming) start = start_genotypes(r.start, *made);
     if (!resuming && writer) {
       if (r.prepare_out) r.prepare_out(out_dir);
-      if (store::RunStore::in_use(db_path))
-        throw io::InputError(db_path, 0, 0, "", "the run here is in use: another process writes it; choose --out");
-      if (fs::exists(db_path))
-        throw io::InputError(db_path, 0, 0, "", "a run exists here: resume it with --resume " + out_dir + " or choose --out");
+      check_out_free(db_path, out_dir);  // again: another run may have begun meanwhile
       auto meta = mold_run_meta(mold_path, *made);
       if (islands.islands > 0) meta["islands"] = islands.to_text();
       if (r.polish > 0) meta["polish"] = std::to_string(r.polish);
