@@ -12,6 +12,7 @@
 #include "mtcs/mold/layout_io.h"
 #include "mtcs/run/run_record.h"
 #include "mtcs/run/shop_layout.h"
+#include "mtcs/run/stored_run.h"
 #include "mtcs/store/run_store.h"
 #include "shop_member.h"
 #include "step_writer.h"
@@ -126,17 +127,21 @@ StoredLayout stored_layout(const std::string& run_dir, std::optional<int> genera
   s.generation = generation.value_or(summaries.back().index);
   const auto g = db.generation(s.generation);
   if (!g) throw io::InputError(db_path, 0, 0, "--generation", "no stored generation " + std::to_string(s.generation));
-  s.member = member.value_or(0);
-  if (s.member < 0 || std::size_t(s.member) >= g->population.size())
+  if (member && (*member < 0 || std::size_t(*member) >= g->population.size()))
     throw io::InputError(db_path, 0, 0, "--member",
                          "generation " + std::to_string(s.generation) + " has members 0.." + std::to_string(g->population.size() - 1));
+  // The best by the run's ranking (SMS-EMOA's need not be rank 0) without the thermal model:
+  // the stored scores and a constraints-only session's problem rank it as the run did.
+  const auto spec = run::stored_mold_spec(meta, mold_override, &s.note);
+  s.session = std::make_unique<run::Session>(spec, meta.at("config"), db_path + ":config", eval::PipelineScope::constraints);
+  const int best = int(run::best_rank(*g, s.session->problem()));
+  s.member = member.value_or(best);
   // The last generation's best as optimize wrote it: polished, when it was. Only that one needs
   // the objectives (best.layout.yaml is taken when it scores what the run wrote); the shop's plan
   // needs the constraints alone (run::shop_layout keeps it feasible): no thermal model.
-  const bool last_best = s.member == 0 && s.generation == summaries.back().index;
-  const auto scope = last_best && was_polished(run_dir) ? eval::PipelineScope::everything : eval::PipelineScope::constraints;
-  s.session = std::make_unique<run::Session>(run::stored_mold_spec(meta, mold_override, &s.note), meta.at("config"),
-                                             db_path + ":config", scope);
+  const bool last_best = s.member == best && s.generation == summaries.back().index;
+  if (last_best && was_polished(run_dir))
+    s.session = std::make_unique<run::Session>(spec, meta.at("config"), db_path + ":config", eval::PipelineScope::everything);
   std::optional<ShopMember> polished;
   if (last_best) polished = polished_best(run_dir, *s.session, s.note);
   s.layout = polished ? polished->plan : shop_member(*s.session, g->population[std::size_t(s.member)].x).plan;
@@ -167,7 +172,9 @@ Exported export_bores(const ExportRequest& r) {
   if (*format == ExportFormat::Step && !step_available()) throw io::InputError("", 0, 0, "--format", kStepMissing);
   StoredLayout s = layout_to_export(r.source, r.layout_file, r.generation, r.member);
   Exported e{r.out.empty() ? default_export_path(r, s) : r.out, s.note, s.layout.bores.size()};
-  if (r.out.empty()) std::filesystem::create_directories(std::filesystem::path(e.path).parent_path());
+  // A bare layout file name puts the export in the working folder: no folder to make.
+  if (const auto folder = std::filesystem::path(e.path).parent_path(); r.out.empty() && !folder.empty())
+    std::filesystem::create_directories(folder);
   export_layout(e.path, s.layout, *format);
   return e;
 }
