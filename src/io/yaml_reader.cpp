@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <set>
 #include <sstream>
 #include <string_view>
@@ -50,14 +52,39 @@ std::string_view nearest_key(const std::string& key, std::initializer_list<std::
 
 }  // namespace
 
-YAML::Node YamlReader::load() const {
-  try {
-    return YAML::LoadFile(file_);
-  } catch (const YAML::BadFile&) {
-    throw io::InputError(file_, 0, 0, "", "cannot open file");
-  } catch (const YAML::ParserException& e) {
-    throw io::InputError(file_, e.mark.line + 1, e.mark.column + 1, "", "YAML syntax: " + e.msg);
+namespace {
+
+// " (line L, column C holds a tab: YAML indents with spaces only)" for the first tab in a line's
+// leading whitespace up to `last_line` (1-based; the parser stops at or after the mistake), or "".
+std::string tab_hint(const std::string& text, int last_line) {
+  std::istringstream in(text);
+  std::string line;
+  for (int n = 1; n <= last_line && std::getline(in, line); ++n) {
+    const std::size_t indent = line.find_first_not_of(" \t");
+    const std::size_t tab = line.find('\t');
+    if (tab != std::string::npos && (indent == std::string::npos || tab < indent))
+      return " (line " + std::to_string(n) + ", column " + std::to_string(tab + 1) +
+             " holds a tab: YAML indents with spaces only)";
   }
+  return "";
+}
+
+}  // namespace
+
+YAML::Node parse_yaml(const std::string& text, const std::string& origin) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw io::InputError(origin, e.mark.line + 1, e.mark.column + 1, "", "YAML syntax: " + e.msg + tab_hint(text, e.mark.line + 1));
+  }
+}
+
+YAML::Node YamlReader::load() const {
+  std::ifstream in(file_, std::ios::binary);
+  if (!in || std::filesystem::is_directory(file_)) throw io::InputError(file_, 0, 0, "", "cannot open file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_yaml(text.str(), file_);
 }
 
 void YamlReader::fail(const YAML::Node& at, const std::string& path, const std::string& what) const {

@@ -13,12 +13,7 @@ namespace mtcs::run {
 RunConfig parse_run_config(const std::string& text, const std::string& origin,
                            const std::vector<std::string>& objective_names) {
   const io::YamlReader r(origin);
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    throw io::InputError(origin, e.mark.line + 1, e.mark.column + 1, "", "YAML syntax: " + e.msg);
-  }
+  const YAML::Node root = io::parse_yaml(text, origin);
   RunConfig c;
   if (root.IsNull()) return c;
   r.expect_map(root, "", {"algorithm", "es", "evaluations", "seed", "weights", "mutation", "log_every", "ref", "penalty",

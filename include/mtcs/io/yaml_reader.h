@@ -20,6 +20,10 @@ inline constexpr double kMaxCoordinate = 1e9;
 // "path[i]".
 std::string indexed(const std::string& path, std::size_t i);
 
+// YAML `text` parsed, or its syntax error as an InputError at `origin`'s line and column; a tab
+// in the indentation (yaml-cpp says only "illegal map value" or the like) is named.
+YAML::Node parse_yaml(const std::string& text, const std::string& origin);
+
 class YamlReader {
  public:
   explicit YamlReader(std::string file) : file_(std::move(file)) {}
