@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -10,8 +11,28 @@
 
 namespace mtcs::run {
 
-std::string progress_line(const MoldOptimizer& optimizer, const opt::Generation& g, double seconds, long evaluations) {
-  const double rate = seconds > 0 ? double(evaluations) / seconds : 0;
+namespace {
+
+// A day: a run whose time left exceeds it is told so once (the budget is likely a slip).
+constexpr double kLongRun = 86400;
+// The rate is not judged before this many seconds (the first generations pay for start-up).
+constexpr double kRateSettles = 3;
+
+}  // namespace
+
+std::string duration_text(double seconds) {
+  char text[64];
+  if (!(seconds < 365 * 86400.0)) return "more than a year";
+  if (seconds < 100) std::snprintf(text, sizeof text, "%.0f s", seconds);
+  else if (seconds < 3600) std::snprintf(text, sizeof text, "%.0f min %.0f s", std::floor(seconds / 60), std::fmod(seconds, 60));
+  else if (seconds < 2 * 86400) std::snprintf(text, sizeof text, "%.1f h", seconds / 3600);
+  else std::snprintf(text, sizeof text, "%.0f days", seconds / 86400);
+  return text;
+}
+
+std::string progress_line(const MoldOptimizer& optimizer, const opt::Generation& g, double seconds, long evaluations,
+                          double recent_rate) {
+  const double rate = recent_rate > 0 ? recent_rate : seconds > 0 ? double(evaluations) / seconds : 0;
   int feasible = 0;
   for (const auto& ind : g.population) feasible += ind.score.feasible;
   const double eta = rate > 0 ? double(optimizer.budget() - g.evaluations) / rate : 0;
@@ -24,8 +45,9 @@ std::string progress_line(const MoldOptimizer& optimizer, const opt::Generation&
     std::snprintf(search, sizeof search, "best %.6g%s", best.value, best.feasible ? "" : " (infeasible)");
   }
   char line[240];
-  std::snprintf(line, sizeof line, "gen %5d | %9ld evals | %8.0f evals/s | %s | feasible %3.0f%% | ETA %.0f s", g.index,
-                g.evaluations, rate, search, 100.0 * feasible / double(g.population.size()), eta);
+  std::snprintf(line, sizeof line, "gen %5d | %9ld evals | %8.0f evals/s | %s | feasible %3.0f%% | ETA %s", g.index,
+                g.evaluations, rate, search, 100.0 * feasible / double(g.population.size()),
+                rate > 0 ? duration_text(eta).c_str() : "unknown");
   return line;
 }
 
@@ -45,10 +67,23 @@ ProgressPrinter::ProgressPrinter(const MoldOptimizer& optimizer, int log_every)
     : optimizer_(&optimizer), quiet_(!spdlog::should_log(spdlog::level::info)), tty_(::isatty(2)), log_every_(log_every) {}
 
 void ProgressPrinter::operator()(const opt::Generation& g, double seconds, long evaluations) const {
+  // The rate since the oldest generation within the last half of the session.
+  history_.emplace_back(seconds, evaluations);
+  std::size_t from = 0;
+  while (from + 2 < history_.size() && history_[from + 1].first <= seconds / 2) ++from;
+  const auto [s0, e0] = history_.size() > 1 ? history_[from] : std::pair<double, long>{0, 0};
+  const double rate = seconds > s0 ? double(evaluations - e0) / (seconds - s0) : 0;
+  const double left = rate > 0 ? double(optimizer_->budget() - g.evaluations) / rate : 0;
+  if (!warned_ && seconds >= kRateSettles && left > kLongRun) {
+    warned_ = true;
+    spdlog::warn("at {:.0f} evaluations/s the budget of {} evaluations needs {} more: Ctrl-C stops the run with its best so "
+                 "far (mtcs optimize --resume continues it); a smaller --evaluations ends sooner",
+                 rate, optimizer_->budget(), duration_text(left));
+  }
   // SMS-EMOA's generations are its stored steps, every mu.
   const int generation = optimizer_->pareto() ? g.index / optimizer_->mu() : g.index;
   if (!prints(generation)) return;
-  print(generation, progress_line(*optimizer_, g, seconds, evaluations));
+  print(generation, progress_line(*optimizer_, g, seconds, evaluations, rate));
 }
 
 bool ProgressPrinter::prints(int generation) const { return !quiet_ && (tty_ || generation % log_every_ == 0); }

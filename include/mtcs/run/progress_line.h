@@ -5,16 +5,26 @@
 // "best": a scalar there would be one member of the front and may get worse as the front grows.
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "mtcs/run/mold_run.h"
 
 namespace mtcs::run {
 
-// `seconds` and `evaluations` are this session's (a resumed run counts from its start).
-std::string progress_line(const MoldOptimizer& optimizer, const opt::Generation& g, double seconds, long evaluations);
+// `seconds` and `evaluations` are this session's (a resumed run counts from its start);
+// `recent_rate` (evaluations/s), when given, is the rate shown and the time left is reckoned at.
+std::string progress_line(const MoldOptimizer& optimizer, const opt::Generation& g, double seconds, long evaluations,
+                          double recent_rate = 0);
+
+// "42 s", "3 min 20 s", "2.5 h", "41 days", "more than a year": the time left as a person reads it.
+std::string duration_text(double seconds);
 
 // Prints the live line: rewritten in place on a terminal, a log line every `log_every`
 // generations otherwise, nothing below spdlog's info level.
+// The rate is the recent one (over the last half of the session, at least the last generation):
+// the first generations pay for start-up, and a rate since the start would put early times left
+// several times too high. Once the time left is known to exceed a day, it warns once.
 class ProgressPrinter {
  public:
   ProgressPrinter(const MoldOptimizer& optimizer, int log_every);
@@ -28,6 +38,8 @@ class ProgressPrinter {
   const MoldOptimizer* optimizer_;
   bool quiet_, tty_;
   int log_every_;
+  mutable std::vector<std::pair<double, long>> history_;  // (seconds, evaluations) after each generation
+  mutable bool warned_ = false;
 };
 
 // Said once before the run: what the hypervolume on the live line is measured against.
