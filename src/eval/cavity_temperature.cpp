@@ -55,6 +55,7 @@ constexpr std::size_t kFieldChunk = 4096;
 CavityConditionUsed cavity_condition_used(const mold::MoldSpec& spec) {
   CavityConditionUsed c;
   c.model = mold::to_string(spec.thermal.cavity_condition);
+  c.melt_temperature = spec.thermal.polymer.melt_temperature;
   if (spec.thermal.cavity_condition == mold::CavityCondition::Coupled) {
     const PartCoupling p = cavity_coupling(spec);
     const CycleTimes times = nominal_cycle(spec);

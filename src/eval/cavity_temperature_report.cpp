@@ -29,6 +29,29 @@ std::string condition_text(const CavityConditionUsed& c) {
   return s.str();
 }
 
+}  // namespace
+
+double hottest_possible(const CavityConditionUsed& c) {
+  return c.model == "coupled" ? c.part_temperature : c.melt_temperature;
+}
+
+bool above_melt(const CavityTemperature& r) { return r.summary.max > hottest_possible(r.condition) + 1e-9; }
+
+std::string above_melt_text(const CavityTemperature& r) {
+  if (!above_melt(r)) return "";
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(1) << "WARNING: physically impossible: the wall reaches " << r.summary.max
+    << " degC at (" << r.hottest.x() << ", " << r.hottest.y() << ", " << r.hottest.z() << ") mm, above the "
+    << (r.condition.model == "coupled" ? "part's " : "melt's ") << hottest_possible(r.condition)
+    << " degC that heats it.";
+  if (r.condition.model != "coupled")
+    s << " The fixed flux puts its heat in whatever the wall's temperature; thermal.cavity_condition: coupled lets the part "
+         "heat the steel only while the steel is colder (docs/thermal-model.md).";
+  return s.str();
+}
+
+namespace {
+
 std::string cycle_text(const CavityTemperature& r) {
   std::ostringstream s;
   s << std::fixed << std::setprecision(1);
@@ -101,6 +124,7 @@ void write_cavity_temperature_text(std::ostream& out, const CavityTemperature& r
       << "  mean " << s.mean << " degC, std " << s.std << " K, max " << s.max << " degC at ("
       << std::setprecision(1) << r.hottest.x() << ", " << r.hottest.y() << ", " << r.hottest.z() << ") mm\n"
       << std::setprecision(1) << "cavity condition: " << condition_text(r.condition) << "\n"
+      << (above_melt(r) ? above_melt_text(r) + "\n" : "")
       << cycle_text(r) << across_text(r) << sides_text(r)
       << std::setprecision(3) << "heat balance\n  in " << r.balance.in << " W = bores "
       << r.balance.to_channels << " W + outer faces " << r.balance.to_faces << " W (residual "
@@ -122,6 +146,7 @@ void write_cavity_temperature_json(std::ostream& out, const CavityTemperature& r
                                  {"std", r.summary.std},
                                  {"max", r.summary.max},
                                  {"hottest", {r.hottest.x(), r.hottest.y(), r.hottest.z()}},
+                                 {"above_melt", above_melt(r)},
                                  {"surface", r.surface},
                                  {"samples", r.at_samples.size()},
                                  {"heat_in", r.balance.in},

@@ -43,6 +43,7 @@ struct CavityConditionUsed {
   // triangle of the cavity has its own.
   double wall_thinnest = 0, wall_thickest = 0;
   bool local_wall = false;
+  double melt_temperature = 0;    // degrees C, thermal.polymer's: no steel can be hotter
 };
 CavityConditionUsed cavity_condition_used(const mold::MoldSpec& spec);
 

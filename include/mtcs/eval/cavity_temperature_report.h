@@ -1,9 +1,10 @@
 #pragma once
 // A cavity temperature as `mtcs thermal` prints it: the summary and heat balance as text or as one
-// JSON object {tier, mean, std, max, hottest, surface, samples, heat_in, heat_to_bores, heat_to_faces,
+// JSON object {tier, mean, std, max, hottest, above_melt, surface, samples, heat_in, heat_to_bores, heat_to_faces,
 // seconds}; the surface field (.vtp, .ply); temperatures at a user's points as CSV x,y,z,T (17 digits).
 
 #include <ostream>
+#include <string>
 #include <vector>
 
 #include "mtcs/eval/cavity_temperature.h"
@@ -11,6 +12,13 @@
 namespace mtcs::eval {
 
 void write_cavity_temperature_text(std::ostream& out, const CavityTemperature& r);
+// The hottest any steel can be under the condition: the melt's temperature (fixed flux), the
+// part's T_p (coupled; the maximum principle).
+double hottest_possible(const CavityConditionUsed& c);
+// Whether the result is above it (a fixed flux can put it there), and the warning that says so
+// ("" when not); the text and JSON (`above_melt`) carry it too.
+bool above_melt(const CavityTemperature& r);
+std::string above_melt_text(const CavityTemperature& r);
 void write_cavity_temperature_json(std::ostream& out, const CavityTemperature& r);
 // The field on the cavity surface: VTK PolyData, or PLY coloured from the coldest vertex (or three
 // std below the mean, if that is warmer: one cold spot should not wash out the rest) to the
