@@ -24,7 +24,7 @@ Command add_export_command(CLI::App& app) {
   sub->add_option("source", o->source, "run folder (with run.sqlite), or a mold spec with --layout")->required();
   sub->add_option("--layout", o->layout_file, "layout (YAML) of the mold given as source");
   sub->add_option("--generation", o->generation, "stored generation (default: the last)");
-  sub->add_option("--member", o->member, "its member by rank (default: 0, the best)");
+  sub->add_option("--member", o->member, "its member by rank (default: the best, as best.layout.yaml; SMS-EMOA's need not be rank 0)");
   sub->add_option("--format", o->format, "step, vtp, obj or csv")->check(CLI::IsMember({"step", "vtp", "obj", "csv"}));
   sub->add_option("--out", o->out,
                   "the file (default: RUN_DIR/exports/generation_G_member_K.FORMAT, or beside the layout\n"

@@ -30,7 +30,7 @@ Command add_report_command(CLI::App& app) {
   sub->add_option("dir", o->dir, "run folder (with run.sqlite)")->required();
   sub->add_option("--out", o->out, "the page (default: DIR/report.html)");
   sub->add_option("--generation", o->report.generation, "the stored generation whose layouts are shown (default: the last)");
-  sub->add_option("--member", o->report.member, "its layout shown first, by rank (default: 0, the best)");
+  sub->add_option("--member", o->report.member, "its layout shown first, by rank (default: the best, as best.layout.yaml; SMS-EMOA's need not be rank 0)");
   sub->add_option("--mold", o->report.mold, "the run's mold at a new place (as for replay)");
   sub->add_flag("!--no-temperature", o->report.temperature, "no cavity temperature (skips one thermal solve)");
   add_log_flags(sub);

@@ -6,6 +6,7 @@
 
 #include "mtcs/opt/hypervolume.h"
 #include "mtcs/opt/sms_emoa.h"
+#include "mtcs/run/stored_run.h"
 
 namespace mtcs::report {
 namespace {
@@ -20,7 +21,8 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
-Json convergence_json(const store::RunStore& db, const mold::MoldSpec& spec, const std::vector<std::string>& objectives) {
+Json convergence_json(const store::RunStore& db, const mold::MoldSpec& spec, const std::vector<std::string>& objectives,
+                      const opt::Problem& problem) {
   std::vector<double> scale;
   for (const auto& name : objectives) {
     const auto o = mold::objective_named(name);
@@ -28,13 +30,14 @@ Json convergence_json(const store::RunStore& db, const mold::MoldSpec& spec, con
   }
   const auto summaries = db.summaries();
   std::vector<std::vector<opt::Point>> fronts;
-  std::vector<double> medians;
+  std::vector<double> medians, bests;
   opt::Point worst(objectives.size(), -std::numeric_limits<double>::infinity());
   for (const auto& s : summaries) {
     const opt::Generation g = *db.generation(s.index);
     std::vector<double> values;
     for (const auto& ind : g.population) values.push_back(ind.score.value);
     medians.push_back(median(values));
+    bests.push_back(values.empty() ? 0.0 : values[run::best_rank(g, problem)]);
     std::vector<opt::Point> front = opt::SmsEmoa::front(g);
     for (auto& p : front)
       for (std::size_t k = 0; k < p.size() && k < scale.size(); ++k) {
@@ -53,7 +56,7 @@ Json convergence_json(const store::RunStore& db, const mold::MoldSpec& spec, con
     out["generation"].push_back(s.index);
     out["evaluations"].push_back(s.evaluations);
     out["seconds"].push_back(s.seconds);
-    out["best"].push_back(s.best);
+    out["best"].push_back(bests[i]);
     out["median"].push_back(medians[i]);
     out["feasible_share"].push_back(s.feasible_share);
     out["hypervolume"].push_back(fronts[i].empty() ? 0.0 : opt::hypervolume(fronts[i], ref));

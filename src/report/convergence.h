@@ -3,6 +3,7 @@
 // and median scalarised value, the feasible share and the hypervolume of the feasible front.
 
 #include "mtcs/mold/mold_spec.h"
+#include "mtcs/opt/problem.h"
 #include "mtcs/run/anytime_trace.h"
 #include "mtcs/store/run_store.h"
 #include "scene_json.h"
@@ -12,7 +13,9 @@ namespace mtcs::report {
 // The hypervolume is taken in scaled objectives (objective / its scale in the spec) against one
 // reference point for the whole run: 1.1 x the largest scaled value any stored feasible front
 // reaches (plus 1e-9), so that the curve is comparable across generations; `hv_ref` gives it.
-Json convergence_json(const store::RunStore& db, const mold::MoldSpec& spec, const std::vector<std::string>& objectives);
+// The best is the problem's best member (run::best_rank), not the stored rank 0 (SMS-EMOA's order).
+Json convergence_json(const store::RunStore& db, const mold::MoldSpec& spec, const std::vector<std::string>& objectives,
+                      const opt::Problem& problem);
 
 // The anytime curves (the rows of replay's anytime.csv): per stored generation evaluations,
 // seconds, the best feasible weighted objective and the feasible front's hypervolume, each also

@@ -1,7 +1,8 @@
 // The page's data (what report.js reads), from the run store through the run's own session:
 //   title, run {dir, mold, algorithm, seed, evaluations, seconds, program}
 //   objectives [{name, unit, scale}]
-//   scene (scene_json.h), generation, shown (the member loaded first)
+//   scene (scene_json.h), generation, shown (the member loaded first), best (the rank of the
+//   generation's best: best.layout.yaml's for the last; SMS-EMOA's need not be 0)
 //   members [{rank, objectives, value, feasible, violation, front, layout (layout_json.h),
 //             violations, coolant (layout_json.h: per circuit, each bore's coolant in/out),
 //             design_rules (eval/design_rules.h: each bore's depth and pitch in diameters)}]
@@ -33,6 +34,7 @@
 #include "mtcs/report/html_page.h"
 #include "mtcs/run/run_record.h"
 #include "mtcs/run/session.h"
+#include "mtcs/run/stored_run.h"
 #include "mtcs/store/run_store.h"
 #include "scene_json.h"
 #include "shop_member.h"
@@ -113,7 +115,8 @@ RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
   const auto generation = db.generation(report.generation);
   if (!generation) throw io::InputError(db_path, 0, 0, "--generation", "no stored generation " + std::to_string(report.generation));
   const auto& population = generation->population;
-  report.member = options.member.value_or(0);
+  const std::size_t best = run::best_rank(*generation, session.problem());
+  report.member = options.member.value_or(int(best));
   if (report.member < 0 || std::size_t(report.member) >= population.size())
     throw io::InputError(db_path, 0, 0, "--member",
                          "generation " + std::to_string(report.generation) + " has members 0.." + std::to_string(population.size() - 1));
@@ -135,6 +138,7 @@ RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
   data["generation"] = report.generation;
   data["evaluations"] = generation->evaluations;
   data["shown"] = report.member;
+  data["best"] = best;
 
   // Every member as the shop receives it (rounded, tidied, re-scored): the best is optimize's
   // best.layout.yaml and bores.csv, the front members replay's layouts; the front of those scores.
@@ -143,7 +147,7 @@ RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
   for (std::size_t r = 0; r < population.size(); ++r) shop.push_back(shop_member(session, population[r].x));
   // The last generation's best as optimize wrote it: polished, when it was.
   if (report.generation == summaries.back().index)
-    if (auto polished = polished_best(run_dir, session, report.note)) shop[0] = std::move(*polished);
+    if (auto polished = polished_best(run_dir, session, report.note)) shop[best] = std::move(*polished);
   data["run"]["note"] = report.note;  // with what the polished best adds
   for (std::size_t r = 0; r < population.size(); ++r) rounded.population[r].score = shop[r].score;
   const auto front = opt::SmsEmoa::front(rounded);
@@ -168,7 +172,7 @@ RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
   }
   report.members = population.size();
   report.bores = shown.bores.size();
-  data["convergence"] = convergence_json(db, session.spec(), names);
+  data["convergence"] = convergence_json(db, session.spec(), names, session.problem());
   const run::MoldOptimizer optimizer(session.problem(), scene, session.config(), run::stored_start(meta, db_path + ":start"));
   data["anytime"] = anytime_json(run::stored_anytime(optimizer, db));
   report.generations = summaries.size();

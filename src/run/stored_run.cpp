@@ -5,6 +5,12 @@
 
 namespace mtcs::run {
 
+std::size_t best_rank(const opt::Generation& g, const opt::Problem& problem) {
+  const auto best = std::min_element(g.population.begin(), g.population.end(),
+                                     [&](const opt::Individual& a, const opt::Individual& b) { return problem.better(a.score, b.score); });
+  return std::size_t(best - g.population.begin());
+}
+
 StoredRun run_stored(const MoldOptimizer& optimizer, const MoldProblem& problem, store::RunStore& db,
                      const std::function<void(const opt::Generation&, double, long)>& on_stored,
                      const std::function<bool()>& stop) {

@@ -33,7 +33,7 @@ bool step_available();
 //  - csv: name,circuit,segment,p0x,...,p1z,diameter,entry_face,plugged,dead_end,insert (mold/layout_io.h).
 void export_layout(const std::string& path, const mold::Layout& layout, ExportFormat format);
 
-// The layout of a stored run's member (by rank; default 0, the best) of a stored generation
+// The layout of a stored run's member (by rank; default the best, run::best_rank) of a stored generation
 // (default the last), decoded by the run's own session and given as the shop receives it: the
 // genome rounded by run::shop_layout, the hole ends by run::shop_plan (the best of the last
 // generation is optimize's bores.csv, unless a polish improved it). io::InputError naming the

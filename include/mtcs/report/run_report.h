@@ -12,7 +12,7 @@ namespace mtcs::report {
 
 struct ReportOptions {
   std::optional<int> generation;  // the stored generation whose population is shown (default: the last)
-  std::optional<int> member;      // its member shown first, by rank (0: the best; default)
+  std::optional<int> member;      // its member shown first, by rank (default: the best, run::best_rank)
   std::string mold;               // the run's mold at a new place (as replay --mold)
   bool temperature = true;        // the cavity temperature of the member shown first (one solve)
   bool drilling_maps = true;      // the drilling maps of its bore entries (drilling_maps.h)

@@ -460,7 +460,7 @@ function fillTable(table, head, rows) {
 function showTables(member) {
   const layout = member.layout;
   const drilled = layout.bores.reduce((s, b) => s + b.length, 0);
-  const best = member.rank === 0 ? ' (best)' : '';
+  const best = member.rank === data.best ? ' (best)' : '';
   $('layout-label').textContent = `generation ${data.generation}, member ${member.rank}${best}`;
   $('view-title').textContent = `generation ${data.generation} \u00b7 member ${member.rank}${best} \u00b7 ${layout.bores.length} bores`;
   const dl = el('dl', { id: 'layout-summary' });
@@ -593,7 +593,7 @@ function tip(event, text) {
   tooltip.style.top = `${event.clientY + 10}px`;
 }
 function memberText(mm) {
-  return `member ${mm.rank}${mm.rank === 0 ? ' (best)' : ''}: ${mm.layout.bores.length} bores, ${mm.feasible ? 'feasible' : 'infeasible'}` +
+  return `member ${mm.rank}${mm.rank === data.best ? ' (best)' : ''}: ${mm.layout.bores.length} bores, ${mm.feasible ? 'feasible' : 'infeasible'}` +
     (mm.front ? ', on the front' : '') + '\n' + objectives.map((o, k) => `${objectiveLabel(o)}: ${fmt(mm.objectives[k], 4)}`).join('\n');
 }
 
