@@ -61,7 +61,15 @@ std::string found_and_needed(const Violation& v) {
     case K::BoreKeepout:
     case K::BoreCavity:
     case K::BoreSurface:
-      s << "found " << v.distance << " mm, needs " << v.margin << " mm";
+      // A distance of 0 is an overlap, not a thin wall: said in words (a bore through the part).
+      if (v.distance <= 0)
+        s << (v.kind == K::BoreBore      ? "the bores intersect"
+              : v.kind == K::BoreKeepout ? "the bore crosses the keep-out"
+              : v.kind == K::BoreCavity  ? "the bore crosses the part"
+                                         : "the bore breaks through the block's face")
+          << " (found 0 mm, needs " << v.margin << " mm)";
+      else
+        s << "found " << v.distance << " mm, needs " << v.margin << " mm";
       break;
   }
   return s.str();

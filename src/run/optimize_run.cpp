@@ -159,6 +159,7 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
     if (failed) std::rethrow_exception(failed);
     if (!ready) return {out_dir, mold_path, false, 0, 0, 0};  // rank 0 says why
   }
+  if (r.on_ready) r.on_ready();
   if (islands.islands == 0) transport.reset();  // a resumed run of one population
   const Session& session = *made;
   const mold::Scene& scene = session.scene();

@@ -136,3 +136,32 @@ TEST_CASE("designer trial: a budget of days is said once the rate settles, and t
   CHECK(std::regex_search(text, std::regex(R"(ETA [0-9]+ days)")));
   CHECK_FALSE(std::regex_search(text, std::regex(R"(ETA [0-9]{6,} s)")));
 }
+
+TEST_CASE("designer trial: Ctrl-C while the thermal model builds ends the run within a second, with nothing written",
+          "[cli][issue45]") {
+  // Was: ignored for 47 s (the model build), then an infeasible generation 0 was written. The
+  // gear's cold build takes seconds; SIGINT goes as soon as it says it has begun.
+  const fs::path out = scratch("designer_trial", "ctrl_c"), err = scratch("designer_trial", "ctrl_c.err");
+  fs::remove_all(out);
+  const std::string script = std::string(MTCS_BINARY) + " optimize " + MTCS_SOURCE_DIR + "/molds/gear.yaml --no-cache --out " +
+                             out.string() + " 2>" + err.string() + " & P=$!; until grep -q 'thermal model (' " + err.string() +
+                             "; do sleep 0.02; done; kill -INT $P; t0=$(date +%s%N); wait $P; rc=$?; "
+                             "echo $rc $(( ($(date +%s%N) - t0) / 1000000 )) > " + err.string() + ".rc";
+  const fs::path file = scratch("designer_trial", "ctrl_c.sh");
+  std::ofstream(file) << script << "\n";
+  REQUIRE(std::system(("bash " + file.string()).c_str()) == 0);
+  int code = 0, milliseconds = 0;
+  std::istringstream(read_text(err.string() + ".rc")) >> code >> milliseconds;
+  CHECK(code == 130);
+  CHECK(milliseconds < 1000);
+  CHECK_THAT(read_text(err), Catch::Contains("interrupted before the search began: nothing was written"));
+  CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("designer trial: a bore through the part reads 'crosses the part', not 'found 0 mm'", "[cli][issue45]") {
+  const fs::path layout = scratch("designer_trial", "through.layout.yaml");
+  std::ofstream(layout) << "circuits:\n  - diameter: 8\n    waypoints: [[100, 0, 60], [100, 170, 60], [120, 170, 60], [120, 0, 60]]\n";
+  const fs::path out = scratch("designer_trial", "through.txt");
+  REQUIRE(run_mtcs("evaluate " + kCup + " --layout " + layout.string() + " > " + out.string()) == 0);
+  CHECK_THAT(read_text(out), Catch::Contains("c0.b0 cavity the bore crosses the part (found 0 mm, needs 8 mm)"));
+}

@@ -8,12 +8,17 @@ namespace mtcs::run {
 
 class Interruption {
  public:
-  // Catches SIGINT and SIGTERM while it lives; the previous handlers come back after.
-  Interruption();
+  // Catches SIGINT and SIGTERM while it lives; the previous handlers come back after. With
+  // `before_run`, a signal before begin_run() ends the program at once (exit 128 + the signal)
+  // after printing that text: a model build of many seconds has nothing to save, and the user
+  // should not wait for it (only whole files are ever written: the cache's by rename).
+  explicit Interruption(const char* before_run = nullptr);
   ~Interruption();
   Interruption(const Interruption&) = delete;
   Interruption& operator=(const Interruption&) = delete;
 
+  // From here on a signal asks the run to stop after its generation.
+  void begin_run();
   // The signal received (SIGINT or SIGTERM), 0 while none has come.
   int signal() const;
   bool requested() const { return signal() != 0; }
