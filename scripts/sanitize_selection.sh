@@ -20,5 +20,6 @@ heavy+="|coupled cavity: a wall the part cannot|coupled cavity: the optimiser's 
 heavy+="|coupled cavity: the (cup|gear|L-bracket)'s samples|baffle's coolant warms"
 heavy+="|mtcs replay: the run keeps its mold|mtcs bench thermal on a mold: the tau|summary.json gives each circuit"
 heavy+="|mtcs bench part:|every bundled mold's best keeps|report: each violated clearance|report: the cavity temperature equals"
-heavy+="|report: each bore entry|report: the anytime curves|report: a missing run"
+heavy+="|report: each bore entry|report: the anytime curves|report: a missing run|report and export of an SMS-EMOA run"
+heavy+="|default objectives: taking a circuit away"
 heavy+="|distance queries do not allocate|islands on MPI|install:|chromium"

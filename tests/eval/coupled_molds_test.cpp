@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "mtcs/eval/cavity_temperature.h"
+#include "mtcs/eval/evaluation.h"
 #include "mtcs/mold/decoder.h"
 #include "mtcs/opt/rng.h"
 #include "mtcs/run/session.h"
@@ -218,4 +219,33 @@ TEST_CASE("temperature_difference: the core/cavity difference mtcs thermal repor
   CHECK(f.objectives[0] == Approx(b.objectives[0]).epsilon(1e-4));
   CHECK(f.objectives[1] == Approx(b.objectives[1]).epsilon(1e-6));
   CHECK(f.objectives[2] > 1);
+}
+
+// Issue 45, item 1 (and issue 40's "the score rewards a hotter mold"): on a new part the fixed
+// flux's default score improved from 68.77 to 57.41 when the loop over the lid was deleted, while
+// the finite-volume mean rose from 148 to 214 C. With the part coupled and cycle_time in every
+// bundled mold's objectives, taking any circuit away from the hand-made layout makes the mold
+// hotter and its default score worse.
+TEST_CASE("default objectives: taking a circuit away from a bundled layout heats the mold and worsens its score",
+          "[eval][coupling][issue45]") {
+  for (const char* name : {"plate", "cup", "ribbed_box", "l_bracket", "gear"}) {
+    INFO(name);
+    const run::Session session(MTCS_SOURCE_DIR + "/molds/" + name + ".yaml", run::RunOverrides{});
+    const mold::Scene& scene = session.scene();
+    const std::vector<std::string>& use = session.objective_names();
+    REQUIRE(std::find(use.begin(), use.end(), "cycle_time") != use.end());
+    const mold::Genome bundled = session.read_layout(MTCS_SOURCE_DIR + "/molds/" + name + ".layout.yaml");
+    const eval::ThermalQuery tier = eval::thermal_query(scene.spec());
+    auto score = [&](const mold::Genome& g) { return eval::scalar_fitness(session.pipeline().evaluate(g), scene.spec(), {}); };
+    auto mean = [&](const mold::Genome& g) { return eval::cavity_temperature(scene, mold::decode(scene, g), tier).summary.mean; };
+    const double score0 = score(bundled), mean0 = mean(bundled);
+    REQUIRE(bundled.circuits.size() >= 2);
+    for (std::size_t drop = 0; drop < bundled.circuits.size(); ++drop) {
+      mold::Genome fewer = bundled;
+      fewer.circuits.erase(fewer.circuits.begin() + std::ptrdiff_t(drop));
+      INFO("without circuit " << drop);
+      CHECK(mean(fewer) > mean0);
+      CHECK(score(fewer) > score0);
+    }
+  }
 }
