@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
@@ -164,4 +165,23 @@ TEST_CASE("designer trial: a bore through the part reads 'crosses the part', not
   const fs::path out = scratch("designer_trial", "through.txt");
   REQUIRE(run_mtcs("evaluate " + kCup + " --layout " + layout.string() + " > " + out.string()) == 0);
   CHECK_THAT(read_text(out), Catch::Contains("c0.b0 cavity the bore crosses the part (found 0 mm, needs 8 mm)"));
+}
+
+TEST_CASE("designer trial: a bore breaking through the block's face scores finite temperatures, infeasible by bore_surface",
+          "[cli][issue45]") {
+  // Found on the way (a STEP lid with a loop 2 mm under the top face): a 4 mm radius bore 2 mm
+  // under a face put its image's axis on its own wall, and every objective came out NaN.
+  const fs::path layout = scratch("designer_trial", "breaking.layout.yaml");
+  std::ofstream(layout) << "circuits:\n  - diameter: 8\n    waypoints: [[70, 0, 118], [70, 115, 118], [100, 115, 118], [100, 0, 118]]\n";
+  const fs::path out = scratch("designer_trial", "breaking.json");
+  REQUIRE(run_mtcs("evaluate " + kCup + " --layout " + layout.string() + " --json > " + out.string()) == 0);
+  const nlohmann::json j = nlohmann::json::parse(read_text(out));
+  for (const auto& [name, value] : j["objectives"].items()) {
+    INFO(name);
+    CHECK(std::isfinite(value.get<double>()));
+  }
+  CHECK(j["feasible"] == false);
+  bool surface = false;
+  for (const auto& v : j["violations"]) surface = surface || v["kind"] == "bore_surface";
+  CHECK(surface);
 }

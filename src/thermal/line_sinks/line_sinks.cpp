@@ -144,6 +144,24 @@ void shrink(Map& map, std::size_t& bytes, std::size_t keep, std::uint64_t now) {
   }
 }
 
+// A bore running along a face closer than its radius breaks through it (a layout the optimiser
+// may try: infeasible by bore_surface). Its image in that face would cross its own wall, where
+// the line sources' fields are singular (NaN where a wall point falls on the image's axis, as at
+// a 4 mm radius 2 mm under the face): the model lays it tangent to the face instead, a finite
+// stand-in for a layout no one can build.
+void keep_wall_inside(const geometry::Box& block, Channel& ch) {
+  const Vec3 along = ch.axis.p1 - ch.axis.p0;
+  const double length = along.norm();
+  if (length == 0) return;
+  for (int k = 0; k < 3; ++k) {
+    if (std::abs(along[k]) > 1e-12 * length) continue;  // not parallel to the faces across k
+    const double low = block.min[k] + ch.radius, high = block.max[k] - ch.radius;
+    if (low > high) continue;  // a block thinner than the bore: nothing to lay it against
+    const double x = ch.axis.p0[k], to = std::clamp(x, low, high);
+    ch.axis.p0[k] = to, ch.axis.p1[k] = to;
+  }
+}
+
 }  // namespace
 
 LineSinkModel::~LineSinkModel() = default;
@@ -166,6 +184,7 @@ LineSinkSolution LineSinkModel::solve(std::span<const Channel> channels, LineSin
     const auto clipped = clip_to_block(m.setting.block, ch.axis);
     if (!clipped) throw std::invalid_argument("line sinks: a channel lies outside the block");
     ch.axis = *clipped;
+    keep_wall_inside(m.setting.block, ch);
   }
   // A channel inside another's bore (both its ends within that one's radius of its axis: a jog
   // of a few mm at a junction) has no steel wall: it takes no heat. Left in, its collocation
