@@ -5,16 +5,31 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "cad_reader.h"
 #include "mesh_file_check.h"
 
 namespace mtcs::mesh {
+
+namespace {
+
+bool is_cad_file(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs";
+}
+
+}  // namespace
+
+bool reads_cad_files() { return cad_available(); }
 
 TriangleMesh read_mesh(const std::string& path) {
   std::error_code unreadable;  // a name too long, a folder without access: no exception, a clear error
@@ -25,6 +40,7 @@ TriangleMesh read_mesh(const std::string& path) {
   if (std::filesystem::file_size(path) > kMaxMeshFileBytes)
     throw MeshError(path + ": " + std::to_string(std::filesystem::file_size(path)) + " bytes, more than the " +
                     std::to_string(kMaxMeshFileBytes) + " bytes a mesh file may have");
+  if (is_cad_file(path)) return read_cad(path);
   check_mesh_file(path);
   std::vector<CGAL::Epick::Point_3> points;
   std::vector<std::vector<std::size_t>> polygons;

@@ -22,9 +22,19 @@ class MeshError : public std::runtime_error {
 inline constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t(2) << 30;  // 2 GiB
 inline constexpr std::size_t kMaxMeshTriangles = 20'000'000;
 
+// STEP and IGES parts are tessellated to within this distance of their surfaces (mm) and this
+// angle between neighbouring facets' normals (radians): 50 facets around a 10 mm hole, far
+// finer than any clearance mtcs checks.
+inline constexpr double kCadChordalTolerance = 0.01;
+inline constexpr double kCadAngularTolerance = 0.2;
+
 // Reads a polygon mesh (faces with more than three corners are fanned into triangles, which is
-// right for the convex faces CAD exporters write). Throws MeshError naming the file.
+// right for the convex faces CAD exporters write), or a STEP or IGES part (.step, .stp, .iges,
+// .igs: tessellated as above where mtcs is built with OpenCASCADE). Throws MeshError naming the
+// file.
 TriangleMesh read_mesh(const std::string& path);
+// Whether read_mesh takes STEP and IGES files in this build.
+bool reads_cad_files();
 
 // Binary STL.
 void write_stl(const std::string& path, const TriangleMesh& mesh);
