@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Picture of a surface field written by mtcs (a cavity's temperature, say): the PLY that
 `mtcs thermal --out field.ply` writes (vertex x y z, colour, value as quality), drawn in 3-D with
-the same colour map and a colour bar in the field's unit.
+the same colour map and a colour bar in the field's unit, beside two sections through the
+hottest point: a hot spot inside a part (a lid's core, a boss) shows there even where the 3-D
+view sees only the outside. The hottest point is marked in every panel.
 
 Usage: plot_surface_field.py FIELD.ply OUT.png [TITLE]
 """
@@ -12,6 +14,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.collections  # noqa: E402
 import matplotlib.tri  # noqa: E402
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
@@ -59,6 +62,43 @@ def facing_the_camera(verts, faces, elev, azim):
     return [f for f in faces if out * sum(n * d for n, d in zip(normal(f), eye)) > 0]
 
 
+def section(verts, values, faces, axis, at):
+    """The surface cut by the plane coordinate[axis] = at: segments ((p, q) in the plane's other
+    two coordinates) and each segment's mean value, interpolated along the cut edges."""
+    a, b = [k for k in range(3) if k != axis]
+    segments, seg_values = [], []
+    for f in faces:
+        side = [verts[i][axis] - at for i in f]
+        cut = []
+        for j in range(3):
+            i0, i1 = f[j], f[(j + 1) % 3]
+            s0, s1 = side[j], side[(j + 1) % 3]
+            if (s0 < 0) != (s1 < 0):
+                t = s0 / (s0 - s1)
+                p = [verts[i0][k] + t * (verts[i1][k] - verts[i0][k]) for k in range(3)]
+                cut.append(((p[a], p[b]), values[i0] + t * (values[i1] - values[i0])))
+        if len(cut) == 2:
+            segments.append((cut[0][0], cut[1][0]))
+            seg_values.append((cut[0][1] + cut[1][1]) / 2)
+    return segments, seg_values
+
+
+def draw_section(ax, verts, values, faces, axis, hot, norm, cmap, label):
+    a, b = [k for k in range(3) if k != axis]
+    segments, seg_values = section(verts, values, faces, axis, hot[axis])
+    lines = matplotlib.collections.LineCollection(segments, colors=[cmap(norm(v)) for v in seg_values], linewidths=2.2)
+    ax.add_collection(lines)
+    coords = list(zip(*verts))
+    pad = 0.05 * max(max(coords[a]) - min(coords[a]), max(coords[b]) - min(coords[b]))
+    ax.set_xlim(min(coords[a]) - pad, max(coords[a]) + pad)
+    ax.set_ylim(min(coords[b]) - pad, max(coords[b]) + pad)
+    ax.set_aspect("equal")
+    ax.plot([hot[a]], [hot[b]], marker="*", color="red", markersize=14, markeredgecolor="white", zorder=5)
+    ax.set_xlabel("xyz"[a] + " (mm)")
+    ax.set_ylabel("xyz"[b] + " (mm)")
+    ax.set_title(f"section at {'xyz'[axis]} = {hot[axis]:.1f} mm through the hottest point", fontsize=9)
+
+
 def main(path, out, title=""):
     verts, values, faces, label = read_ply(path)
     lo, hi = min(values), max(values)
@@ -81,9 +121,19 @@ def main(path, out, title=""):
         fig.tight_layout()
         fig.savefig(out, dpi=110)
         return
-    fig = plt.figure(figsize=(8, 6))
-    ax = fig.add_subplot(projection="3d")
-    faces = facing_the_camera(verts, faces, ax.elev, ax.azim)
+    hottest = max(range(len(values)), key=lambda i: values[i])
+    hot = verts[hottest]
+    # The sections cut across the part's two longest extents: through a shell they show its wall
+    # profile, with the core's or the boss's inside.
+    longest = sorted(range(3), key=lambda k: -extents[k])[:2]
+    fig = plt.figure(figsize=(14, 6))
+    grid = fig.add_gridspec(2, 2, width_ratios=[1.5, 1])
+    ax = fig.add_subplot(grid[:, 0], projection="3d")
+    ax.view_init(elev=35, azim=-60)
+    for row, axis in enumerate(longest):
+        draw_section(fig.add_subplot(grid[row, 1]), verts, values, faces, axis, hot, norm, cmap, label)
+    all_faces = faces
+    faces = facing_the_camera(verts, all_faces, ax.elev, ax.azim)
     polys = [[verts[i] for i in f] for f in faces]
     colours = [cmap(norm(sum(values[i] for i in f) / 3)) for f in faces]
     # Edges in the faces' own colours: with none, antialiasing leaves light seams between them.
@@ -93,8 +143,14 @@ def main(path, out, title=""):
         mid = (max(c) + min(c)) / 2
         getattr(ax, f"set_{axis}lim")(mid - span, mid + span)
         getattr(ax, f"set_{axis}label")(f"{axis} (mm)")
-    ax.view_init(elev=35, azim=-60)
-    bar = fig.colorbar(matplotlib.cm.ScalarMappable(norm=norm, cmap=cmap), ax=ax, shrink=0.7)
+    # The hottest point, a star drawn over the surface even where the surface hides it (inside
+    # a lid, on a core): the sections show where it lies.
+    ax.computed_zorder = False  # drawn in the order added
+    ax.scatter([hot[0]], [hot[1]], [hot[2]], marker="*", s=260, color="red", edgecolors="white", depthshade=False, zorder=10)
+    unit = label[label.find("[") + 1:label.find("]")] if "[" in label and "]" in label else ""
+    ax.text2D(0.02, 0.02, f"hottest {hi:.1f} {unit} at ({hot[0]:.1f}, {hot[1]:.1f}, {hot[2]:.1f}) mm (the star; the sections cut through it)",
+              transform=ax.transAxes, fontsize=9, color="darkred")
+    bar = fig.colorbar(matplotlib.cm.ScalarMappable(norm=norm, cmap=cmap), ax=ax, shrink=0.7, pad=0.08)
     bar.set_label(label)
     ax.set_title(title or f"{label}: {lo:.2f} to {hi:.2f}")
     fig.tight_layout()

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # ctest: the report of a small run on the physics plate (generation 0: feasible and infeasible
 # layouts, violated clearances, points of the front that overlap) opened in headless chromium by
-# report_page.mjs; the coolant of a short run on the bundled plate (--coolant); then the
+# report_page.mjs; the coolant and the cavity temperature of a short run on the bundled plate
+# (--coolant --temperature); then the
 # interference page of two meshes by interference_page.mjs.
 # Exit 77 (ctest: skipped, with the reason printed) only when chromium is absent.
 # Usage: browser_test.sh MTCS_BINARY SOURCE_DIR WORK_DIR
@@ -18,8 +19,8 @@ mkdir -p "$work"
 node "$src/tests/report/report_page.mjs" "$work/report.html"
 # The bundled plate (a flow and temperature objectives): each circuit's heat, the bores by coolant temperature.
 "$mtcs" optimize "$src/molds/plate.yaml" --evaluations 60 --seed 3 --out "$work/run_coolant" --quiet
-"$mtcs" report "$work/run_coolant" --no-temperature --out "$work/report_coolant.html" --quiet
-node "$src/tests/report/report_page.mjs" "$work/report_coolant.html" --coolant
+"$mtcs" report "$work/run_coolant" --out "$work/report_coolant.html" --quiet
+node "$src/tests/report/report_page.mjs" "$work/report_coolant.html" --coolant --temperature
 # The plate with blind bores allowed from below, started from its layout plus a bubbler and a
 # baffle: the report draws their inserts and names them in the bores' table.
 sed 's/  allowed_faces: \[+x, -x, +y, -y\]/  allowed_faces: [+x, -x, +y, -y]\n  baffles: {faces: [-z]}/' \

@@ -12,8 +12,10 @@
 //   - the anytime panel (best objective and hypervolume against evaluations and wall time) is
 //     empty at load and draws its four curves, one vertex per stored generation, once opened.
 //   - the coolant table lists each circuit; with --coolant (a spec with a flow and a temperature
-//     objective) the bores can be drawn by their coolant's temperature, with its scale.
-// Usage: node report_page.mjs REPORT.html [--coolant] [--screenshot PAGE.png] [--width W --height H]
+//     objective) the bores can be drawn by their coolant's temperature, with its scale;
+//   - with --temperature, the hottest point is marked where the data puts it and "cut through the
+//     hottest point" sets the section plane there.
+// Usage: node report_page.mjs REPORT.html [--coolant] [--temperature] [--screenshot PAGE.png] [--width W --height H]
 // Exit 0: passed; 1: failed; 77: skipped (no chromium on this machine).
 import fs from 'node:fs';
 import path from 'node:path';
@@ -26,6 +28,7 @@ const screenshot = option('--screenshot', null);
 const width = Number(option('--width', 1366)), height = Number(option('--height', 768));
 const expectCoolant = args.includes('--coolant');  // the report's spec has a flow and a temperature objective
 const expectBaffles = args.includes('--baffles');  // the shown layout holds baffles or bubblers
+const expectTemperature = args.includes('--temperature');  // the report has the shown layout's cavity temperature
 
 if (!fs.existsSync(reportPath)) {
   console.error(`FAILED: no report at ${reportPath}`);
@@ -101,6 +104,24 @@ try {
     check(blind.tube, "the bubbler's tube is given in mm");
     check(errors.length === 0, `no console errors${errors.length ? ': ' + errors.join(' | ') : ''}`);
     await finish();
+  }
+  // The hottest point: marked where the data puts it, and one click cuts the view through it.
+  const hottest = await page.evaluate(() => {
+    const t = window.mtcsReport.data.temperature;
+    if (!t) return null;
+    document.getElementById('section-hottest').click();
+    return { mark: window.mtcsReport.hottestMark(), at: t.hottest, axis: document.getElementById('section-axis').value,
+      value: document.getElementById('section-value').textContent };
+  });
+  if (expectTemperature) check(hottest !== null, 'the report has a cavity temperature (--temperature)');
+  if (hottest) {
+    check(hottest.mark && hottest.mark.every((c, k) => Math.abs(c - hottest.at[k]) < 1e-6), 'the hottest point is marked where the solve puts it');
+    const k = Number(hottest.axis);
+    const shown = Number(hottest.value.replace(/^[xyz] = /, '').replace(/ mm$/, ''));
+    // The slider moves in thousandths of the block: within one step of the point.
+    check(hottest.axis !== '' && Math.abs(shown - hottest.at[k]) < 2,
+      `"cut through the hottest point" sets the section there (${hottest.value}, hottest at ${hottest.at[k]})`);
+    await page.evaluate(() => { document.getElementById('section-axis').value = ''; document.getElementById('section-axis').dispatchEvent(new Event('input')); });
   }
   const coolant = await coolantOf();
   console.log(`coolant ${coolant.caption}: ${coolant.rows} rows, ${coolant.circuits} circuits, heat ${coolant.heat}, layer ${coolant.disabled ? 'off' : 'on'}`);

@@ -295,6 +295,13 @@ if (data.temperature) {
   g.setAttribute('color', new THREE.BufferAttribute(colors, 3));
   const m = new THREE.Mesh(g, material({ vertexColors: true, polygonOffset: true, polygonOffsetFactor: -1 }));
   temperatureLayer.add(m);
+  // The hottest point, drawn through the surface (it often lies inside: a core, a lid's boss).
+  const hot = new THREE.Mesh(new THREE.SphereGeometry(markSize / 2, 16, 12),
+    new THREE.MeshBasicMaterial({ color: 0xff2020, depthTest: false, transparent: true, opacity: 0.9 }));
+  hot.position.copy(v3(t.hottest));
+  hot.renderOrder = 10;
+  hot.name = 'hottest';
+  temperatureLayer.add(hot);
 } else {
   setLayerAvailable('temperature', false, 'no temperature in this report');
 }
@@ -450,6 +457,19 @@ function updateSection() {
   render();
 }
 for (const id of ['section-axis', 'section-pos', 'section-flip']) $(id).addEventListener('input', updateSection);
+// One click to the section through the hottest point, across the block's longest extent (as the
+// thermal picture's first section): what lies in front of it is cut away.
+if (data.temperature) {
+  const button = $('section-hottest');
+  button.hidden = false;
+  button.addEventListener('click', () => {
+    const k = [blockSize.x, blockSize.y, blockSize.z].reduce((best, v, i, all) => (v > all[best] ? i : best), 0);
+    const lo = blockBounds.min.getComponent(k), hi = blockBounds.max.getComponent(k);
+    $('section-axis').value = String(k);
+    $('section-pos').value = String(Math.round(1000 * (data.temperature.hottest[k] - lo) / (hi - lo)));
+    updateSection();
+  });
+}
 
 // ---------------------------------------------------------------- the layout's tables
 let shown = data.shown;
@@ -473,7 +493,8 @@ function showTables(member) {
   item('scalarised value', fmt(member.value));
   if (data.temperature && data.temperature.member === member.rank) {
     const t = data.temperature;
-    item('cavity temperature', `mean ${fmt(t.mean)} \u00b0C, std ${fmt(t.std)} K, max ${fmt(t.max)} \u00b0C (tier ${t.tier})` +
+    item('cavity temperature', `mean ${fmt(t.mean)} \u00b0C, std ${fmt(t.std)} K, max ${fmt(t.max)} \u00b0C at ` +
+      `(${t.hottest.map((c) => fmt(c)).join(', ')}) mm, the red mark (tier ${t.tier})` +
       (t.singular ? `; ${t.singular} singular vertices (patch corners) in grey` : ''));
   }
   $('layout-summary').replaceWith(dl);
@@ -872,6 +893,7 @@ render();
 dispose(warmUp);
 // For tests and scripts: the page is drawn.
 window.mtcsReport = { select, frames: () => frames, programs: () => (renderer ? renderer.info.programs.length : 0), data,
-  coolantBores: () => coolantLayer.children.length, inserts: () => boreLayer.children.filter((m) => m.userData.insert).length };
+  coolantBores: () => coolantLayer.children.length, inserts: () => boreLayer.children.filter((m) => m.userData.insert).length,
+  hottestMark: () => { const h = temperatureLayer.getObjectByName('hottest'); return h ? h.position.toArray() : null; } };
 performance.mark('mtcs-drawn');
 document.body.dataset.ready = '1';
