@@ -49,7 +49,9 @@ mold::Layout write_run_outputs(const std::string& out_dir, const mold::Scene& sc
   summary["seconds"] = o.seconds;
   summary["generations"] = o.last.index;
   summary["interrupted"] = o.interrupted;
-  summary["mold"] = o.mold_path;
+  // Absolute, as the run store keeps it: a resumed run (which knows the path from the store) and a
+  // new one (given it relative to the working folder) write the same.
+  summary["mold"] = fs::absolute(o.mold_path).lexically_normal().string();
   summary["tolerance_mm"] = o.tolerance;  // coordinates in the layout and hole tables are rounded to it
   for (std::size_t k = 0; k < names.size() && k < o.best.objectives.size(); ++k)
     summary["objectives"][names[k]] = o.best.objectives[k];

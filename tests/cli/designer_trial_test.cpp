@@ -185,3 +185,16 @@ TEST_CASE("designer trial: a bore breaking through the block's face scores finit
   for (const auto& v : j["violations"]) surface = surface || v["kind"] == "bore_surface";
   CHECK(surface);
 }
+
+TEST_CASE("designer trial: summary.json names the mold by the same absolute path before and after a resume",
+          "[cli][issue45]") {
+  // Was: the path as given (relative to where optimize ran) in a new run, absolute after a resume.
+  const fs::path out = scratch("designer_trial", "relative_run");
+  fs::remove_all(out);
+  REQUIRE(std::system(("cd " + MTCS_SOURCE_DIR + " && " + MTCS_BINARY + " optimize molds/plate.yaml --evaluations 100 --quiet --out " +
+                       out.string()).c_str()) == 0);
+  const std::string written = nlohmann::json::parse(read_text(out / "summary.json"))["mold"];
+  CHECK(written == (fs::path(MTCS_SOURCE_DIR) / "molds/plate.yaml").lexically_normal().string());
+  REQUIRE(run_mtcs("optimize --resume " + out.string() + " --quiet") == 0);
+  CHECK(nlohmann::json::parse(read_text(out / "summary.json"))["mold"] == written);
+}
