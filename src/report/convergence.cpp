@@ -22,7 +22,7 @@ double median(std::vector<double> v) {
 }  // namespace
 
 Json convergence_json(const store::RunStore& db, const mold::MoldSpec& spec, const std::vector<std::string>& objectives,
-                      const opt::Problem& problem) {
+                      const opt::Problem& problem, const std::vector<double>& scaled_ref) {
   std::vector<double> scale;
   for (const auto& name : objectives) {
     const auto o = mold::objective_named(name);
@@ -31,7 +31,6 @@ Json convergence_json(const store::RunStore& db, const mold::MoldSpec& spec, con
   const auto summaries = db.summaries();
   std::vector<std::vector<opt::Point>> fronts;
   std::vector<double> medians, bests;
-  opt::Point worst(objectives.size(), -std::numeric_limits<double>::infinity());
   for (const auto& s : summaries) {
     const opt::Generation g = *db.generation(s.index);
     std::vector<double> values;
@@ -40,14 +39,10 @@ Json convergence_json(const store::RunStore& db, const mold::MoldSpec& spec, con
     bests.push_back(values.empty() ? 0.0 : values[run::best_rank(g, problem)]);
     std::vector<opt::Point> front = opt::SmsEmoa::front(g);
     for (auto& p : front)
-      for (std::size_t k = 0; k < p.size() && k < scale.size(); ++k) {
-        p[k] /= scale[k];
-        worst[k] = std::max(worst[k], p[k]);
-      }
+      for (std::size_t k = 0; k < p.size() && k < scale.size(); ++k) p[k] /= scale[k];
     fronts.push_back(std::move(front));
   }
-  opt::Point ref = worst;
-  for (double& r : ref) r = std::isfinite(r) ? (r > 0 ? 1.1 * r : 0.9 * r) + 1e-9 : 1;
+  const opt::Point& ref = scaled_ref;
   Json out{{"generation", Json::array()}, {"evaluations", Json::array()}, {"seconds", Json::array()},
            {"best", Json::array()},       {"median", Json::array()},      {"feasible_share", Json::array()},
            {"hypervolume", Json::array()}, {"front_size", Json::array()}, {"hv_ref", ref}};

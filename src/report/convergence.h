@@ -10,12 +10,12 @@
 
 namespace mtcs::report {
 
-// The hypervolume is taken in scaled objectives (objective / its scale in the spec) against one
-// reference point for the whole run: 1.1 x the largest scaled value any stored feasible front
-// reaches (plus 1e-9), so that the curve is comparable across generations; `hv_ref` gives it.
+// The hypervolume is taken in scaled objectives (objective / its scale in the spec) against the
+// run's reference point `scaled_ref` (run::AnytimeTrace::reference: summary.json's and replay's),
+// so that the page, replay and summary.json give one scale; `hv_ref` gives it.
 // The best is the problem's best member (run::best_rank), not the stored rank 0 (SMS-EMOA's order).
 Json convergence_json(const store::RunStore& db, const mold::MoldSpec& spec, const std::vector<std::string>& objectives,
-                      const opt::Problem& problem);
+                      const opt::Problem& problem, const std::vector<double>& scaled_ref);
 
 // The anytime curves (the rows of replay's anytime.csv): per stored generation evaluations,
 // seconds, the best feasible weighted objective and the feasible front's hypervolume, each also

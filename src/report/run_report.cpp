@@ -172,9 +172,10 @@ RunReport run_report(const std::string& run_dir, const ReportOptions& options) {
   }
   report.members = population.size();
   report.bores = shown.bores.size();
-  data["convergence"] = convergence_json(db, session.spec(), names, session.problem());
   const run::MoldOptimizer optimizer(session.problem(), scene, session.config(), run::stored_start(meta, db_path + ":start"));
-  data["anytime"] = anytime_json(run::stored_anytime(optimizer, db));
+  const run::AnytimeTrace anytime = run::stored_anytime(optimizer, db);
+  data["anytime"] = anytime_json(anytime);
+  data["convergence"] = convergence_json(db, session.spec(), names, session.problem(), anytime.reference());
   report.generations = summaries.size();
   data["temperature"] = nullptr;
   if (options.temperature && session.spec().cavity) {

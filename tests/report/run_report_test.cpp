@@ -351,6 +351,11 @@ TEST_CASE("report and export of an SMS-EMOA run: the best shown and exported is 
       CHECK(c["best"][i].get<double>() <= c["median"][i].get<double>());
     }
   CHECK(all_feasible > 100);
+  // One hypervolume scale (issue 45: the page's ~27 against replay's ~5 100): the chart's last
+  // value is summary.json's, against the run's reference point.
+  CHECK(c["hv_ref"] == data["anytime"]["ref"]);
+  CHECK(c["hypervolume"][c["hypervolume"].size() - 1].get<double>() ==
+        Approx(summary["hypervolume"].get<double>()).epsilon(1e-9));
   // Export's default member is that best: optimize's bores.csv.
   const path exported = mtcs_test::scratch("report", "sms_export.csv");
   REQUIRE(mtcs_test::run_mtcs("export " + run.string() + " --format csv --out " + exported.string()) == 0);

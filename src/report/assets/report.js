@@ -751,7 +751,7 @@ if (anytime && anytime.evaluations.length) {
   const n = anytime.evaluations.length;
   $('anytime-caption').textContent = `(${n} generations, ${anytime.evaluations[n - 1].toLocaleString('en-US')} evaluations, ${fmt(anytime.seconds[n - 1])} s)`;
   $('anytime-about').textContent = 'Solid: the best so far; dashed: each stored generation\'s population. Hypervolume of the feasible front in scaled objectives ' +
-    `against the run's reference point ${anytime.ref.map((v) => fmt(v)).join(', ')} (summary.json's; the convergence chart above fits its own). ` +
+    `against the run's reference point ${anytime.ref.map((v) => fmt(v)).join(', ')} (summary.json's and replay's, as the convergence chart above). ` +
     'The same rows as mtcs replay\'s anytime.csv.';
   $('anytime-panel').addEventListener('toggle', () => { if ($('anytime-panel').open) drawAnytime(); });
 } else {
