@@ -161,7 +161,7 @@ struct Objectives {
   std::vector<Objective> use{Objective::TemperatureStd, Objective::TemperatureMax, Objective::Cost};
   double scale_uniformity = 5, scale_worst_covered = 20, scale_cost = 1000;                   // mm, mm, cost
   double scale_temperature_mean = 10, scale_temperature_std = 1, scale_temperature_max = 10;  // K
-  double scale_cycle_time = 10;                                                               // s
+  double scale_cycle_time = 1;  // s: 1 s of cycle as 1 K of spread (evening the spread by a hotter mold costs cycle)
   double scale_cost_per_part = 0.1;          // the cost units per part
   double scale_temperature_difference = 1;   // K
   double scale_temperature_std_side = 1;     // K
