@@ -1,7 +1,7 @@
 // Issue 45, "STEP in": a part as the customer's CAD sends it. STEP (and IGES) files read by
 // mesh::read_mesh through OpenCASCADE, checked against OpenCASCADE's own exact integration of the
 // B-rep (BRepGProp: volume and area of the surfaces themselves, not of the tessellation): a
-// part written by another tool (gmsh 4.8, tests/data/step), one written by OpenCASCADE
+// part written by another tool (gmsh 4.8, docs/first-mold/lid.step), one written by OpenCASCADE
 // through mtcs export, the same part as IGES; then a spec whose cavity is the STEP file, run as
 // a designer would.
 
@@ -32,7 +32,7 @@ namespace {
 
 using mtcs_test::fs::path;
 
-const path kLid = path(MTCS_SOURCE_DIR) / "tests/data/step/lid.step";
+const path kLid = path(MTCS_SOURCE_DIR) / "docs/first-mold/lid.step";
 
 TopoDS_Shape read_shape(const path& file) {
   Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));

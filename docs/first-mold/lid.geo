@@ -1,5 +1,6 @@
-// A small housing lid for mtcs's STEP tests: 80 x 50 x 20 mm outside, 2.5 mm walls, open at -z,
-// a round boss (10 mm across, a 4 mm hole) inside, the outer vertical edges rounded (r 5 mm).
+// A small housing lid for mtcs's STEP walkthrough and tests (gmsh lid.geo -0 -o lid.step):
+// 80 x 50 x 20 mm outside, 2.5 mm walls, open at -z, a round boss (10 mm across, a 4 mm hole)
+// inside, four edges rounded (r 5 mm).
 SetFactory("OpenCASCADE");
 Box(1) = {0, 0, 0, 80, 50, 20};
 Box(2) = {2.5, 2.5, -1, 75, 45, 18.5};
