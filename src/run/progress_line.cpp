@@ -67,11 +67,15 @@ ProgressPrinter::ProgressPrinter(const MoldOptimizer& optimizer, int log_every)
     : optimizer_(&optimizer), quiet_(!spdlog::should_log(spdlog::level::info)), tty_(::isatty(2)), log_every_(log_every) {}
 
 void ProgressPrinter::operator()(const opt::Generation& g, double seconds, long evaluations) const {
-  // The rate since the oldest generation within the last half of the session.
-  history_.emplace_back(seconds, evaluations);
-  std::size_t from = 0;
-  while (from + 2 < history_.size() && history_[from + 1].first <= seconds / 2) ++from;
-  const auto [s0, e0] = history_.size() > 1 ? history_[from] : std::pair<double, long>{0, 0};
+  // The rate since the session's half-way point (the last kept point before it); points are kept
+  // 5 % apart in time, so a run of days keeps a few hundred.
+  if (history_.empty() || seconds >= 1.05 * history_.back().first) history_.emplace_back(seconds, evaluations);
+  std::pair<double, long> half{0, 0};
+  for (const auto& point : history_) {
+    if (point.first > seconds / 2) break;
+    half = point;
+  }
+  const auto [s0, e0] = half;
   const double rate = seconds > s0 ? double(evaluations - e0) / (seconds - s0) : 0;
   const double left = rate > 0 ? double(optimizer_->budget() - g.evaluations) / rate : 0;
   if (!warned_ && seconds >= kRateSettles && left > kLongRun) {

@@ -38,7 +38,7 @@ class ProgressPrinter {
   const MoldOptimizer* optimizer_;
   bool quiet_, tty_;
   int log_every_;
-  mutable std::vector<std::pair<double, long>> history_;  // (seconds, evaluations) after each generation
+  mutable std::vector<std::pair<double, long>> history_;  // (seconds, evaluations), 5 % apart in time
   mutable bool warned_ = false;
 };
 
