@@ -1,5 +1,6 @@
 #include "mtcs/mesh/interference_report.h"
 
+#include <algorithm>
 #include <cstdarg>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -47,6 +48,9 @@ void write_interference_json(std::ostream& out, const InterferenceCheck& what, c
                           {"penetrating", p.penetrating},
                           {"coplanar", p.x.coplanar},
                           {"segment", {point(p.x.p), point(p.x.q)}}});
+  double depth = 0;
+  for (const auto& g : groups) depth = std::max(depth, g.depth);
+  j["overlap_depth"] = depth;  // the deepest vertex of an intersecting triangle inside the other solid
   j["groups"] = nlohmann::json::array();
   const std::vector<FaceShape> shapes_a = groups.empty() ? std::vector<FaceShape>{} : face_shapes(a, pa);
   const std::vector<FaceShape> shapes_b = groups.empty() ? std::vector<FaceShape>{} : face_shapes(b, pb);
@@ -59,6 +63,7 @@ void write_interference_json(std::ostream& out, const InterferenceCheck& what, c
                            {"face_b", g.face_b},
                            {"pairs", g.pairs},
                            {"penetrating", g.penetrating},
+                           {"depth", g.depth},
                            {"centroid_a", point(fa.centroid)},
                            {"area_a", fa.area},
                            {"centroid_b", point(fb.centroid)},
@@ -82,11 +87,14 @@ void write_interference_text(std::ostream& out, const InterferenceCheck& what, c
   for (int s : report.solids_of_a_inside_b) print(out, "solid %d of A lies inside B\n", s);
   for (int s : report.solids_of_b_inside_a) print(out, "solid %d of B lies inside A\n", s);
   if (report.pairs.empty() && !report.interferes) print(out, "distance: %.17g\n", report.distance);
+  double depth = 0;
+  for (const auto& g : groups) depth = std::max(depth, g.depth);
   if (!groups.empty())
-    print(out, "pairs per face (solid.face of A x solid.face of B: pairs, interfering):\n");
+    print(out, "overlap depth: %.6g (the deepest vertex of an intersecting triangle inside the other solid)\n"
+               "pairs per face (solid.face of A x solid.face of B: pairs, interfering, overlap depth):\n", depth);
   for (const auto& g : groups)
-    print(out, "  A %d.%d x B %d.%d: %d, %d\n", g.solid_a, g.face_a, g.solid_b, g.face_b, g.pairs,
-          g.penetrating);
+    print(out, "  A %d.%d x B %d.%d: %d, %d, %.6g\n", g.solid_a, g.face_a, g.solid_b, g.face_b, g.pairs,
+          g.penetrating, g.depth);
   if (!report.pairs.empty()) print(out, "pairs (triangle of A, triangle of B, interfering, segment):\n");
   for (const auto& p : report.pairs)
     print(out, "  %d %d %d  %.9g %.9g %.9g  %.9g %.9g %.9g\n", p.a, p.b, int(p.penetrating), p.x.p.x(),

@@ -1,8 +1,12 @@
 #include "mtcs/mesh/interference_view.h"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <tuple>
+#include <unordered_map>
+
+#include "mtcs/mesh/bvh.h"
 
 #include "mtcs/mesh/mesh_io.h"
 
@@ -33,6 +37,37 @@ std::vector<FaceGroup> group_by_face(const InterferenceReport& report, const Mes
   std::vector<FaceGroup> out;
   for (const auto& [key, g] : groups) out.push_back(g);
   return out;
+}
+
+double measure_overlap_depths(std::vector<FaceGroup>& groups, const InterferenceReport& report, const TriangleMesh& a,
+                              const TriangleMesh& b, const MeshParts& pa, const MeshParts& pb) {
+  if (report.pairs.empty()) return 0;
+  const TriangleBvh inside_a(a), inside_b(b);
+  // Each vertex's depth in the other solid, computed once (a vertex sits in many pairs).
+  std::unordered_map<int, double> depth_in_b, depth_in_a;
+  auto depth = [](const TriangleBvh& other, const Vec3& v, std::unordered_map<int, double>& memo, int key) {
+    const auto [it, added] = memo.try_emplace(key, 0.0);
+    if (added && other.contains(v)) it->second = other.segment_distance(v, v, std::numeric_limits<double>::infinity());
+    return it->second;
+  };
+  std::map<std::tuple<int, int, int, int>, double> deepest;
+  for (const auto& p : report.pairs) {
+    const auto i = std::size_t(p.a), j = std::size_t(p.b);
+    double d = 0;
+    for (int k = 0; k < 3; ++k) {
+      const int va = a.triangles[i][k], vb = b.triangles[j][k];
+      d = std::max({d, depth(inside_b, a.vertices[std::size_t(va)], depth_in_b, va),
+                    depth(inside_a, b.vertices[std::size_t(vb)], depth_in_a, vb)});
+    }
+    double& g = deepest[std::make_tuple(pa.solid_of[i], pa.face_of[i], pb.solid_of[j], pb.face_of[j])];
+    g = std::max(g, d);
+  }
+  double most = 0;
+  for (FaceGroup& g : groups) {
+    g.depth = deepest[std::make_tuple(g.solid_a, g.face_a, g.solid_b, g.face_b)];
+    most = std::max(most, g.depth);
+  }
+  return most;
 }
 
 void write_interference_ply(std::ostream& out, const TriangleMesh& a, const TriangleMesh& b,

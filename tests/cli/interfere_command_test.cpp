@@ -100,6 +100,30 @@ TEST_CASE("mtcs interfere: plates face to face are contact, not interference", "
   CHECK(out.find("verdict: contact only") != std::string::npos);
 }
 
+// Issue 45: the trial's 1 278 face-pair lines said nothing of how deep the parts overlap. A
+// 12 x 6 x 6 mm block pushed 1.5 mm into a 10 mm cube (its corners 2 mm inside the cube's other
+// faces): its deepest corner lies 1.5 mm inside, the closed form.
+TEST_CASE("mtcs interfere: the overlap depth per face and overall is the closed form of two boxes", "[cli][interfere]") {
+  const fs::path a = scratch("cube.stl"), b = scratch("bar.stl");
+  mesh::write_stl(a.string(), mesh::box_mesh({{0, 0, 0}, {10, 10, 10}}));
+  mesh::write_stl(b.string(), mesh::box_mesh({{8.5, 2, 2}, {20.5, 8, 8}}));
+  std::string out;
+  REQUIRE(run("interfere " + a.string() + " " + b.string() + " --json", &out) == 0);
+  const auto j = nlohmann::json::parse(out);
+  CHECK(j["overlap_depth"].get<double>() == Approx(1.5).margin(1e-12));
+  double deepest = 0;
+  for (const auto& g : j["groups"]) {
+    CHECK(g["depth"].get<double>() <= 1.5 + 1e-12);
+    deepest = std::max(deepest, g["depth"].get<double>());
+  }
+  CHECK(deepest == Approx(1.5).margin(1e-12));
+  REQUIRE(run("interfere " + a.string() + " " + b.string(), &out) == 0);
+  CHECK(out.find("overlap depth: 1.5 (the deepest vertex") != std::string::npos);
+  // Apart: no groups, no depth.
+  REQUIRE(run("interfere " + a.string() + " " + b.string() + " --translate 5,0,0 --json", &out) == 0);
+  CHECK(nlohmann::json::parse(out)["overlap_depth"].get<double>() == 0);
+}
+
 TEST_CASE("mtcs interfere: bad input exits 2 naming the file and the reason", "[cli][interfere]") {
   std::string out;
   CHECK(run("interfere " + scratch("missing.stl").string() + " " + kMeshes + "homer.off", &out) == 2);

@@ -14,11 +14,19 @@ namespace mtcs::mesh {
 struct FaceGroup {
   int solid_a = 0, face_a = 0, solid_b = 0, face_b = 0;
   int pairs = 0, penetrating = 0;
+  double depth = 0;  // mm, from measure_overlap_depths; 0 until measured
 };
 
 // One group per (solid, face) of A x (solid, face) of B that has intersecting pairs, ordered by
 // those four indices.
 std::vector<FaceGroup> group_by_face(const InterferenceReport& report, const MeshParts& a, const MeshParts& b);
+
+// How deep each group's faces overlap: the deepest vertex of its intersecting triangles that lies
+// inside the other solid, its distance to that solid's surface (0 where only edges cross, as at
+// a touch). A lower bound of the overlap there, exact where the deepest point is a vertex (flat
+// CAD faces). `b` as placed. Returns the largest over the groups.
+double measure_overlap_depths(std::vector<FaceGroup>& groups, const InterferenceReport& report, const TriangleMesh& a,
+                              const TriangleMesh& b, const MeshParts& pa, const MeshParts& pb);
 
 // Where a face (patch) of MeshParts is: the area-weighted centroid of its triangles and its area,
 // in the mesh's units; what names a face across re-meshings and renumberings (the review
