@@ -83,9 +83,22 @@ def section(verts, values, faces, axis, at):
     return segments, seg_values
 
 
+def section_through(verts, values, faces, axis, point):
+    """The section through `point`, its plane moved a millionth of the part's size to the side
+    whose cut passes nearest the point: a face lying in the plane itself (the hot spot on a face
+    across the axis) adds no segment, the faces just beside it are cut."""
+    span = max(v[axis] for v in verts) - min(v[axis] for v in verts)
+    a, b = [k for k in range(3) if k != axis]
+
+    def miss(cut):  # how far the cut's nearest end lies from the point, in the plane
+        return min((math.hypot(p[0] - point[a], p[1] - point[b]) for s in cut[0] for p in s), default=math.inf)
+    cuts = [section(verts, values, faces, axis, point[axis] + side * 1e-6 * span) for side in (-1, 1)]
+    return min(cuts, key=miss)
+
+
 def draw_section(ax, verts, values, faces, axis, hot, norm, cmap, label):
     a, b = [k for k in range(3) if k != axis]
-    segments, seg_values = section(verts, values, faces, axis, hot[axis])
+    segments, seg_values = section_through(verts, values, faces, axis, hot)
     lines = matplotlib.collections.LineCollection(segments, colors=[cmap(norm(v)) for v in seg_values], linewidths=2.2)
     ax.add_collection(lines)
     coords = list(zip(*verts))

@@ -42,11 +42,13 @@ std::string lower_extension(const std::string& path) {
 // The file's shapes in millimetres (OpenCASCADE converts from the file's unit to its session
 // unit, which is set to mm here).
 TopoDS_Shape read_shape(const std::string& path) {
-  Interface_Static::SetCVal("xstep.cascade.unit", "MM");
   const std::string ext = lower_extension(path);
   std::unique_ptr<XSControl_Reader> reader;
   if (ext == ".step" || ext == ".stp") reader = std::make_unique<STEPControl_Reader>();
   else reader = std::make_unique<IGESControl_Reader>();
+  // The session unit exists once a reader has initialised its controller.
+  if (!Interface_Static::SetCVal("xstep.cascade.unit", "MM"))
+    throw MeshError(path + ": OpenCASCADE would not read in millimetres");
   if (reader->ReadFile(path.c_str()) != IFSelect_RetDone)
     throw MeshError("cannot read " + path + ": not a STEP or IGES file OpenCASCADE can parse");
   if (reader->TransferRoots() == 0) throw MeshError(path + ": no shape could be transferred from the file");

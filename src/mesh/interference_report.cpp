@@ -50,7 +50,9 @@ void write_interference_json(std::ostream& out, const InterferenceCheck& what, c
                           {"segment", {point(p.x.p), point(p.x.q)}}});
   double depth = 0;
   for (const auto& g : groups) depth = std::max(depth, g.depth);
-  j["overlap_depth"] = depth;  // the deepest vertex of an intersecting triangle inside the other solid
+  // The deepest vertex of an intersecting triangle inside the other solid; null without such
+  // pairs (apart, or one solid wholly inside the other: see the nesting).
+  j["overlap_depth"] = report.pairs.empty() ? nlohmann::json() : nlohmann::json(depth);
   j["groups"] = nlohmann::json::array();
   const std::vector<FaceShape> shapes_a = groups.empty() ? std::vector<FaceShape>{} : face_shapes(a, pa);
   const std::vector<FaceShape> shapes_b = groups.empty() ? std::vector<FaceShape>{} : face_shapes(b, pb);

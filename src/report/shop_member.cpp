@@ -53,12 +53,12 @@ std::optional<ShopMember> polished_best(const std::string& run_dir, const run::S
   }
   const auto add = [&](const std::string& s) { note += (note.empty() ? "" : "; ") + s; };
   if (best && std::abs(best->score.value - written) <= 1e-9 * std::max(1.0, std::abs(written))) {
-    add("member 0 is the polished best of best.layout.yaml (objective " + std::to_string(written) +
+    add("the best member is the polished best of best.layout.yaml (objective " + std::to_string(written) +
         "); the run store keeps it unpolished (" + std::to_string(summary["polish"].value("before", 0.0)) + ")");
     return best;
   }
   add(layout_file + " no longer holds the polished best the run wrote (objective " + std::to_string(written) +
-      "): member 0 is the stored best, unpolished, rounded for the shop");
+      "): the best member is the stored best, unpolished, rounded for the shop");
   return std::nullopt;
 }
 

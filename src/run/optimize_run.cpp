@@ -135,6 +135,8 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
     made = resuming ? std::make_unique<const Session>(std::move(spec), config_text, db_path + ":config")
                     : std::make_unique<const Session>(std::move(spec), r.overrides);
     if (!resuming) start = start_genotypes(r.start, *made);
+    // From here on the run writes: a signal stops it after a stored generation.
+    if (r.on_ready) r.on_ready();
     if (!resuming && writer) {
       if (r.prepare_out) r.prepare_out(out_dir);
       check_out_free(db_path, out_dir);  // again: another run may have begun meanwhile
@@ -159,7 +161,6 @@ OptimizeResult optimize_mold(const OptimizeRequest& r, const ProgressFactory& ma
     if (failed) std::rethrow_exception(failed);
     if (!ready) return {out_dir, mold_path, false, 0, 0, 0};  // rank 0 says why
   }
-  if (r.on_ready) r.on_ready();
   if (islands.islands == 0) transport.reset();  // a resumed run of one population
   const Session& session = *made;
   const mold::Scene& scene = session.scene();

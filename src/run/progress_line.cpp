@@ -23,8 +23,9 @@ constexpr double kRateSettles = 3;
 std::string duration_text(double seconds) {
   char text[64];
   if (!(seconds < 365 * 86400.0)) return "more than a year";
-  if (seconds < 100) std::snprintf(text, sizeof text, "%.0f s", seconds);
-  else if (seconds < 3600) std::snprintf(text, sizeof text, "%.0f min %.0f s", std::floor(seconds / 60), std::fmod(seconds, 60));
+  const double whole = std::round(seconds);  // so that 119.7 s reads "2 min 0 s", not "1 min 60 s"
+  if (whole < 100) std::snprintf(text, sizeof text, "%.0f s", whole);
+  else if (whole < 3600) std::snprintf(text, sizeof text, "%.0f min %.0f s", std::floor(whole / 60), std::fmod(whole, 60));
   else if (seconds < 2 * 86400) std::snprintf(text, sizeof text, "%.1f h", seconds / 3600);
   else std::snprintf(text, sizeof text, "%.0f days", seconds / 86400);
   return text;

@@ -51,11 +51,14 @@ def main(scripts, scratch):
     hottest = max(range(len(values)), key=lambda i: values[i])
     assert verts[hottest] == hot, verts[hottest]
     for axis in range(3):
-        # Cut just inside the hot corner (a plane exactly through a vertex touches, not cuts).
-        segments, seg_values = plot.section(verts, values, faces, axis, hot[axis] - 1)
+        # The section the picture draws: through the hot corner itself, where the inner top face
+        # lies in the plane of the z section.
+        segments, seg_values = plot.section_through(verts, values, faces, axis, hot)
         assert segments, f"no section across {'xyz'[axis]}"
         a, b = [k for k in range(3) if k != axis]
         ends = [p for s in segments for p in s]
+        # The cut passes through the hot corner: a segment ends within 1e-4 mm of it.
+        assert min(math.hypot(p[0] - hot[a], p[1] - hot[b]) for p in ends) < 1e-4, axis
         # Both walls of the shell are cut: points at the outer (0 or 40) and the inner (3 or 37) faces.
         for wall in (0.0, 3.0, 37.0, 40.0):
             assert any(abs(p[0] - wall) < 1e-9 for p in ends), (axis, wall)

@@ -404,7 +404,7 @@ TEST_CASE("report and export: a polished run's member 0 is best.layout.yaml's po
   options.temperature = false, options.drilling_maps = false;
   const auto polished = mtcs::report::run_report(dir.string(), options);
   CHECK(page_data(polished.html)["members"][0]["value"].get<double>() == Approx(written).epsilon(1e-12));
-  CHECK_THAT(polished.note, Catch::Contains("member 0 is the polished best of best.layout.yaml"));
+  CHECK_THAT(polished.note, Catch::Contains("the best member is the polished best of best.layout.yaml"));
   // export's member 0 is the run's bores.csv, byte for byte.
   const path csv = mtcs_test::scratch("report", "polished_member0.csv");
   REQUIRE(mtcs_test::run_mtcs("export " + dir.string() + " --format csv --out " + csv.string()) == 0);

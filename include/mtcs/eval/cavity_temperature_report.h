@@ -12,11 +12,8 @@
 namespace mtcs::eval {
 
 void write_cavity_temperature_text(std::ostream& out, const CavityTemperature& r);
-// The hottest any steel can be under the condition: the melt's temperature (fixed flux), the
-// part's T_p (coupled; the maximum principle).
-double hottest_possible(const CavityConditionUsed& c);
-// Whether the result is above it (a fixed flux can put it there), and the warning that says so
-// ("" when not); the text and JSON (`above_melt`) carry it too.
+// Whether a fixed flux put the wall above the melt that heats it (no mold can run there), and the
+// warning that says so ("" when not); the text and JSON (`above_melt`) carry it too.
 bool above_melt(const CavityTemperature& r);
 std::string above_melt_text(const CavityTemperature& r);
 void write_cavity_temperature_json(std::ostream& out, const CavityTemperature& r);

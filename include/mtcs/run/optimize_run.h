@@ -28,8 +28,8 @@ struct OptimizeRequest {
   IslandSettings islands;
   // Layout files a new run's initial population starts from (--start); the rest is sampled.
   std::vector<std::string> start;
-  // Called once the thermal model is built and the store is open, just before the search
-  // begins (until then nothing of the run needs saving: Ctrl-C may end the program at once).
+  // Called once the thermal model is built, before the store is made (until then nothing of the
+  // run needs saving: Ctrl-C may end the program at once).
   std::function<void()> on_ready;
 };
 
