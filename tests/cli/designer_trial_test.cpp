@@ -137,8 +137,9 @@ TEST_CASE("designer trial: a budget of days is said once the rate settles, and t
   REQUIRE(std::system(("bash " + file.string()).c_str()) == 0);
   CHECK(read_text(err.string() + ".rc") == "130\n");
   const std::string text = read_text(err);
-  CHECK(std::regex_search(text, std::regex(R"(the budget of 2000000000 evaluations needs [0-9.]+ (days|h) more)")));
-  CHECK(std::regex_search(text, std::regex(R"(ETA [0-9.]+ (days|h))")));
+  // Under the sanitizers the rate is ~100x lower: "more than a year".
+  CHECK(std::regex_search(text, std::regex(R"(the budget of 2000000000 evaluations needs ([0-9.]+ (days|h)|more than a year) more)")));
+  CHECK(std::regex_search(text, std::regex(R"(ETA ([0-9.]+ (days|h)|more than a year))")));
   CHECK_FALSE(std::regex_search(text, std::regex(R"(ETA [0-9]{6,} s)")));
 }
 
