@@ -33,8 +33,7 @@ Command add_evaluate_command(CLI::App& app) {
                 "drilling.access_map), stages[{name, seconds}], changes[{circuit, waypoint, what}] (what reading the layout "
                 "changed: snaps within 0.01 mm, diagonal steps drilled as axis-parallel legs)}");
   return {sub, [opt] {
-            // The layout is checked against the spec before the thermal model is built (seconds on a part).
-            mold::MoldSpec spec = mold::load_mold_spec(opt->mold);
+            mold::MoldSpec spec = mold::load_mold_spec(opt->mold);  // the layout checked before the model
             const mold::WrittenLayout w = mold::read_layout(opt->layout, spec);
             const run::Session session(std::move(spec), run::RunOverrides{});
             const eval::Evaluation e = session.pipeline().evaluate(w.genome, true);

@@ -59,13 +59,10 @@ Command add_interfere_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   CLI::App* sub = app.add_subcommand(
       "interfere",
-      "Interference of two solid components given as closed meshes (STL, OFF, OBJ, PLY; STEP and\n"
-      "IGES with OpenCASCADE): every intersecting triangle pair with its intersection segment\n"
-      "(exact test), the pairs per solid (connected component) and face (near-planar patch) with\n"
-      "how deep they overlap (the deepest vertex inside the other solid), whether one solid lies\n"
-      "inside the other, and the distance between the surfaces when they do not meet.\n"
-      "Surfaces in contact (e.g. plates face to face) are not interference unless the solids\n"
-      "overlap by more than the touch tolerance.\n"
+      "Interference of two solid components as closed meshes (STL, OFF, OBJ, PLY, STEP, IGES): every\n"
+      "intersecting triangle pair with its segment (exact test), the pairs and overlap depth per\n"
+      "solid and face (near-planar patch), nesting, the distance between the surfaces when apart.\n"
+      "Surfaces in contact are not interference unless the solids overlap beyond the touch tolerance.\n"
       "With --layout, A is a mold spec instead: every bore of the layout against the part, each\n"
       "keep-out and the other bores (exact solid-cylinder distances), each bore that crosses one\n"
       "or comes closer than its clearance listed with the distance and the place.");
@@ -109,8 +106,7 @@ Command add_interfere_command(CLI::App& app) {
               mesh::write_interference_ply(file.stream(), a, b, report);
               file.commit();
             }
-            auto groups = mesh::group_by_face(report, pa, pb);
-            mesh::measure_overlap_depths(groups, report, a, b, pa, pb);
+            const auto groups = mesh::group_by_face(report, a, b, pa, pb);
             if (!o->page.empty()) {
               io::AtomicFile file(o->page);
               file.stream() << mtcs::report::interference_page({o->a, o->b, o->translate, tolerance}, a, b, report, pa, pb, groups);

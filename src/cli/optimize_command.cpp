@@ -75,10 +75,8 @@ int run_optimize(const OptimizeOptions& o) {
                                {o.config, o.algorithm == "es" ? "" : o.algorithm, o.ref, o.seed, o.evaluations}, o.polish,
                                [](const std::string& dir) { make_output_folder(dir); }, o.islands, o.start};
   request.islands.topology = opt::parse_topology(o.topology);
-  // Ctrl-C: while the model builds, stop at once (nothing to save); then stop after the
-  // generation, write, say how to resume.
   run::Interruption interruption("\nmtcs optimize: interrupted before the search began: nothing was written\n");
-  request.on_ready = [&] { interruption.begin_run(); };
+  request.on_ready = [&] { interruption.begin_run(); };  // Ctrl-C then stops after a generation, resumable
   const run::OptimizeResult r = run::optimize_mold(
       request, [](const run::MoldOptimizer& optimizer, int log_every) { return run::ProgressSink(run::ProgressPrinter(optimizer, log_every)); },
       [&] { return interruption.requested(); });

@@ -90,8 +90,7 @@ Command add_thermal_command(CLI::App& app) {
               }
               if (std::filesystem::exists(opt->out)) std::cerr << "mtcs thermal: the cavity-surface temperature to " << opt->out << "\n";
             }
-            if (opt->json && eval::above_melt(r)) std::cerr << "mtcs thermal: " << eval::above_melt_text(r) << "\n";
-            if (opt->json) eval::write_cavity_temperature_json(std::cout, r);
+            if (opt->json) eval::write_cavity_temperature_json(std::cout, r, std::cerr);
             else eval::write_cavity_temperature_text(std::cout, r);
             return 0;
           }};

@@ -138,7 +138,8 @@ void write_cavity_temperature_field(std::ostream& out, const CavityTemperature& 
   mesh::write_ply(out, r.field, std::max(coldest, r.summary.mean - 3 * r.summary.std) - 1e-9, r.summary.max);
 }
 
-void write_cavity_temperature_json(std::ostream& out, const CavityTemperature& r) {
+void write_cavity_temperature_json(std::ostream& out, const CavityTemperature& r, std::ostream& warnings) {
+  if (above_melt(r)) warnings << "mtcs thermal: " << above_melt_text(r) << "\n";
   nlohmann::ordered_json j{{"tier", r.tier},
                                  {"cavity_condition", condition_json(r.condition)},
                                  {"mean", r.summary.mean},

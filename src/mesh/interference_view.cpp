@@ -26,7 +26,8 @@ std::vector<FaceShape> face_shapes(const TriangleMesh& mesh, const MeshParts& pa
   return shapes;
 }
 
-std::vector<FaceGroup> group_by_face(const InterferenceReport& report, const MeshParts& a, const MeshParts& b) {
+std::vector<FaceGroup> group_by_face(const InterferenceReport& report, const TriangleMesh& ma, const TriangleMesh& mb,
+                                     const MeshParts& a, const MeshParts& b) {
   std::map<std::tuple<int, int, int, int>, FaceGroup> groups;
   for (const auto& p : report.pairs) {
     const auto i = std::size_t(p.a), j = std::size_t(p.b);
@@ -36,6 +37,7 @@ std::vector<FaceGroup> group_by_face(const InterferenceReport& report, const Mes
   }
   std::vector<FaceGroup> out;
   for (const auto& [key, g] : groups) out.push_back(g);
+  measure_overlap_depths(out, report, ma, mb, a, b);
   return out;
 }
 

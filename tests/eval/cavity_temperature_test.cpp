@@ -2,6 +2,7 @@
 // pipeline's objectives, the heat balance closed, the finite volumes against FreeFem++, and the
 // field on the cavity surface consistent with the samples.
 #include <catch2/catch.hpp>
+#include <iostream>
 
 #include <algorithm>
 #include <cmath>
@@ -174,7 +175,7 @@ TEST_CASE("cavity temperature: the heated surface's figures are those of its sam
   }
   // `mtcs thermal --json` says which surface its figures cover.
   std::ostringstream json;
-  eval::write_cavity_temperature_json(json, eval::cavity_temperature(heated, layout, eval::thermal_query(heated.spec())));
+  eval::write_cavity_temperature_json(json, eval::cavity_temperature(heated, layout, eval::thermal_query(heated.spec())), std::cerr);
   CHECK(json.str().find("\"surface\": \"heated\"") != std::string::npos);
   CHECK(json.str().find("\"samples\": 44") != std::string::npos);
   std::filesystem::remove_all(dir);

@@ -16,7 +16,8 @@ void write_cavity_temperature_text(std::ostream& out, const CavityTemperature& r
 // warning that says so ("" when not); the text and JSON (`above_melt`) carry it too.
 bool above_melt(const CavityTemperature& r);
 std::string above_melt_text(const CavityTemperature& r);
-void write_cavity_temperature_json(std::ostream& out, const CavityTemperature& r);
+// The above-melt warning (below) goes to `warnings` too: stdout is for machines.
+void write_cavity_temperature_json(std::ostream& out, const CavityTemperature& r, std::ostream& warnings);
 // The field on the cavity surface: VTK PolyData, or PLY coloured from the coldest vertex (or three
 // std below the mean, if that is warmer: one cold spot should not wash out the rest) to the
 // hottest sample.

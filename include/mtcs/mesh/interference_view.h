@@ -14,12 +14,13 @@ namespace mtcs::mesh {
 struct FaceGroup {
   int solid_a = 0, face_a = 0, solid_b = 0, face_b = 0;
   int pairs = 0, penetrating = 0;
-  double depth = 0;  // mm, from measure_overlap_depths; 0 until measured
+  double depth = 0;  // mm, measure_overlap_depths
 };
 
 // One group per (solid, face) of A x (solid, face) of B that has intersecting pairs, ordered by
-// those four indices.
-std::vector<FaceGroup> group_by_face(const InterferenceReport& report, const MeshParts& a, const MeshParts& b);
+// those four indices, each with its overlap depth (below; `mb` as placed).
+std::vector<FaceGroup> group_by_face(const InterferenceReport& report, const TriangleMesh& ma, const TriangleMesh& mb,
+                                     const MeshParts& a, const MeshParts& b);
 
 // How deep each group's faces overlap: the deepest vertex of its intersecting triangles that lies
 // inside the other solid, its distance to that solid's surface (0 where only edges cross, as at
